@@ -1,0 +1,75 @@
+/*
+ * ffx-dof Vulkan backend. Valid C99 and C++.
+ *
+ * The engine owns the instance, the device, the command buffers and its images. The backend owns
+ * its pipelines; each context owns its internal images. Nothing is submitted by ffx-dof.
+ */
+#ifndef FFX_DOF_VK_H
+#define FFX_DOF_VK_H
+
+#include "ffx_dof.h"
+
+#include <vulkan/vulkan.h>
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/** Bits of FfxDofBackendDescriptionVK::flags. */
+typedef enum FfxDofBackendFlagBitsVK {
+    /** Never select the 16-bit (FFX_HALF) shaders even where the device supports them. */
+    FFX_DOF_VK_DISABLE_FLOAT16 = (1 << 0),
+    /** Never select the wave64 shaders even where the device supports 64-wide subgroups. */
+    FFX_DOF_VK_DISABLE_WAVE64 = (1 << 1),
+    /** Run the HLSL-compiled SPIR-V instead of the GLSL-compiled one (for cross-checking). */
+    FFX_DOF_VK_USE_HLSL_SHADERS = (1 << 2)
+} FfxDofBackendFlagBitsVK;
+
+/** Bits of FfxDofResource::flags for Vulkan images. */
+typedef enum FfxDofResourceFlagBitsVK {
+    /** The image was created with VK_IMAGE_CREATE_MUTABLE_FORMAT_BIT: an _SRGB output is then
+     *  written through a _UNORM view with the sRGB encoding done in the shader. */
+    FFX_DOF_VK_RESOURCE_MUTABLE_FORMAT = (1 << 0)
+} FfxDofResourceFlagBitsVK;
+
+typedef struct FfxDofBackendDescriptionVK {
+    VkInstance instance;                         /**< the engine's; outlives the backend */
+    VkPhysicalDevice physicalDevice;
+    VkDevice device;                             /**< created with the features listed in docs/integration-vulkan.md */
+    PFN_vkGetInstanceProcAddr vkGetInstanceProcAddr; /**< all other entry points are loaded from these */
+    PFN_vkGetDeviceProcAddr vkGetDeviceProcAddr;
+    const VkAllocationCallbacks* allocationCallbacks; /**< optional; used for every object the backend creates */
+    VkPipelineCache pipelineCache;               /**< optional; VK_NULL_HANDLE makes a private one */
+    uint32_t maxFramesInFlight;                  /**< dispatches the GPU may still be executing when the
+                                                      next is recorded; 0 means 3 */
+    uint32_t flags;                              /**< FfxDofBackendFlagBitsVK */
+    /** Which device features the engine enabled at vkCreateDevice. The backend uses the 16-bit
+     *  shaders only when both are VK_TRUE, and wave64 only with subgroupSizeControl. */
+    VkBool32 shaderFloat16Enabled;               /**< VkPhysicalDeviceShaderFloat16Int8Features::shaderFloat16 */
+    VkBool32 storage16BitEnabled;                /**< VkPhysicalDevice16BitStorageFeatures::storageBuffer16BitAccess */
+    VkBool32 subgroupSizeControlEnabled;         /**< VkPhysicalDeviceSubgroupSizeControlFeatures::subgroupSizeControl */
+} FfxDofBackendDescriptionVK;
+
+/** Creates a Vulkan backend. *pBackend is set to NULL on failure. */
+FfxDofErrorCode ffxDofBackendCreateVK(const FfxDofBackendDescriptionVK* pDescription, FfxDofBackend* pBackend);
+
+/** Wraps an engine image. layout is the layout the image is in before the dispatch and is left in after. */
+FfxDofResource ffxDofGetResourceVK(VkImage image, VkFormat format, uint32_t width, uint32_t height,
+                                   VkImageLayout layout, uint32_t resourceFlags);
+
+/** Wraps the engine's command buffer, which must be recording and support compute. */
+FfxDofCommandList ffxDofGetCommandListVK(VkCommandBuffer commandBuffer);
+
+/** Number of timestamps ffxDofContextSetTimestampQueriesVK writes per dispatch: one before the first
+ *  pass and one after each of the five passes. */
+#define FFX_DOF_VK_TIMESTAMP_COUNT 6u
+
+/** Profiling: later dispatches write FFX_DOF_VK_TIMESTAMP_COUNT timestamps into queryPool starting at
+ *  firstQuery (and reset them first). VK_NULL_HANDLE stops it. The pool is the engine's. */
+FfxDofErrorCode ffxDofContextSetTimestampQueriesVK(FfxDofContext* pContext, VkQueryPool queryPool, uint32_t firstQuery);
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif /* FFX_DOF_VK_H */

@@ -1,0 +1,41 @@
+// The one constants layout of ffx-dof, shared by C++ (host), HLSL and GLSL. It is delivered as
+// push constants (Vulkan) or root constants (D3D12), so it must stay within 128 bytes.
+//
+// Layout rules that make the three languages agree: only 32-bit scalars and 2-component vectors,
+// every 2-component vector at an 8-byte aligned offset. The C++ side checks size and offsets with
+// static_assert; tests/shaders checks them again against SPIR-V reflection of every pass.
+#ifndef FFX_DOF_CONSTANTS_H
+#define FFX_DOF_CONSTANTS_H
+
+#include "ffx_dof_portability.h"
+
+struct FfxDofConstants
+{
+    FfxFloat32   cocScale;          // radius (half-res px) = depth * cocScale + cocBias
+    FfxFloat32   cocBias;
+    FfxFloat32   cocLimit;          // largest |radius|, half-res px (cocLimitFactor * height / 2)
+    FfxUInt32    maxRings;          // quality: upper bound on kernel rings
+    FfxUInt32x2  fullSize;          // input/output size, px
+    FfxUInt32x2  halfSize;          // size of MIP 0 of the half-resolution images: ceil(fullSize / 2)
+    FfxUInt32x2  tileCount;         // tiles of FFX_DOF_TILE_SIZE x FFX_DOF_TILE_SIZE half-res px
+    FfxFloat32x2 halfTexelSize;     // 1 / halfSize
+    FfxFloat32x2 fullTexelSize;     // 1 / fullSize
+    FfxUInt32    frameIndex;        // increments every dispatch; seeds the kernel jitter
+    FfxUInt32    outputFlags;       // FFX_DOF_OUTPUT_FLAG_* bits
+};
+
+// Bits of FfxDofConstants::outputFlags.
+#define FFX_DOF_OUTPUT_FLAG_ENCODE_SRGB 1u   // the output view is UNORM over an sRGB image: encode in shader
+
+#if defined(FFX_CPU)
+static_assert(sizeof(FfxDofConstants) == 64, "FfxDofConstants layout changed: update the offset checks");
+static_assert(offsetof(FfxDofConstants, fullSize) == 16, "FfxDofConstants::fullSize offset");
+static_assert(offsetof(FfxDofConstants, halfSize) == 24, "FfxDofConstants::halfSize offset");
+static_assert(offsetof(FfxDofConstants, tileCount) == 32, "FfxDofConstants::tileCount offset");
+static_assert(offsetof(FfxDofConstants, halfTexelSize) == 40, "FfxDofConstants::halfTexelSize offset");
+static_assert(offsetof(FfxDofConstants, fullTexelSize) == 48, "FfxDofConstants::fullTexelSize offset");
+static_assert(offsetof(FfxDofConstants, frameIndex) == 56, "FfxDofConstants::frameIndex offset");
+static_assert(offsetof(FfxDofConstants, outputFlags) == 60, "FfxDofConstants::outputFlags offset");
+#endif
+
+#endif // FFX_DOF_CONSTANTS_H
