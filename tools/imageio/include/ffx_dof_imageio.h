@@ -1,0 +1,82 @@
+// Image file input and output for the ffx-dof tools and tests: OpenEXR (half or float) and 8-bit PNG.
+//
+// Pixels are linear floats in memory. Every writer goes through a temporary file in the target's
+// directory and rename(): an existing file is only replaced once the new one is complete, and on any
+// failure the temporary file is removed and the old file is left as it was.
+//
+// Every failure throws IoError with a one-line message that names the file and the problem (missing,
+// not an EXR or corrupt, wrong channel count, no such channel with the list of those that exist,
+// deep data, unwritable directory, ...). Corrupt files never crash: the library's exceptions are caught
+// and rethrown as IoError.
+#pragma once
+
+#include <cstdint>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace ffxdof::io {
+
+class IoError : public std::runtime_error {
+public:
+    using std::runtime_error::runtime_error;
+};
+
+// Four channels per pixel, RGBA interleaved, rows top to bottom, linear (not sRGB encoded).
+struct ImageRGBA {
+    uint32_t width = 0;
+    uint32_t height = 0;
+    std::vector<float> pixels;  // width * height * 4 values
+
+    ImageRGBA() = default;
+    ImageRGBA(uint32_t w, uint32_t h) : width(w), height(h), pixels(size_t(w) * h * 4, 0.0f) {}
+    float* at(uint32_t x, uint32_t y) { return &pixels[(size_t(y) * width + x) * 4]; }
+    const float* at(uint32_t x, uint32_t y) const { return &pixels[(size_t(y) * width + x) * 4]; }
+};
+
+// One channel per pixel (depth, masks, CoC radius), rows top to bottom.
+struct ImageR {
+    uint32_t width = 0;
+    uint32_t height = 0;
+    std::vector<float> pixels;  // width * height values
+
+    ImageR() = default;
+    ImageR(uint32_t w, uint32_t h) : width(w), height(h), pixels(size_t(w) * h, 0.0f) {}
+    float& at(uint32_t x, uint32_t y) { return pixels[size_t(y) * width + x]; }
+    float at(uint32_t x, uint32_t y) const { return pixels[size_t(y) * width + x]; }
+};
+
+enum class ExrPixelType { Half, Float };
+
+// Reads colour from an EXR file (single-part, multi-part or multilayer). With an empty layerPrefix it
+// takes the default (unnamed) layer's R, G, B; otherwise "<layerPrefix>.R" etc. (e.g. "beauty"). A
+// missing A channel reads as 1. Throws IoError when R, G or B is missing, listing the channels present.
+ImageRGBA readExrColor(const std::string& path, const std::string& layerPrefix = "");
+
+// Reads one channel from an EXR file. With an empty channelName the file (or its first part) must hold
+// exactly one channel; otherwise the named channel (e.g. "Z", "depth.Z", "Depth.V") is read from
+// whichever part holds it. Throws IoError listing the channels present when the name is not found or
+// when an empty name meets a file with several channels.
+ImageR readExrChannel(const std::string& path, const std::string& channelName = "");
+
+// Lists "name" for every channel of every part (for error messages and tools).
+std::vector<std::string> listExrChannels(const std::string& path);
+
+// Writes R, G, B, A as one EXR part (ZIP compression).
+void writeExr(const std::string& path, const ImageRGBA& image, ExrPixelType type = ExrPixelType::Half);
+// Writes one channel named channelName ("Y" by default, which viewers show as grey; use "Z" for depth).
+void writeExr(const std::string& path, const ImageR& image, ExrPixelType type = ExrPixelType::Float,
+              const std::string& channelName = "Y");
+
+// Writes an 8-bit sRGB-encoded PNG (libpng). Colour is clamped to [0, 1] before encoding; alpha is
+// written linearly when withAlpha, otherwise the file is RGB.
+void writePng(const std::string& path, const ImageRGBA& image, bool withAlpha = false);
+
+// Chooses the format from the extension (.exr: half EXR, .png: PNG without alpha; case-insensitive).
+// Throws IoError for any other extension.
+void writeImage(const std::string& path, const ImageRGBA& image);
+
+// True when the path ends in the extension (".exr", ".png"), ignoring case.
+bool hasExtension(const std::string& path, const std::string& extension);
+
+}  // namespace ffxdof::io
