@@ -1,0 +1,366 @@
+#include "ffx_dof_imageio.h"
+
+#include <ImfChannelList.h>
+#include <ImfFrameBuffer.h>
+#include <ImfHeader.h>
+#include <ImfInputPart.h>
+#include <ImfMultiPartInputFile.h>
+#include <ImfOutputFile.h>
+#include <ImfPartType.h>
+#include <ImfStdIO.h>
+#include <ImfTestFile.h>
+#include <ImfVersion.h>
+#include <Imath/half.h>
+
+#include <stb_image_write.h>
+
+#include <algorithm>
+#include <atomic>
+#include <cerrno>
+#include <cmath>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <functional>
+#include <memory>
+#include <new>
+
+#include <unistd.h>
+
+namespace ffxdof::io {
+namespace {
+
+namespace fs = std::filesystem;
+
+// Larger images than this are rejected before allocating, so a corrupt header that claims an
+// enormous data window gives an error instead of exhausting memory.
+constexpr uint64_t kMaxPixels = uint64_t(1) << 28;
+
+[[noreturn]] void fail(const std::string& path, const std::string& what) { throw IoError(path + ": " + what); }
+
+std::string joinNames(const std::vector<std::string>& names) {
+    if (names.empty()) return "(none)";
+    std::string joined;
+    for (const std::string& name : names) {
+        if (!joined.empty()) joined += ", ";
+        joined += name;
+    }
+    return joined;
+}
+
+void checkReadable(const std::string& path) {
+    std::error_code ec;
+    if (!fs::exists(path, ec)) fail(path, "file not found");
+    if (fs::is_directory(path, ec)) fail(path, "is a directory, not an image file");
+    std::ifstream file(path, std::ios::binary);
+    if (!file) fail(path, std::string("cannot open for reading: ") + std::strerror(errno));
+    char magic[4] = {};
+    file.read(magic, 4);
+    if (file.gcount() != 4 || !Imf::isImfMagic(magic)) fail(path, "not an OpenEXR file (bad magic number)");
+}
+
+// Runs an OpenEXR operation, turning the library's exceptions into IoError with the file named.
+template <typename Result>
+Result guardExr(const std::string& path, const std::function<Result()>& operation) {
+    try {
+        return operation();
+    } catch (const IoError&) {
+        throw;
+    } catch (const std::bad_alloc&) {
+        fail(path, "out of memory while reading (corrupt header?)");
+    } catch (const std::exception& error) {
+        fail(path, std::string("corrupt or unreadable OpenEXR file: ") + error.what());
+    }
+}
+
+struct ChannelLocation {
+    int part = -1;
+    std::string name;
+};
+
+std::vector<std::string> channelNames(const Imf::MultiPartInputFile& file) {
+    std::vector<std::string> names;
+    for (int part = 0; part < file.parts(); ++part) {
+        const Imf::ChannelList& channels = file.header(part).channels();
+        for (auto it = channels.begin(); it != channels.end(); ++it) names.emplace_back(it.name());
+    }
+    return names;
+}
+
+ChannelLocation findChannel(const Imf::MultiPartInputFile& file, const std::string& name) {
+    for (int part = 0; part < file.parts(); ++part) {
+        if (file.header(part).channels().findChannel(name)) return {part, name};
+    }
+    return {};
+}
+
+void checkPartReadable(const std::string& path, const Imf::Header& header) {
+    if (header.hasType() && (header.type() == Imf::DEEPSCANLINE || header.type() == Imf::DEEPTILE)) {
+        fail(path, "deep OpenEXR images are not supported");
+    }
+}
+
+// Reads the given channels of one part as floats into an interleaved buffer of `stride` floats per
+// pixel, channel i at offset i. Missing channels (empty name) keep the fill value.
+void readPartChannels(const std::string& path, Imf::MultiPartInputFile& file, int part,
+                      const std::vector<std::string>& names, uint32_t stride, float fill, uint32_t& width,
+                      uint32_t& height, std::vector<float>& pixels) {
+    const Imf::Header& header = file.header(part);
+    checkPartReadable(path, header);
+    const Imath::Box2i window = header.dataWindow();
+    const int64_t w = int64_t(window.max.x) - window.min.x + 1;
+    const int64_t h = int64_t(window.max.y) - window.min.y + 1;
+    if (w <= 0 || h <= 0 || uint64_t(w) * uint64_t(h) > kMaxPixels) {
+        fail(path, "data window " + std::to_string(w) + "x" + std::to_string(h) + " is empty or too large");
+    }
+    width = uint32_t(w);
+    height = uint32_t(h);
+    pixels.assign(size_t(w) * size_t(h) * stride, fill);
+    Imf::FrameBuffer frameBuffer;
+    for (size_t i = 0; i < names.size(); ++i) {
+        if (names[i].empty()) continue;
+        const Imf::Channel* channel = header.channels().findChannel(names[i]);
+        if (channel->xSampling != 1 || channel->ySampling != 1) {
+            fail(path, "channel " + names[i] + " is subsampled, which is not supported");
+        }
+        frameBuffer.insert(names[i], Imf::Slice::Make(Imf::FLOAT, pixels.data() + i, window, sizeof(float) * stride,
+                                                      sizeof(float) * stride * size_t(w)));
+    }
+    Imf::InputPart input(file, part);
+    input.setFrameBuffer(frameBuffer);
+    input.readPixels(window.min.y, window.max.y);
+}
+
+std::string layerChannel(const std::string& layerPrefix, const char* channel) {
+    return layerPrefix.empty() ? std::string(channel) : layerPrefix + "." + channel;
+}
+
+// ---- writing ------------------------------------------------------------------------------------
+
+// A temporary file next to the destination; removed on destruction unless committed by rename().
+class TempFile {
+public:
+    explicit TempFile(const std::string& destination) : destination_(destination) {
+        static std::atomic<unsigned> counter{0};
+        const fs::path target(destination);
+        const fs::path directory = target.parent_path().empty() ? fs::path(".") : target.parent_path();
+        std::error_code ec;
+        if (!fs::is_directory(directory, ec)) fail(destination, "directory " + directory.string() + " does not exist");
+        if (fs::is_directory(target, ec)) fail(destination, "is a directory");
+        path_ = (directory / ("." + target.filename().string() + ".tmp" + std::to_string(::getpid()) + "_" +
+                              std::to_string(counter++)))
+                    .string();
+    }
+    ~TempFile() {
+        if (!committed_) {
+            std::error_code ec;
+            fs::remove(path_, ec);
+        }
+    }
+    TempFile(const TempFile&) = delete;
+    TempFile& operator=(const TempFile&) = delete;
+
+    const std::string& path() const { return path_; }
+
+    std::ofstream open() {
+        std::ofstream stream(path_, std::ios::binary | std::ios::trunc);
+        if (!stream) fail(destination_, std::string("cannot write to its directory: ") + std::strerror(errno));
+        return stream;
+    }
+
+    void commit() {
+        std::error_code ec;
+        fs::rename(path_, destination_, ec);
+        if (ec) fail(destination_, "cannot replace the file: " + ec.message());
+        committed_ = true;
+    }
+
+private:
+    std::string destination_;
+    std::string path_;
+    bool committed_ = false;
+};
+
+void checkImage(const std::string& path, uint32_t width, uint32_t height, size_t values, size_t channels) {
+    if (width == 0 || height == 0) fail(path, "cannot write an empty image");
+    if (values != size_t(width) * height * channels) {
+        fail(path, "image holds " + std::to_string(values) + " values, expected " +
+                       std::to_string(size_t(width) * height * channels));
+    }
+}
+
+// Writes interleaved float data (channelCount values per pixel) as one EXR part.
+void writeExrChannels(const std::string& path, uint32_t width, uint32_t height, const std::vector<float>& pixels,
+                      const std::vector<std::string>& names, ExrPixelType type) {
+    const size_t channelCount = names.size();
+    checkImage(path, width, height, pixels.size(), channelCount);
+    TempFile temp(path);
+    {
+        std::ofstream stream = temp.open();
+        guardExr<int>(path, [&] {
+            Imf::Header header{int(width), int(height)};
+            header.compression() = Imf::ZIP_COMPRESSION;
+            const Imf::PixelType pixelType = type == ExrPixelType::Half ? Imf::HALF : Imf::FLOAT;
+            for (const std::string& name : names) header.channels().insert(name, Imf::Channel(pixelType));
+            std::vector<half> halves;
+            const char* base = reinterpret_cast<const char*>(pixels.data());
+            size_t elementSize = sizeof(float);
+            if (type == ExrPixelType::Half) {
+                halves.assign(pixels.begin(), pixels.end());
+                base = reinterpret_cast<const char*>(halves.data());
+                elementSize = sizeof(half);
+            }
+            Imf::FrameBuffer frameBuffer;
+            for (size_t i = 0; i < channelCount; ++i) {
+                frameBuffer.insert(names[i], Imf::Slice(pixelType, const_cast<char*>(base + i * elementSize),
+                                                        elementSize * channelCount,
+                                                        elementSize * channelCount * width));
+            }
+            Imf::StdOFStream exrStream(stream, temp.path().c_str());
+            Imf::OutputFile output(exrStream, header);
+            output.setFrameBuffer(frameBuffer);
+            output.writePixels(int(height));
+            return 0;
+        });
+        stream.flush();
+        if (!stream) fail(path, "write failed (disk full?)");
+    }
+    temp.commit();
+}
+
+uint8_t encodeSrgb8(float linear) {
+    if (!(linear > 0.0f)) return 0;  // also maps NaN to 0
+    if (linear >= 1.0f) return 255;
+    const float encoded = linear <= 0.0031308f ? 12.92f * linear : 1.055f * std::pow(linear, 1.0f / 2.4f) - 0.055f;
+    return uint8_t(std::lround(encoded * 255.0f));
+}
+
+uint8_t encodeLinear8(float value) {
+    if (!(value > 0.0f)) return 0;
+    if (value >= 1.0f) return 255;
+    return uint8_t(std::lround(value * 255.0f));
+}
+
+}  // namespace
+
+ImageRGBA readExrColor(const std::string& path, const std::string& layerPrefix) {
+    checkReadable(path);
+    return guardExr<ImageRGBA>(path, [&] {
+        Imf::MultiPartInputFile file(path.c_str());
+        const std::string red = layerChannel(layerPrefix, "R");
+        const ChannelLocation location = findChannel(file, red);
+        if (location.part < 0) {
+            fail(path, "no colour channel " + red + "; channels present: " + joinNames(channelNames(file)));
+        }
+        const Imf::ChannelList& channels = file.header(location.part).channels();
+        std::vector<std::string> names;
+        for (const char* channel : {"R", "G", "B", "A"}) {
+            const std::string name = layerChannel(layerPrefix, channel);
+            if (channels.findChannel(name)) {
+                names.push_back(name);
+            } else if (std::strcmp(channel, "A") == 0) {
+                names.emplace_back();
+            } else {
+                fail(path, "colour channel " + name + " is missing (need R, G and B); channels present: " +
+                               joinNames(channelNames(file)));
+            }
+        }
+        ImageRGBA image;
+        readPartChannels(path, file, location.part, names, 4, 1.0f, image.width, image.height, image.pixels);
+        // R, G, B are always read; only A keeps the fill value of 1 when absent.
+        return image;
+    });
+}
+
+ImageR readExrChannel(const std::string& path, const std::string& channelName) {
+    checkReadable(path);
+    return guardExr<ImageR>(path, [&] {
+        Imf::MultiPartInputFile file(path.c_str());
+        const std::vector<std::string> names = channelNames(file);
+        ChannelLocation location;
+        if (channelName.empty()) {
+            if (names.size() != 1) {
+                fail(path, "expected a single-channel file but it has " + std::to_string(names.size()) +
+                               " channels (" + joinNames(names) + "); name the channel to read");
+            }
+            location = {0, names.front()};
+        } else {
+            location = findChannel(file, channelName);
+            if (location.part < 0) {
+                fail(path, "no channel named " + channelName + "; channels present: " + joinNames(names));
+            }
+        }
+        ImageR image;
+        readPartChannels(path, file, location.part, {location.name}, 1, 0.0f, image.width, image.height,
+                         image.pixels);
+        return image;
+    });
+}
+
+std::vector<std::string> listExrChannels(const std::string& path) {
+    checkReadable(path);
+    return guardExr<std::vector<std::string>>(path, [&] {
+        Imf::MultiPartInputFile file(path.c_str());
+        return channelNames(file);
+    });
+}
+
+void writeExr(const std::string& path, const ImageRGBA& image, ExrPixelType type) {
+    writeExrChannels(path, image.width, image.height, image.pixels, {"R", "G", "B", "A"}, type);
+}
+
+void writeExr(const std::string& path, const ImageR& image, ExrPixelType type, const std::string& channelName) {
+    if (channelName.empty()) fail(path, "empty channel name");
+    writeExrChannels(path, image.width, image.height, image.pixels, {channelName}, type);
+}
+
+void writePng(const std::string& path, const ImageRGBA& image, bool withAlpha) {
+    checkImage(path, image.width, image.height, image.pixels.size(), 4);
+    if (image.width > (1u << 24) / 4 || image.height > (1u << 24)) fail(path, "image too large for PNG");
+    const int components = withAlpha ? 4 : 3;
+    std::vector<uint8_t> bytes(size_t(image.width) * image.height * components);
+    for (size_t pixel = 0; pixel < size_t(image.width) * image.height; ++pixel) {
+        const float* source = &image.pixels[pixel * 4];
+        uint8_t* target = &bytes[pixel * components];
+        for (int c = 0; c < 3; ++c) target[c] = encodeSrgb8(source[c]);
+        if (withAlpha) target[3] = encodeLinear8(source[3]);
+    }
+    // stb_image_write encodes into memory through a callback, so the bytes go through TempFile like
+    // every other output (and no longjmp error handling as with libpng crosses C++ frames).
+    std::vector<uint8_t> encoded;
+    const auto append = [](void* context, void* data, int size) {
+        auto* out = static_cast<std::vector<uint8_t>*>(context);
+        const auto* begin = static_cast<const uint8_t*>(data);
+        out->insert(out->end(), begin, begin + size);
+    };
+    if (!stbi_write_png_to_func(append, &encoded, int(image.width), int(image.height), components, bytes.data(),
+                                int(image.width) * components)) {
+        fail(path, "PNG encoding failed");
+    }
+    TempFile temp(path);
+    {
+        std::ofstream stream = temp.open();
+        stream.write(reinterpret_cast<const char*>(encoded.data()), std::streamsize(encoded.size()));
+        stream.flush();
+        if (!stream) fail(path, "write failed (disk full?)");
+    }
+    temp.commit();
+}
+
+bool hasExtension(const std::string& path, const std::string& extension) {
+    if (path.size() < extension.size()) return false;
+    return std::equal(extension.rbegin(), extension.rend(), path.rbegin(),
+                      [](char a, char b) { return std::tolower((unsigned char)a) == std::tolower((unsigned char)b); });
+}
+
+void writeImage(const std::string& path, const ImageRGBA& image) {
+    if (hasExtension(path, ".exr")) {
+        writeExr(path, image, ExrPixelType::Half);
+    } else if (hasExtension(path, ".png")) {
+        writePng(path, image, false);
+    } else {
+        fail(path, "unknown output format (use a .exr or .png extension)");
+    }
+}
+
+}  // namespace ffxdof::io
