@@ -1,0 +1,220 @@
+// The API-neutral core: validates every description, owns context lifetime, and plans each dispatch
+// (constants, workgroup counts, permutation options) for the backend to record.
+#include "ffx_dof_context.h"
+
+#include <cmath>
+#include <mutex>
+#include <new>
+#include <unordered_set>
+
+struct FfxDofContext_T {
+    FfxDofBackend backend = nullptr;
+    ffxdof::ContextConfig config;
+    std::unique_ptr<ffxdof::BackendContext> impl;
+    uint32_t frameIndex = 0;
+};
+
+namespace ffxdof {
+namespace {
+
+// Handles of live contexts, so that a stale handle (used after destroy) is an error, not a crash.
+std::mutex g_liveMutex;
+std::unordered_set<const FfxDofContext_T*> g_liveContexts;
+
+bool isLive(const FfxDofContext_T* context) {
+    std::lock_guard<std::mutex> lock(g_liveMutex);
+    return g_liveContexts.count(context) != 0;
+}
+
+uint32_t divideRoundingUp(uint32_t value, uint32_t divisor) { return (value + divisor - 1) / divisor; }
+
+FfxDofErrorCode checkResource(const FfxDofResource& resource, const char* name, FfxDofDimensions2D size) {
+    if (resource.handle == 0) return fail(FFX_DOF_ERROR_INVALID_RESOURCE, "%s: the image handle is null", name);
+    if (resource.width != size.width || resource.height != size.height)
+        return fail(FFX_DOF_ERROR_INVALID_RESOURCE, "%s is %ux%u but the context was created for %ux%u", name,
+                    resource.width, resource.height, size.width, size.height);
+    return FFX_DOF_OK;
+}
+
+FfxDofErrorCode lookUpLiveContext(FfxDofContext* pContext, FfxDofContext_T** out) {
+    if (pContext == nullptr) return fail(FFX_DOF_ERROR_INVALID_POINTER, "pContext is NULL");
+    if (*pContext == nullptr || !isLive(*pContext))
+        return fail(FFX_DOF_ERROR_INVALID_CONTEXT, "the context handle is not a live context (destroyed?)");
+    *out = *pContext;
+    return FFX_DOF_OK;
+}
+
+}  // namespace
+
+BackendContext* backendContextOf(FfxDofContext context) {
+    if (context == nullptr || !isLive(context)) return nullptr;
+    return context->impl.get();
+}
+
+DispatchPlan planDispatch(const ContextConfig& config, const FfxDofDispatchDescription& dispatch, uint32_t frameIndex) {
+    DispatchPlan plan;
+    plan.commandList = dispatch.commandList;
+    plan.color = dispatch.color;
+    plan.depth = dispatch.depth;
+    plan.output = dispatch.output;
+    plan.outputIsColor = dispatch.output.handle == dispatch.color.handle;
+
+    const uint32_t width = config.resolution.width;
+    const uint32_t height = config.resolution.height;
+    const uint32_t halfWidth = divideRoundingUp(width, 2);
+    const uint32_t halfHeight = divideRoundingUp(height, 2);
+
+    FfxDofConstants& c = plan.constants;
+    c.cocScale = dispatch.cocScale;
+    c.cocBias = dispatch.cocBias;
+    // cocLimitFactor is relative to the full-resolution height; radii are in half-resolution pixels.
+    c.cocLimit = config.cocLimitFactor * static_cast<float>(height) * 0.5f;
+    c.maxRings = config.quality;
+    c.fullSize = {width, height};
+    c.halfSize = {halfWidth, halfHeight};
+    c.tileCount = {divideRoundingUp(halfWidth, FFX_DOF_TILE_SIZE), divideRoundingUp(halfHeight, FFX_DOF_TILE_SIZE)};
+    c.halfTexelSize = {1.0f / static_cast<float>(halfWidth), 1.0f / static_cast<float>(halfHeight)};
+    c.fullTexelSize = {1.0f / static_cast<float>(width), 1.0f / static_cast<float>(height)};
+    c.frameIndex = frameIndex;
+    c.outputFlags = 0;  // the backend adds FFX_DOF_OUTPUT_FLAG_ENCODE_SRGB where it writes through a UNORM view
+
+    // Workgroup counts: each pass covers a domain (full-res pixels, half-res pixels or tiles) with groups
+    // of a fixed extent declared next to the resource table, so shader and host cannot disagree.
+    const auto grid = [](uint32_t domainWidth, uint32_t domainHeight, uint32_t extent) {
+        return PassGrid{divideRoundingUp(domainWidth, extent), divideRoundingUp(domainHeight, extent), 1};
+    };
+    plan.passes[uint32_t(Pass::DownsampleDepth)] = grid(width, height, FFX_DOF_DOWNSAMPLE_DEPTH_GROUP_EXTENT);
+    plan.passes[uint32_t(Pass::DownsampleColor)] = grid(width, height, FFX_DOF_DOWNSAMPLE_COLOR_GROUP_EXTENT);
+    plan.passes[uint32_t(Pass::Dilate)] = grid(c.tileCount.x, c.tileCount.y, FFX_DOF_DILATE_GROUP_EXTENT);
+    plan.passes[uint32_t(Pass::Blur)] = grid(halfWidth, halfHeight, FFX_DOF_BLUR_GROUP_EXTENT);
+    plan.passes[uint32_t(Pass::Composite)] = grid(width, height, FFX_DOF_COMPOSITE_GROUP_EXTENT);
+
+    plan.options.reverseDepth = (config.flags & FFX_DOF_REVERSE_DEPTH) ? 1u : 0u;
+    plan.options.ringMergeLog = (config.flags & FFX_DOF_DISABLE_RING_MERGE) ? 0u : 1u;
+    plan.options.combineInPlace = (config.flags & FFX_DOF_OUTPUT_PRE_INIT) ? 1u : 0u;
+    return plan;
+}
+
+}  // namespace ffxdof
+
+using namespace ffxdof;
+
+extern "C" FfxDofErrorCode ffxDofContextCreate(FfxDofContext* pContext,
+                                               const FfxDofContextDescription* pContextDescription) {
+    clearLastError();
+    if (pContext == nullptr) return fail(FFX_DOF_ERROR_INVALID_POINTER, "pContext is NULL");
+    *pContext = nullptr;
+    if (pContextDescription == nullptr) return fail(FFX_DOF_ERROR_INVALID_POINTER, "pContextDescription is NULL");
+    const FfxDofContextDescription& desc = *pContextDescription;
+    if (desc.flags & ~FFX_DOF_ALL_FLAGS)
+        return fail(FFX_DOF_ERROR_INVALID_FLAGS, "flags 0x%x contain unknown bits 0x%x", desc.flags,
+                    desc.flags & ~FFX_DOF_ALL_FLAGS);
+    if (desc.quality == 0 || desc.quality > FFX_DOF_MAX_QUALITY)
+        return fail(FFX_DOF_ERROR_INVALID_QUALITY, "quality %u is outside 1..%u", desc.quality, FFX_DOF_MAX_QUALITY);
+    const FfxDofDimensions2D size = desc.resolution;
+    if (size.width == 0 || size.height == 0 || size.width > FFX_DOF_MAX_RESOLUTION ||
+        size.height > FFX_DOF_MAX_RESOLUTION)
+        return fail(FFX_DOF_ERROR_INVALID_RESOLUTION, "resolution %ux%u is outside 1..%u", size.width, size.height,
+                    FFX_DOF_MAX_RESOLUTION);
+    if (!std::isfinite(desc.cocLimitFactor) || desc.cocLimitFactor < 0.0f)
+        return fail(FFX_DOF_ERROR_INVALID_COC_LIMIT, "cocLimitFactor %g must be finite and >= 0",
+                    static_cast<double>(desc.cocLimitFactor));
+    if (desc.backendInterface == nullptr)
+        return fail(FFX_DOF_ERROR_INVALID_POINTER, "backendInterface is NULL (create one with ffxDofBackendCreateVK/DX12)");
+
+    std::unique_ptr<FfxDofContext_T> context(new (std::nothrow) FfxDofContext_T);
+    if (!context) return fail(FFX_DOF_ERROR_OUT_OF_MEMORY, "allocating the context failed");
+    context->backend = desc.backendInterface;
+    context->config.resolution = size;
+    context->config.flags = desc.flags;
+    context->config.quality = desc.quality;
+    context->config.cocLimitFactor = desc.cocLimitFactor;
+
+    try {
+        const FfxDofErrorCode status = desc.backendInterface->createContext(context->config, &context->impl);
+        if (status != FFX_DOF_OK) return status;
+        if (!context->impl) return fail(FFX_DOF_ERROR_BACKEND, "the backend returned no context");
+        std::lock_guard<std::mutex> lock(g_liveMutex);
+        g_liveContexts.insert(context.get());
+    } catch (const std::bad_alloc&) {
+        return fail(FFX_DOF_ERROR_OUT_OF_MEMORY, "host allocation failed while creating the context");
+    }
+    ++desc.backendInterface->liveContexts;
+    *pContext = context.release();
+    return FFX_DOF_OK;
+}
+
+extern "C" FfxDofErrorCode ffxDofContextDispatch(FfxDofContext* pContext,
+                                                 const FfxDofDispatchDescription* pDispatchDescription) {
+    clearLastError();
+    FfxDofContext_T* context = nullptr;
+    if (const FfxDofErrorCode status = lookUpLiveContext(pContext, &context); status != FFX_DOF_OK) return status;
+    if (pDispatchDescription == nullptr) return fail(FFX_DOF_ERROR_INVALID_POINTER, "pDispatchDescription is NULL");
+    const FfxDofDispatchDescription& desc = *pDispatchDescription;
+    if (desc.commandList == nullptr) return fail(FFX_DOF_ERROR_INVALID_POINTER, "commandList is NULL");
+
+    const FfxDofDimensions2D size = context->config.resolution;
+    for (const auto& [resource, name] : {std::pair{&desc.color, "color"}, std::pair{&desc.depth, "depth"},
+                                         std::pair{&desc.output, "output"}}) {
+        if (const FfxDofErrorCode status = checkResource(*resource, name, size); status != FFX_DOF_OK) return status;
+    }
+    if (desc.output.handle == desc.depth.handle)
+        return fail(FFX_DOF_ERROR_INVALID_RESOURCE, "output is the depth image");
+    if (desc.output.handle == desc.color.handle && !(context->config.flags & FFX_DOF_OUTPUT_PRE_INIT))
+        return fail(FFX_DOF_ERROR_OUTPUT_ALIASES_INPUT,
+                    "output is the color image; create the context with FFX_DOF_OUTPUT_PRE_INIT for in-place use");
+    if (!std::isfinite(desc.cocScale) || !std::isfinite(desc.cocBias))
+        return fail(FFX_DOF_ERROR_INVALID_ARGUMENT,
+                    "cocScale %g / cocBias %g must be finite (ffxDofCalculateCocScale/Bias return NaN for "
+                    "impossible lenses: |focus| <= focalLength)",
+                    static_cast<double>(desc.cocScale), static_cast<double>(desc.cocBias));
+
+    try {
+        const DispatchPlan plan = planDispatch(context->config, desc, context->frameIndex);
+        const FfxDofErrorCode status = context->impl->dispatch(plan);
+        if (status == FFX_DOF_OK) ++context->frameIndex;
+        return status;
+    } catch (const std::bad_alloc&) {
+        return fail(FFX_DOF_ERROR_OUT_OF_MEMORY, "host allocation failed while recording the dispatch");
+    }
+}
+
+extern "C" FfxDofErrorCode ffxDofContextDestroy(FfxDofContext* pContext) {
+    clearLastError();
+    if (pContext == nullptr) return fail(FFX_DOF_ERROR_INVALID_POINTER, "pContext is NULL");
+    if (*pContext == nullptr) return FFX_DOF_OK;
+    FfxDofContext_T* context = *pContext;
+    {
+        std::lock_guard<std::mutex> lock(g_liveMutex);
+        if (g_liveContexts.erase(context) == 0)
+            return fail(FFX_DOF_ERROR_INVALID_CONTEXT, "the context handle is not a live context (destroyed twice?)");
+    }
+    FfxDofBackend backend = context->backend;
+    delete context;
+    --backend->liveContexts;
+    *pContext = nullptr;
+    return FFX_DOF_OK;
+}
+
+extern "C" FfxDofErrorCode ffxDofContextGetGpuMemoryUsage(FfxDofContext* pContext, FfxDofMemoryUsage* pVramUsage) {
+    clearLastError();
+    FfxDofContext_T* context = nullptr;
+    if (const FfxDofErrorCode status = lookUpLiveContext(pContext, &context); status != FFX_DOF_OK) return status;
+    if (pVramUsage == nullptr) return fail(FFX_DOF_ERROR_INVALID_POINTER, "pVramUsage is NULL");
+    *pVramUsage = context->impl->memoryUsage();
+    return FFX_DOF_OK;
+}
+
+extern "C" FfxDofErrorCode ffxDofBackendDestroy(FfxDofBackend backend) {
+    clearLastError();
+    if (backend == nullptr) return FFX_DOF_OK;
+    if (backend->liveContexts.load() != 0)
+        return fail(FFX_DOF_ERROR_BACKEND_IN_USE, "%d contexts made with this backend are still alive",
+                    backend->liveContexts.load());
+    delete backend;
+    return FFX_DOF_OK;
+}
+
+extern "C" FfxDofVersionNumber ffxDofGetEffectVersion(void) {
+    return FFX_DOF_MAKE_VERSION(FFX_DOF_VERSION_MAJOR, FFX_DOF_VERSION_MINOR, FFX_DOF_VERSION_PATCH);
+}

@@ -1,0 +1,33 @@
+#!/usr/bin/env bash
+# Builds everything and runs every test: the README's test command, and what CI runs.
+#   1. installs missing Debian packages (tools/setup.sh),
+#   2. Release build + every CTest test (CPU tests, Vulkan tests on lavapipe with validation, and
+#      the install tree consumed by a separate project through find_package),
+#   3. the host-code tests again under AddressSanitizer + UndefinedBehaviorSanitizer,
+#   4. the Direct3D 12 backend cross-compiled with MinGW-w64 (warnings as errors).
+set -euo pipefail
+cd "$(dirname "$0")/.."
+
+bash tools/setup.sh
+if [ -z "${XDG_RUNTIME_DIR:-}" ] || [ ! -w "${XDG_RUNTIME_DIR}" ]; then
+  export XDG_RUNTIME_DIR="$(mktemp -d)"
+fi
+jobs="$(nproc)"
+step() { printf '\n== %s (%ss elapsed)\n' "$1" "$SECONDS"; }
+
+step "configure + build (Release)"
+cmake --preset default >/dev/null
+cmake --build --preset default -j "$jobs"
+
+step "tests (Release)"
+ctest --preset default -j "$jobs"
+
+step "host tests under ASan + UBSan"
+cmake --preset asan >/dev/null
+cmake --build --preset asan -j "$jobs"
+ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 ctest --preset asan -j "$jobs"
+
+step "Direct3D 12 backend, cross-compiled with MinGW-w64"
+bash tools/build-mingw.sh
+
+step "done"
