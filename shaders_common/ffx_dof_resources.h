@@ -17,8 +17,12 @@
 //   DILATED_TILES  tiles, R16G16 float       dilated (near, far) radii per tile
 //   NEAR_COLOR     half, B10G11R11 float     near-field color
 //   FAR_COLOR      half, B10G11R11 float     far-field color
-//   LAYER_ALPHA    half, R8G8 unorm          x: near-field opacity, y: far-field validity
-//   GLOBALS        16-byte storage buffer    [0]: global max |radius| (float bits, atomic max)
+//   LAYER_ALPHA    half, R8G8 unorm          x: near-field opacity (coverage of the pixel by near-field
+//                                            blur, 0..1), y: far-field validity (1: FAR_COLOR holds
+//                                            gathered far-field color, 0: nothing was gathered)
+//   GLOBALS        16-byte storage buffer    [0]: global max |radius|, half-res px, as float bits
+//                  (atomic max on uint: non-negative floats order like their bits). Zero before the
+//                  first dispatch; the composite pass writes 0 back, so it is zero before each.
 #ifndef FFX_DOF_RESOURCES_H
 #define FFX_DOF_RESOURCES_H
 
@@ -67,7 +71,37 @@
 // Storage buffers
 #define FFX_DOF_UAV_BUFFER_GLOBALS  0
 
-// Samplers
+// Samplers. LINEAR_CLAMP: min/mag filter linear, mipmap mode NEAREST, address mode clamp-to-edge on
+// u, v and w, no anisotropy, no compare, LOD range [0, FFX_DOF_OPTION_MAX_MIP - 1]. The shaders always
+// pass an explicit integer LOD (textureLod / SampleLevel), so the mipmap mode never blends levels.
 #define FFX_DOF_SAMPLER_LINEAR_CLAMP 0
+
+// Dispatch geometry. Every pass runs FFX_DOF_GROUP_THREADS threads per workgroup (8 x 8, in wave32
+// and wave64 alike). Each pass covers a domain; one workgroup covers GROUP_EXTENT x GROUP_EXTENT
+// elements of it, so the group count is ceil(domain size / GROUP_EXTENT) in x and y (z = 1):
+//   FULL_RES  domain = fullSize  (FfxDofConstants::fullSize)
+//   HALF_RES  domain = halfSize  (ceil(fullSize / 2))
+//   TILES     domain = tileCount (ceil(halfSize / FFX_DOF_TILE_SIZE))
+// The four tile-aligned passes give exactly tileCount groups: ceil(W / 16) == ceil(ceil(W / 2) / 8).
+#define FFX_DOF_GROUP_THREADS 64
+#define FFX_DOF_DOMAIN_FULL_RES 0
+#define FFX_DOF_DOMAIN_HALF_RES 1
+#define FFX_DOF_DOMAIN_TILES 2
+
+// Pass 1: one workgroup = one tile (16 x 16 full-res px); a thread reduces a 2 x 2 px quad.
+#define FFX_DOF_DOWNSAMPLE_DEPTH_DOMAIN FFX_DOF_DOMAIN_FULL_RES
+#define FFX_DOF_DOWNSAMPLE_DEPTH_GROUP_EXTENT 16
+// Pass 2: one workgroup = one tile; a thread makes one MIP-0 texel, then the group makes MIPs 1..3.
+#define FFX_DOF_DOWNSAMPLE_COLOR_DOMAIN FFX_DOF_DOMAIN_FULL_RES
+#define FFX_DOF_DOWNSAMPLE_COLOR_GROUP_EXTENT 16
+// Pass 3: one thread per tile.
+#define FFX_DOF_DILATE_DOMAIN FFX_DOF_DOMAIN_TILES
+#define FFX_DOF_DILATE_GROUP_EXTENT 8
+// Pass 4: one workgroup = one tile (8 x 8 half-res px), one thread per half-res px.
+#define FFX_DOF_BLUR_DOMAIN FFX_DOF_DOMAIN_HALF_RES
+#define FFX_DOF_BLUR_GROUP_EXTENT 8
+// Pass 5: one workgroup = one tile (16 x 16 full-res px); a thread writes a 2 x 2 px quad.
+#define FFX_DOF_COMPOSITE_DOMAIN FFX_DOF_DOMAIN_FULL_RES
+#define FFX_DOF_COMPOSITE_GROUP_EXTENT 16
 
 #endif // FFX_DOF_RESOURCES_H
