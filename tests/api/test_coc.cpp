@@ -103,8 +103,21 @@ TEST_CASE("worked example of docs/coc.md: 50 mm f/2 focused at 2 m, 1920 px over
     CHECK(terms.deviceDepth(-2.0) * scale + bias == Approx(0.0).margin(1e-4));
     CHECK(terms.deviceDepth(-1.0) * scale + bias == Approx(8.547).epsilon(1e-4));
     CHECK(terms.deviceDepth(-10.0) * scale + bias == Approx(-6.838).epsilon(1e-3));
-    CHECK(scale == Approx(-854.7).epsilon(1e-3));
-    CHECK(double(bias) == Approx(8.547 - double(scale) * terms.deviceDepth(-1.0)).epsilon(1e-4));
+    CHECK(scale == Approx(-170.7692).epsilon(1e-5));
+    CHECK(bias == Approx(162.3932).epsilon(1e-5));
+    // The same camera with reversed depth: only the line changes, the radii do not.
+    const ProjectionTerms reversed = d3dReversed(0.1, 100.0);
+    const float reversedScale = ffxDofCalculateCocScale(aperture, focus, focalLength, conversion,
+                                                        float(reversed.p33), float(reversed.p34), float(reversed.p43));
+    const float reversedBias = ffxDofCalculateCocBias(aperture, focus, focalLength, conversion, float(reversed.p33),
+                                                      float(reversed.p34), float(reversed.p43));
+    CHECK(reversedScale == Approx(170.7692).epsilon(1e-5));
+    CHECK(reversedBias == Approx(-8.3761).epsilon(1e-4));
+    CHECK(reversed.deviceDepth(-1.0) * reversedScale + reversedBias == Approx(8.547).epsilon(1e-4));
+    // OpenGL [-1, 1] clip depth: the window-depth terms reproduce the D3D line exactly.
+    const ProjectionTerms gl = glWindowTerms(glStandard(0.1, 100.0));
+    CHECK(gl.p33 == Approx(terms.p33));
+    CHECK(gl.p34 == Approx(terms.p34));
 }
 
 TEST_CASE("impossible lenses give NaN, which dispatch rejects") {
