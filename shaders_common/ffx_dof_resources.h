@@ -28,14 +28,6 @@
 
 #define FFX_DOF_TILE_SIZE 8   // half-resolution pixels per tile side (16 full-resolution pixels)
 
-// Dispatch geometry: the domain each pass covers and how many domain elements (per side) one workgroup
-// covers. The host computes group counts as ceil(domain / extent); independent of FFX_DOF_OPTION_WAVE64.
-#define FFX_DOF_DOWNSAMPLE_DEPTH_GROUP_EXTENT 16   // full-res pixels (one tile)
-#define FFX_DOF_DOWNSAMPLE_COLOR_GROUP_EXTENT 16   // full-res pixels (one tile: MIPs 0..3 from groupshared)
-#define FFX_DOF_DILATE_GROUP_EXTENT 8              // tiles
-#define FFX_DOF_BLUR_GROUP_EXTENT 8                // half-res pixels
-#define FFX_DOF_COMPOSITE_GROUP_EXTENT 8           // full-res pixels
-
 #define FFX_DOF_SRV_BASE 0
 #define FFX_DOF_UAV_IMAGE_BASE 16
 #define FFX_DOF_UAV_BUFFER_BASE 40
