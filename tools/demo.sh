@@ -8,6 +8,6 @@ bash "$repo/tools/setup.sh"
 if [ -z "${XDG_RUNTIME_DIR:-}" ] || [ ! -w "${XDG_RUNTIME_DIR}" ]; then
   export XDG_RUNTIME_DIR="$(mktemp -d)"
 fi
-cmake -S "$repo" --preset default >/dev/null
+(cd "$repo" && cmake --preset default >/dev/null)
 cmake --build "$repo/build/default" -j "$(nproc)" --target ffx-dof
 "$repo/build/default/tools/cli/ffx-dof" demo --out "$out"
