@@ -1,0 +1,64 @@
+// The subcommands of ffx-dof. Each run* function throws CliError on failure and prints what it
+// wrote or measured on stdout.
+#pragma once
+
+#include "inputs.h"
+#include "lens.h"
+
+#include <array>
+#include <cstdint>
+#include <optional>
+#include <string>
+
+namespace ffxdof::cli {
+
+// Effect settings shared by apply, demo and bench.
+struct EffectOptions {
+    uint32_t quality = 10;     // FfxDofContextDescription::quality, 1..FFX_DOF_MAX_QUALITY
+    double cocLimit = 0.05;    // FfxDofContextDescription::cocLimitFactor, finite, >= 0
+    bool noRingMerge = false;  // FFX_DOF_DISABLE_RING_MERGE
+    int device = -1;           // Vulkan physical device index; -1 = the first
+};
+
+// Throws CliError(InvalidValue) for a quality or CoC limit the effect does not accept.
+void checkEffectOptions(const EffectOptions& options);
+
+struct ApplyOptions {
+    std::string colorPath;
+    std::string depthPath;
+    std::string outputPath;
+    std::string depthChannel;  // empty: the file's only channel
+    DepthKind depthKind = DepthKind::Linear;
+    std::optional<double> nearPlane;
+    std::optional<double> farPlane;
+    std::optional<std::array<double, 16>> projection;
+    bool reverseDepth = false;
+    LensSettings lens;
+    EffectOptions effect;
+};
+void runApply(const ApplyOptions& options);
+
+struct DemoOptions {
+    std::string outputDirectory = "demo-out";
+    EffectOptions effect;
+};
+void runDemo(const DemoOptions& options);
+
+struct BenchOptions {
+    uint32_t width = 1920;
+    uint32_t height = 1080;
+    uint32_t repeat = 20;
+    bool json = false;
+    EffectOptions effect;
+};
+void runBench(const BenchOptions& options);
+
+struct CompareOptions {
+    std::string referencePath;
+    std::string testPath;
+    std::string depthPath;
+    std::string cameraPath;
+};
+void runCompare(const CompareOptions& options);
+
+}  // namespace ffxdof::cli

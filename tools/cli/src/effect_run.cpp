@@ -1,0 +1,93 @@
+#include "effect_run.h"
+
+#include "cli_error.h"
+
+#include <string>
+#include <vector>
+
+namespace ffxdof::cli {
+
+std::unique_ptr<vkrun::Device> openDevice(int physicalDeviceIndex) {
+    vkrun::DeviceOptions options;
+    options.physicalDeviceIndex = physicalDeviceIndex;
+    try {
+        return std::make_unique<vkrun::Device>(options);
+    } catch (const vkrun::Error& error) {
+        std::string message = std::string("cannot open the Vulkan device: ") + error.what();
+        if (physicalDeviceIndex >= 0) {
+            std::vector<std::string> names;
+            try {
+                names = vkrun::listPhysicalDevices();
+            } catch (const vkrun::Error&) {
+                // The first message already says why Vulkan is not usable.
+            }
+            message += "; devices:";
+            for (size_t i = 0; i < names.size(); ++i) {
+                message += " " + std::to_string(i) + "=" + names[i];
+            }
+            if (names.empty()) {
+                message += " none";
+            }
+        }
+        throw CliError(ExitCode::Device, message);
+    }
+}
+
+vkrun::RunSettings makeRunSettings(const EffectOptions& effect, const CocParameters& coc, bool reversedDepth) {
+    vkrun::RunSettings settings;
+    settings.colorFormat = VK_FORMAT_R32G32B32A32_SFLOAT;
+    settings.outputFormat = VK_FORMAT_R32G32B32A32_SFLOAT;
+    settings.depthFormat = VK_FORMAT_D32_SFLOAT;
+    settings.quality = effect.quality;
+    settings.cocLimitFactor = float(effect.cocLimit);
+    settings.contextFlags =
+        (reversedDepth ? FFX_DOF_REVERSE_DEPTH : 0u) | (effect.noRingMerge ? FFX_DOF_DISABLE_RING_MERGE : 0u);
+    settings.cocScale = coc.cocScale;
+    settings.cocBias = coc.cocBias;
+    return settings;
+}
+
+vkrun::RunResult runEffectOrThrow(vkrun::Device& device, const vkrun::HostImage& color, const vkrun::HostImage& depth,
+                                  const vkrun::RunSettings& settings) {
+    try {
+        return vkrun::runEffect(device, color, depth, settings);
+    } catch (const vkrun::Error& error) {
+        throw CliError(ExitCode::Device, std::string("running the effect failed: ") + error.what());
+    }
+}
+
+vkrun::HostImage toHostImage(const io::ImageRGBA& image) {
+    vkrun::HostImage host(image.width, image.height, 4);
+    host.pixels = image.pixels;
+    return host;
+}
+
+vkrun::HostImage toHostImage(uint32_t width, uint32_t height, const std::vector<float>& singleChannel) {
+    vkrun::HostImage host(width, height, 1);
+    host.pixels = singleChannel;
+    return host;
+}
+
+io::ImageRGBA toImageRGBA(const vkrun::HostImage& image) {
+    io::ImageRGBA rgba(image.width, image.height);
+    for (uint32_t y = 0; y < image.height; ++y) {
+        for (uint32_t x = 0; x < image.width; ++x) {
+            const float* source = image.at(x, y);
+            float* target = rgba.at(x, y);
+            for (uint32_t c = 0; c < 4; ++c) {
+                target[c] = c < image.channels ? source[c] : (c == 3 ? 1.0f : source[0]);
+            }
+        }
+    }
+    return rgba;
+}
+
+void writeOutput(const std::string& path, const io::ImageRGBA& image) {
+    try {
+        io::writeImage(path, image);
+    } catch (const io::IoError& error) {
+        throw CliError(ExitCode::OutputWrite, error.what());
+    }
+}
+
+}  // namespace ffxdof::cli

@@ -1,0 +1,32 @@
+// What apply, demo and bench share to run the effect through the Vulkan harness (tools/vkrun):
+// settings from the command line, device creation, and harness errors turned into CliError(Device).
+#pragma once
+
+#include "commands.h"
+#include "ffx_dof_imageio.h"
+#include "ffx_dof_vkrun.h"
+
+#include <memory>
+
+namespace ffxdof::cli {
+
+// Opens the Vulkan device chosen with --device; throws CliError(Device) naming the devices there are.
+std::unique_ptr<vkrun::Device> openDevice(int physicalDeviceIndex);
+
+// The harness settings for one run: 32-bit float color and output (EXR values are kept as they are),
+// D32_SFLOAT depth, and the effect options.
+vkrun::RunSettings makeRunSettings(const EffectOptions& effect, const CocParameters& coc, bool reversedDepth);
+
+// Runs the effect; harness failures become CliError(Device).
+vkrun::RunResult runEffectOrThrow(vkrun::Device& device, const vkrun::HostImage& color, const vkrun::HostImage& depth,
+                                  const vkrun::RunSettings& settings);
+
+// Conversions between the image library's and the harness's host images.
+vkrun::HostImage toHostImage(const io::ImageRGBA& image);
+vkrun::HostImage toHostImage(uint32_t width, uint32_t height, const std::vector<float>& singleChannel);
+io::ImageRGBA toImageRGBA(const vkrun::HostImage& image);
+
+// Writes an image chosen by extension; io errors become CliError(OutputWrite).
+void writeOutput(const std::string& path, const io::ImageRGBA& image);
+
+}  // namespace ffxdof::cli

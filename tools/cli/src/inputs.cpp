@@ -1,0 +1,113 @@
+#include "inputs.h"
+
+#include "cli_error.h"
+#include "commands.h"
+#include "ffx_dof.h"
+
+#include <cmath>
+#include <sstream>
+
+namespace ffxdof::cli {
+namespace {
+
+// Counts the values that fail a check and remembers the first, to report both in one line.
+struct BadValues {
+    size_t count = 0;
+    size_t firstIndex = 0;
+    float firstValue = 0.0f;
+};
+
+template <typename IsBad>
+BadValues findBad(const std::vector<float>& values, size_t valuesPerPixel, IsBad isBad) {
+    BadValues bad;
+    for (size_t i = 0; i < values.size(); ++i) {
+        if (isBad(values[i])) {
+            if (bad.count == 0) {
+                bad.firstIndex = i / valuesPerPixel;
+                bad.firstValue = values[i];
+            }
+            ++bad.count;
+        }
+    }
+    return bad;
+}
+
+void throwIfBad(const BadValues& bad, uint32_t width, const std::string& path, const std::string& what) {
+    if (bad.count == 0) {
+        return;
+    }
+    std::ostringstream message;
+    message << path << ": " << bad.count << (bad.count == 1 ? " value is " : " values are ") << what
+            << " (first at x=" << bad.firstIndex % width << ", y=" << bad.firstIndex / width << ": " << bad.firstValue
+            << ")";
+    throw CliError(ExitCode::InvalidValue, message.str());
+}
+
+}  // namespace
+
+void checkResolutions(const io::ImageRGBA& color, const std::string& colorPath, const io::ImageR& depth,
+                      const std::string& depthPath) {
+    std::ostringstream message;
+    if (color.width != depth.width || color.height != depth.height) {
+        message << "color and depth differ in size: " << colorPath << " is " << color.width << "x" << color.height
+                << ", " << depthPath << " is " << depth.width << "x" << depth.height;
+    } else if (color.width == 0 || color.height == 0 || color.width > FFX_DOF_MAX_RESOLUTION ||
+               color.height > FFX_DOF_MAX_RESOLUTION) {
+        message << colorPath << " is " << color.width << "x" << color.height << "; width and height must be 1 to "
+                << FFX_DOF_MAX_RESOLUTION;
+    } else {
+        return;
+    }
+    throw CliError(ExitCode::InvalidValue, message.str());
+}
+
+void checkColorFinite(const io::ImageRGBA& color, const std::string& path) {
+    throwIfBad(findBad(color.pixels, 4, [](float v) { return !std::isfinite(v); }), color.width, path,
+               "not finite in the color");
+}
+
+double checkLinearDepth(const io::ImageR& depth, const std::string& path) {
+    throwIfBad(findBad(depth.pixels, 1, [](float v) { return !std::isfinite(v); }), depth.width, path,
+               "not finite in the depth");
+    throwIfBad(findBad(depth.pixels, 1, [](float v) { return v <= 0.0f; }), depth.width, path,
+               "0 or negative in the linear depth (view distance in metres; use --depth-kind device for z-buffers)");
+    double nearest = INFINITY;
+    for (float z : depth.pixels) {
+        nearest = std::fmin(nearest, double(z));
+    }
+    return nearest;
+}
+
+void checkDeviceDepth(const io::ImageR& depth, const std::string& path) {
+    throwIfBad(findBad(depth.pixels, 1, [](float v) { return !std::isfinite(v); }), depth.width, path,
+               "not finite in the depth");
+    throwIfBad(findBad(depth.pixels, 1, [](float v) { return v < 0.0f || v > 1.0f; }), depth.width, path,
+               "outside [0, 1] in the device depth (use --depth-kind linear for distances)");
+}
+
+EffectDepth linearToEffectDepth(const io::ImageR& depth, const std::string& path) {
+    EffectDepth result;
+    result.projection = projectionForLinearDepth(checkLinearDepth(depth, path));
+    result.deviceDepth.resize(depth.pixels.size());
+    for (size_t i = 0; i < depth.pixels.size(); ++i) {
+        result.deviceDepth[i] = float(result.projection.deviceDepth(depth.pixels[i]));
+    }
+    return result;
+}
+
+void checkEffectOptions(const EffectOptions& options) {
+    if (options.quality < 1 || options.quality > FFX_DOF_MAX_QUALITY) {
+        throw CliError(ExitCode::InvalidValue, "--quality must be 1 to " + std::to_string(FFX_DOF_MAX_QUALITY) +
+                                                   ", got " + std::to_string(options.quality));
+    }
+    if (!std::isfinite(options.cocLimit) || options.cocLimit < 0.0) {
+        std::ostringstream message;
+        message << "--coc-limit must be a finite number, 0 or more, got " << options.cocLimit;
+        throw CliError(ExitCode::InvalidValue, message.str());
+    }
+    if (options.device < -1) {
+        throw CliError(ExitCode::InvalidValue, "--device must be a device index, 0 or more");
+    }
+}
+
+}  // namespace ffxdof::cli

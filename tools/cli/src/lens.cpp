@@ -1,0 +1,159 @@
+#include "lens.h"
+
+#include "cli_error.h"
+#include "ffx_dof.h"
+
+#include <cmath>
+#include <sstream>
+
+namespace ffxdof::cli {
+namespace {
+
+constexpr double kMillimetre = 1e-3;
+
+std::string formatNumber(double value) {
+    std::ostringstream text;
+    text << value;
+    return text.str();
+}
+
+[[noreturn]] void invalid(const std::string& message) { throw CliError(ExitCode::InvalidValue, message); }
+
+void requirePositive(const char* option, double value, const char* unit) {
+    if (!std::isfinite(value) || value <= 0.0) {
+        invalid(std::string(option) + " must be a finite number greater than 0 " + unit + ", got " +
+                formatNumber(value));
+    }
+}
+
+}  // namespace
+
+ThinLens makeThinLens(const LensSettings& settings) {
+    requirePositive("--focus", settings.focusMetres, "metres");
+    requirePositive("--focal-length", settings.focalLengthMm, "millimetres");
+    requirePositive("--sensor-width", settings.sensorWidthMm, "millimetres");
+
+    ThinLens lens;
+    lens.focalLength = settings.focalLengthMm * kMillimetre;
+    lens.focusDistance = settings.focusMetres;
+    lens.sensorWidth = settings.sensorWidthMm * kMillimetre;
+    // A lens cannot focus closer than its focal length: the image would form at infinity or behind it.
+    if (lens.focusDistance <= lens.focalLength) {
+        invalid("--focus (" + formatNumber(settings.focusMetres) + " m) must be greater than --focal-length (" +
+                formatNumber(settings.focalLengthMm) + " mm = " + formatNumber(lens.focalLength) + " m)");
+    }
+
+    if (settings.fNumber && settings.apertureRadiusMetres) {
+        throw CliError(ExitCode::Usage, "give either --fstop or --aperture-radius, not both");
+    }
+    if (settings.fNumber) {
+        requirePositive("--fstop", *settings.fNumber, "");
+        // The f-number is focal length over aperture diameter.
+        lens.apertureRadius = lens.focalLength / (2.0 * *settings.fNumber);
+    } else if (settings.apertureRadiusMetres) {
+        const double radius = *settings.apertureRadiusMetres;
+        if (!std::isfinite(radius) || radius < 0.0) {
+            invalid("--aperture-radius must be a finite number of metres, 0 or more, got " + formatNumber(radius));
+        }
+        lens.apertureRadius = radius;
+    } else {
+        throw CliError(ExitCode::Usage, "give --fstop or --aperture-radius");
+    }
+    return lens;
+}
+
+double thinLensCocHalfResPixels(const ThinLens& lens, double z, uint32_t imageWidth) {
+    const double sensorRadius = lens.apertureRadius * lens.focalLength * (lens.focusDistance - z) /
+                                (z * (lens.focusDistance - lens.focalLength));
+    const double halfResPixelsPerSensorUnit = 0.5 * imageWidth / lens.sensorWidth;
+    return sensorRadius * halfResPixelsPerSensorUnit;
+}
+
+double DepthProjection::deviceDepth(double distance) const {
+    const double z = m43 < 0.0 ? -distance : distance;
+    return (m33 * z + m34) / (m43 * z);
+}
+
+double DepthProjection::viewDistance(double deviceDepth) const {
+    // From d = m33 / m43 + m34 / (m43 z):  z = m34 / (m43 d - m33).
+    const double z = m34 / (m43 * deviceDepth - m33);
+    return m43 < 0.0 ? -z : z;
+}
+
+DepthProjection projectionFromNearFar(double nearPlane, double farPlane, bool reversed) {
+    if (!std::isfinite(nearPlane) || nearPlane <= 0.0) {
+        invalid("--near must be a finite number of metres greater than 0, got " + formatNumber(nearPlane));
+    }
+    if (std::isnan(farPlane) || farPlane <= nearPlane) {
+        invalid("--far (" + formatNumber(farPlane) + ") must be greater than --near (" + formatNumber(nearPlane) + ")");
+    }
+    // Left-handed, view z = distance, m43 = 1. Standard: d(near) = 0, d(far) = 1, so
+    // m33 = far / (far - near), m34 = -near * far / (far - near). Reversed is d' = 1 - d:
+    // m33' = 1 - m33 = -near / (far - near), m34' = -m34. With far -> infinity these become
+    // (1, -near) and (0, near).
+    DepthProjection projection;
+    projection.m43 = 1.0;
+    projection.reversed = reversed;
+    if (std::isinf(farPlane)) {
+        projection.m33 = reversed ? 0.0 : 1.0;
+        projection.m34 = reversed ? nearPlane : -nearPlane;
+    } else {
+        const double range = farPlane - nearPlane;
+        projection.m33 = reversed ? -nearPlane / range : farPlane / range;
+        projection.m34 = (reversed ? 1.0 : -1.0) * nearPlane * farPlane / range;
+    }
+    return projection;
+}
+
+DepthProjection projectionFromMatrix(const std::array<double, 16>& rowMajor, bool reversedRequested) {
+    for (double value : rowMajor) {
+        if (!std::isfinite(value)) {
+            invalid("--proj has a value that is not a finite number: " + formatNumber(value));
+        }
+    }
+    const auto at = [&](int row, int column) { return rowMajor[size_t((row - 1) * 4 + (column - 1))]; };
+    // Depth must be a function of view z alone: row 3 = (0, 0, m33, m34), row 4 = (0, 0, m43, 0).
+    if (at(3, 1) != 0.0 || at(3, 2) != 0.0 || at(4, 1) != 0.0 || at(4, 2) != 0.0 || at(4, 4) != 0.0 ||
+        at(4, 3) == 0.0 || at(3, 4) == 0.0) {
+        invalid(
+            "--proj is not a perspective projection for column vectors: expected row 3 = (0, 0, m33, m34) with "
+            "m34 != 0 and row 4 = (0, 0, m43, 0) with m43 != 0 (transpose a row-vector matrix)");
+    }
+    DepthProjection projection;
+    projection.m33 = at(3, 3);
+    projection.m34 = at(3, 4);
+    projection.m43 = at(4, 3);
+    // d = m33 / m43 + m34 / (|m43| * distance): it grows with distance exactly when m34 < 0.
+    projection.reversed = projection.m34 > 0.0;
+    if (reversedRequested && !projection.reversed) {
+        invalid("--reverse-depth was given but the --proj matrix maps farther points to larger depths (m34 < 0)");
+    }
+    return projection;
+}
+
+DepthProjection projectionForLinearDepth(double nearestDepth) {
+    if (!std::isfinite(nearestDepth) || nearestDepth <= 0.0) {
+        invalid("the nearest linear depth must be a finite number greater than 0, got " + formatNumber(nearestDepth));
+    }
+    return projectionFromNearFar(nearestDepth, INFINITY, /*reversed=*/true);
+}
+
+CocParameters computeCocParameters(const ThinLens& lens, const DepthProjection& projection, uint32_t imageWidth) {
+    const double conversion = 0.5 * imageWidth / lens.sensorWidth;
+    // The SDK follows the sign of view z: the focus distance is negative for a camera looking down -z.
+    const double signedFocus = projection.m43 < 0.0 ? -lens.focusDistance : lens.focusDistance;
+    CocParameters coc;
+    coc.cocScale =
+        ffxDofCalculateCocScale(float(lens.apertureRadius), float(signedFocus), float(lens.focalLength),
+                                float(conversion), float(projection.m33), float(projection.m34), float(projection.m43));
+    coc.cocBias =
+        ffxDofCalculateCocBias(float(lens.apertureRadius), float(signedFocus), float(lens.focalLength),
+                               float(conversion), float(projection.m33), float(projection.m34), float(projection.m43));
+    if (!std::isfinite(coc.cocScale) || !std::isfinite(coc.cocBias)) {
+        invalid("the lens and depth settings give a non-finite circle of confusion (scale " +
+                formatNumber(coc.cocScale) + ", bias " + formatNumber(coc.cocBias) + ")");
+    }
+    return coc;
+}
+
+}  // namespace ffxdof::cli

@@ -1,0 +1,83 @@
+// Lens and depth-buffer model of the ffx-dof command line: from camera parameters given in
+// photographers' units to the effect's cocScale / cocBias and the depth values to upload.
+//
+// The effect wants radius = d * cocScale + cocBias for the depth value d it reads (in half-resolution
+// pixels, positive in the near field). The thin-lens radius is affine in 1 / Z (Z = view distance), so
+// d must be a perspective ("device z") depth. Three ways to get one are supported:
+//
+//  * linear depth (a renderer's Z pass, metres): the tool uploads d = n / Z with n = the smallest depth
+//    of the image. That is exactly the device z of a reversed infinite perspective projection with its
+//    near plane at n (clipZ = n, clipW = z), so every d lies in (0, 1] and FFX_DOF_REVERSE_DEPTH is set.
+//  * device depth with --near / --far: a standard D3D-style (left-handed, z in [0, 1]) projection,
+//    or its reversed form (near at 1, far at 0) with --reverse-depth; --far inf gives the infinite form.
+//  * device depth with --proj: the 16 numbers of the engine's projection matrix, row-major, for column
+//    vectors (clip = M * view); only rows 3 and 4 matter. Whether depth is reversed follows from it.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <optional>
+#include <string>
+
+namespace ffxdof::cli {
+
+// A thin lens as given on the command line.
+struct LensSettings {
+    double focusMetres = 0.0;                    // distance of the plane in focus, metres, > focal length
+    double focalLengthMm = 50.0;                 // focal length, millimetres, > 0
+    double sensorWidthMm = 36.0;                 // width of the sensor (image) plane, millimetres, > 0
+    std::optional<double> fNumber;               // f-number N: aperture radius = focal length / (2 N); > 0
+    std::optional<double> apertureRadiusMetres;  // or the aperture radius itself, metres, >= 0
+};
+
+// A thin lens in metres, validated.
+struct ThinLens {
+    double apertureRadius = 0.0;  // metres
+    double focalLength = 0.0;     // metres
+    double focusDistance = 0.0;   // metres
+    double sensorWidth = 0.0;     // metres
+};
+
+// Checks every value and converts to metres; throws CliError(InvalidValue) naming the bad option.
+// With neither fNumber nor apertureRadiusMetres it is a usage error (the parser supplies a default).
+ThinLens makeThinLens(const LensSettings& settings);
+
+// The thin-lens CoC radius of a point at view distance z, in half-resolution pixels of an image
+// imageWidth pixels wide: |A f (F - z)| / (z (F - f)) * 0.5 * imageWidth / sensorWidth, signed
+// positive in front of the focus plane. This is the truth the effect's affine form must reproduce.
+double thinLensCocHalfResPixels(const ThinLens& lens, double z, uint32_t imageWidth);
+
+// The terms of a perspective projection that relate view z to device depth:
+// clipZ = m33 * z + m34, clipW = m43 * z, d = clipZ / clipW (1-based row, column).
+struct DepthProjection {
+    double m33 = 0.0;
+    double m34 = 0.0;
+    double m43 = 0.0;
+    bool reversed = false;  // depth decreases with distance (FFX_DOF_REVERSE_DEPTH)
+
+    // The device depth of a point at view distance `distance` (> 0) in front of the camera.
+    double deviceDepth(double distance) const;
+    // The inverse: the view distance of device depth d.
+    double viewDistance(double deviceDepth) const;
+};
+
+// D3D-style projection between near and far (0 < near < far; far may be +infinity).
+DepthProjection projectionFromNearFar(double nearPlane, double farPlane, bool reversed);
+
+// From the 16 numbers of --proj (row-major, column vectors). Throws CliError(InvalidValue) when the
+// matrix is not a perspective projection or when reversedRequested contradicts it.
+DepthProjection projectionFromMatrix(const std::array<double, 16>& rowMajor, bool reversedRequested);
+
+// The projection the tool uses for linear depth: reversed infinite with near plane at nearestDepth.
+DepthProjection projectionForLinearDepth(double nearestDepth);
+
+struct CocParameters {
+    float cocScale = 0.0f;
+    float cocBias = 0.0f;
+};
+
+// cocScale / cocBias for FfxDofDispatchDescription, through the SDK's ffxDofCalculateCocScale/Bias.
+// Throws CliError(InvalidValue) when the result is not finite.
+CocParameters computeCocParameters(const ThinLens& lens, const DepthProjection& projection, uint32_t imageWidth);
+
+}  // namespace ffxdof::cli

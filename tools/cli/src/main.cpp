@@ -1,0 +1,201 @@
+// ffx-dof: apply the depth-of-field effect to EXR files, run the demo, benchmark, compare images.
+// The option table lives here; the work is in the cmd_*.cpp files. See docs/cli.md.
+#include "cli_error.h"
+#include "commands.h"
+
+#include "ffx_dof.h"
+
+#include <CLI/CLI.hpp>
+
+#include <cstdio>
+#include <exception>
+#include <map>
+#include <vector>
+
+namespace ffxdof::cli {
+
+const char* exitCodeTable() {
+    return "Exit codes:\n"
+           "  0  success\n"
+           "  1  usage: unknown or malformed option, missing or conflicting options, unknown output extension\n"
+           "  2  input file: missing, unreadable, corrupt, or without the expected channels\n"
+           "  3  invalid value: impossible lens or projection, bad depths, mismatched sizes, out-of-range settings\n"
+           "  4  device: no usable Vulkan device, or the effect or Vulkan reported an error\n"
+           "  5  output: a file or directory could not be written\n"
+           "  6  internal error (a bug; please report it)\n";
+}
+
+namespace {
+
+void addEffectOptions(CLI::App& command, EffectOptions& effect) {
+    command.add_option("--quality", effect.quality, "Maximum number of kernel rings, 1 to 32")->capture_default_str();
+    command.add_option("--coc-limit", effect.cocLimit, "Largest CoC radius as a fraction of the image height")
+        ->capture_default_str();
+    command.add_flag("--no-ring-merge", effect.noRingMerge, "Never gather inner rings from coarser MIP levels");
+    command.add_option("--device", effect.device, "Vulkan physical device index (default: the first)");
+}
+
+struct ApplyArguments {
+    ApplyOptions options;
+    std::string depthKind = "linear";
+    std::vector<double> projection;
+    double nearPlane = 0.0, farPlane = 0.0, fNumber = 0.0, apertureRadius = 0.0;
+    CLI::Option *nearOption = nullptr, *farOption = nullptr, *projOption = nullptr, *fstopOption = nullptr,
+                *apertureOption = nullptr, *reverseOption = nullptr;
+};
+
+CLI::App* addApply(CLI::App& app, ApplyArguments& args) {
+    CLI::App* apply = app.add_subcommand("apply", "Apply depth of field to an EXR color image with its depth");
+    ApplyOptions& o = args.options;
+    apply->add_option("--color", o.colorPath, "Color EXR (R, G, B and optional A)")->required();
+    apply->add_option("--depth", o.depthPath, "Depth EXR (one channel, or see --depth-channel)")->required();
+    apply->add_option("--out", o.outputPath, "Output file: .exr (half float) or .png (8-bit sRGB)")->required();
+    apply->add_option("--depth-channel", o.depthChannel, "Depth channel name in a multi-channel EXR, e.g. Z");
+    apply
+        ->add_option("--depth-kind", args.depthKind,
+                     "linear: view distance in metres; device: z-buffer values in [0, 1]")
+        ->check(CLI::IsMember({"linear", "device"}))
+        ->capture_default_str();
+    args.nearOption = apply->add_option("--near", args.nearPlane, "Device depth: near plane, metres");
+    args.farOption = apply->add_option("--far", args.farPlane, "Device depth: far plane, metres (inf allowed)");
+    args.projOption = apply
+                          ->add_option("--proj", args.projection,
+                                       "Device depth: projection matrix, 16 numbers, row-major, clip = M * view")
+                          ->expected(16)
+                          ->delimiter(',');
+    args.reverseOption =
+        apply->add_flag("--reverse-depth", o.reverseDepth, "Device depth: near plane at 1, far plane at 0");
+    args.nearOption->excludes(args.projOption);
+    args.farOption->excludes(args.projOption);
+    args.nearOption->needs(args.farOption);
+    args.farOption->needs(args.nearOption);
+
+    apply->add_option("--focus", o.lens.focusMetres, "Distance in focus, metres")->required();
+    apply->add_option("--focal-length", o.lens.focalLengthMm, "Focal length, millimetres")->capture_default_str();
+    apply->add_option("--sensor-width", o.lens.sensorWidthMm, "Sensor width, millimetres")->capture_default_str();
+    args.fstopOption = apply->add_option("--fstop", args.fNumber, "f-number (default 2.8)");
+    args.apertureOption = apply->add_option("--aperture-radius", args.apertureRadius, "Aperture radius, metres");
+    args.fstopOption->excludes(args.apertureOption);
+    addEffectOptions(*apply, o.effect);
+    return apply;
+}
+
+// Checks that need the values of several options together, after parsing.
+ApplyOptions finishApply(ApplyArguments& args) {
+    ApplyOptions o = args.options;
+    o.depthKind = args.depthKind == "device" ? DepthKind::Device : DepthKind::Linear;
+    if (o.depthKind == DepthKind::Linear) {
+        for (const CLI::Option* option : {args.nearOption, args.farOption, args.projOption, args.reverseOption}) {
+            if (option->count() > 0) {
+                throw CliError(ExitCode::Usage, option->get_name() + " needs --depth-kind device");
+            }
+        }
+    } else if (args.projOption->count() == 0 && args.nearOption->count() == 0) {
+        throw CliError(ExitCode::Usage, "--depth-kind device needs --near and --far, or --proj");
+    }
+    if (args.nearOption->count() > 0) {
+        o.nearPlane = args.nearPlane;
+        o.farPlane = args.farPlane;
+    }
+    if (args.projOption->count() > 0) {
+        if (args.projection.size() != 16) {
+            throw CliError(ExitCode::Usage, "--proj needs 16 numbers, got " + std::to_string(args.projection.size()));
+        }
+        std::array<double, 16> matrix{};
+        std::copy(args.projection.begin(), args.projection.end(), matrix.begin());
+        o.projection = matrix;
+    }
+    if (args.fstopOption->count() > 0) {
+        o.lens.fNumber = args.fNumber;
+    } else if (args.apertureOption->count() > 0) {
+        o.lens.apertureRadiusMetres = args.apertureRadius;
+    } else {
+        o.lens.fNumber = 2.8;
+    }
+    return o;
+}
+
+int run(int argc, char** argv) {
+    CLI::App app{"ffx-dof: depth-of-field (bokeh) post-process on Vulkan; see docs/cli.md", "ffx-dof"};
+    app.footer(exitCodeTable());
+    app.require_subcommand(1);
+    app.set_version_flag("--version", std::to_string(FFX_DOF_VERSION_MAJOR) + "." +
+                                          std::to_string(FFX_DOF_VERSION_MINOR) + "." +
+                                          std::to_string(FFX_DOF_VERSION_PATCH));
+
+    ApplyArguments applyArgs;
+    CLI::App* apply = addApply(app, applyArgs);
+
+    DemoOptions demo;
+    CLI::App* demoCommand =
+        app.add_subcommand("demo", "Render the built-in scene, apply the effect, compare with the thin-lens truth");
+    demoCommand->add_option("--out", demo.outputDirectory, "Output folder")->capture_default_str();
+    addEffectOptions(*demoCommand, demo.effect);
+
+    BenchOptions bench;
+    CLI::App* benchCommand =
+        app.add_subcommand("bench", "Time every pass on a procedural scene against a plain copy pass");
+    benchCommand->add_option("--width", bench.width, "Width, pixels")->capture_default_str();
+    benchCommand->add_option("--height", bench.height, "Height, pixels")->capture_default_str();
+    benchCommand->add_option("--repeat", bench.repeat, "Dispatches to time; the median is printed")
+        ->capture_default_str();
+    benchCommand->add_flag("--json", bench.json, "Print one JSON object instead of a table");
+    addEffectOptions(*benchCommand, bench.effect);
+
+    CompareOptions compare;
+    CLI::App* compareCommand = app.add_subcommand("compare", "PSNR and SSIM of a test image against a reference");
+    compareCommand->add_option("--ref", compare.referencePath, "Reference EXR")->required();
+    compareCommand->add_option("--test", compare.testPath, "Test EXR")->required();
+    CLI::Option* depthOption =
+        compareCommand->add_option("--depth", compare.depthPath, "Linear depth EXR, for PSNR per region");
+    CLI::Option* cameraOption =
+        compareCommand->add_option("--camera", compare.cameraPath, "Camera JSON of the reference renderer");
+    depthOption->needs(cameraOption);
+    cameraOption->needs(depthOption);
+
+    try {
+        app.parse(argc, argv);
+    } catch (const CLI::CallForHelp&) {
+        std::fputs(app.help().c_str(), stdout);
+        return 0;
+    } catch (const CLI::CallForAllHelp&) {
+        std::fputs(app.help("", CLI::AppFormatMode::All).c_str(), stdout);
+        return 0;
+    } catch (const CLI::CallForVersion&) {
+        std::printf("%s\n", app.version().c_str());
+        return 0;
+    } catch (const CLI::ParseError& error) {
+        // A subcommand's --help arrives as CallForHelp thrown from the subcommand.
+        if (error.get_exit_code() == static_cast<int>(CLI::ExitCodes::Success)) {
+            return app.exit(error);
+        }
+        throw CliError(ExitCode::Usage, std::string(error.what()) + " (see ffx-dof --help)");
+    }
+
+    if (apply->parsed()) {
+        runApply(finishApply(applyArgs));
+    } else if (demoCommand->parsed()) {
+        runDemo(demo);
+    } else if (benchCommand->parsed()) {
+        runBench(bench);
+    } else if (compareCommand->parsed()) {
+        runCompare(compare);
+    }
+    return 0;
+}
+
+}  // namespace
+}  // namespace ffxdof::cli
+
+int main(int argc, char** argv) {
+    using ffxdof::cli::ExitCode;
+    try {
+        return ffxdof::cli::run(argc, argv);
+    } catch (const ffxdof::cli::CliError& error) {
+        std::fprintf(stderr, "ffx-dof: error: %s\n", error.what());
+        return static_cast<int>(error.code());
+    } catch (const std::exception& error) {
+        std::fprintf(stderr, "ffx-dof: internal error: %s\n", error.what());
+        return static_cast<int>(ExitCode::Internal);
+    }
+}
