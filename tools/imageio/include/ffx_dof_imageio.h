@@ -11,6 +11,8 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
+#include <iosfwd>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -75,6 +77,11 @@ void writePng(const std::string& path, const ImageRGBA& image, bool withAlpha = 
 // Chooses the format from the extension (.exr: half EXR, .png: PNG without alpha; case-insensitive).
 // Throws IoError for any other extension.
 void writeImage(const std::string& path, const ImageRGBA& image);
+
+// Writes any file the same safe way as the image writers: writer fills a stream on a temporary file
+// in the destination's directory, which then replaces path. Throws IoError (the destination untouched)
+// when the directory is missing or unwritable, the stream fails, or writer throws (rethrown as is).
+void writeFileReplacing(const std::string& path, const std::function<void(std::ostream&)>& writer);
 
 // True when the path ends in the extension (".exr", ".png"), ignoring case.
 bool hasExtension(const std::string& path, const std::string& extension);

@@ -337,10 +337,16 @@ void writePng(const std::string& path, const ImageRGBA& image, bool withAlpha) {
                                 int(image.width) * components)) {
         fail(path, "PNG encoding failed");
     }
+    writeFileReplacing(path, [&](std::ostream& stream) {
+        stream.write(reinterpret_cast<const char*>(encoded.data()), std::streamsize(encoded.size()));
+    });
+}
+
+void writeFileReplacing(const std::string& path, const std::function<void(std::ostream&)>& writer) {
     TempFile temp(path);
     {
         std::ofstream stream = temp.open();
-        stream.write(reinterpret_cast<const char*>(encoded.data()), std::streamsize(encoded.size()));
+        writer(stream);
         stream.flush();
         if (!stream) fail(path, "write failed (disk full?)");
     }

@@ -1,0 +1,256 @@
+#include "ffx_dof_reference.h"
+
+#include <glm/common.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <stdexcept>
+
+namespace ffxdof::ref {
+namespace {
+
+uint32_t latticeHash(int32_t x, int32_t y) {
+    uint32_t h = uint32_t(x) * 0x8da6b343U ^ uint32_t(y) * 0xd8163841U;
+    h ^= h >> 15;
+    h *= 0x2c1b3c6dU;
+    h ^= h >> 12;
+    h *= 0x297a2d39U;
+    h ^= h >> 15;
+    return h;
+}
+
+float latticeValue(int32_t x, int32_t y) { return (latticeHash(x, y) >> 8) * (1.0f / 16777216.0f); }
+
+// Smoothly interpolated value noise in [0, 1].
+float valueNoise(double u, double v) {
+    const double fu = std::floor(u), fv = std::floor(v);
+    const int32_t iu = int32_t(fu), iv = int32_t(fv);
+    const auto fade = [](double t) { return float(t * t * (3.0 - 2.0 * t)); };
+    const float su = fade(u - fu), sv = fade(v - fv);
+    const float top = glm::mix(latticeValue(iu, iv), latticeValue(iu + 1, iv), su);
+    const float bottom = glm::mix(latticeValue(iu, iv + 1), latticeValue(iu + 1, iv + 1), su);
+    return glm::mix(top, bottom, sv);
+}
+
+int parity(double value) { return int(std::floor(value)) & 1; }
+
+Texture solid(glm::vec3 color) { return {Texture::Kind::Solid, color, color, 1.0f}; }
+Texture checker(glm::vec3 a, glm::vec3 b, float size) { return {Texture::Kind::Checker, a, b, size}; }
+Texture noise(glm::vec3 a, glm::vec3 b, float size) { return {Texture::Kind::Noise, a, b, size}; }
+Texture bricks(glm::vec3 brick, glm::vec3 mortar, float size) { return {Texture::Kind::Bricks, brick, mortar, size}; }
+Texture stripes(glm::vec3 a, glm::vec3 b, float size) { return {Texture::Kind::Stripes, a, b, size}; }
+
+// Aperture radius that gives a CoC of radiusPixels (full-resolution pixels) at view depth Z.
+void setApertureForBlur(Camera& camera, double viewDepth, double radiusPixels) {
+    const double f = camera.focalLength, focus = camera.focusDistance;
+    camera.apertureRadius = radiusPixels / camera.pixelsPerSensorUnit() * viewDepth * (focus - f) /
+                            (f * std::abs(focus - viewDepth));
+}
+
+// A camera at the origin looking down +Z with a 36 mm wide sensor.
+Camera baseCamera(uint32_t width, uint32_t height, double focalLength, double focus) {
+    Camera camera;
+    camera.width = width;
+    camera.height = height;
+    camera.focalLength = focalLength;
+    camera.sensorWidth = 0.036;
+    camera.focusDistance = focus;
+    camera.nearPlane = 0.1;
+    camera.farPlane = 100.0;
+    return camera;
+}
+
+// Emitter radius (metres) whose pinhole image has the given radius in pixels at depth Z.
+double emitterRadiusForPixels(const Camera& camera, double viewDepth, double pixels) {
+    return pixels / camera.pixelsPerSensorUnit() * viewDepth / camera.imageDistance();
+}
+
+const glm::dvec3 kRight{1, 0, 0}, kUp{0, 1, 0}, kForward{0, 0, 1};
+
+SceneSetup nearObject(uint32_t width, uint32_t height) {
+    SceneSetup setup{"near-object", "a near sphere, strongly blurred, over a sharp midground of boxes at the focus",
+                     {}, baseCamera(width, height, 0.035, 4.0)};
+    Scene& scene = setup.scene;
+    scene.background = {0.55f, 0.65f, 0.8f};
+    scene.addQuad({0, -1, 10}, kRight * 20.0, kForward * 10.0, checker({0.3f, 0.3f, 0.32f}, {0.6f, 0.58f, 0.5f}, 0.5f));
+    scene.addQuad({0, 1.5, 9}, kRight * 12.0, kUp * 2.5, bricks({0.55f, 0.25f, 0.18f}, {0.8f, 0.8f, 0.75f}, 0.4f));
+    scene.addBox({-0.9, -0.5, 4.0}, {0.4, 0.5, 0.4}, checker({0.9f, 0.9f, 0.9f}, {0.1f, 0.2f, 0.6f}, 0.1f));
+    scene.addBox({0.6, -0.4, 4.2}, {0.35, 0.6, 0.3}, stripes({0.95f, 0.8f, 0.2f}, {0.15f, 0.1f, 0.1f}, 0.08f));
+    scene.addSphere({0.2, 0.35, 4.1}, 0.3, noise({0.1f, 0.6f, 0.2f}, {0.9f, 0.95f, 0.7f}, 0.05f));
+    scene.addSphere({-0.35, -0.15, 1.3}, 0.28, checker({0.85f, 0.2f, 0.15f}, {0.95f, 0.9f, 0.85f}, 0.07f));
+    setApertureForBlur(setup.camera, 1.3, std::max(4.0, 0.03 * width));
+    return setup;
+}
+
+SceneSetup farHighlights(uint32_t width, uint32_t height) {
+    SceneSetup setup{"far-highlights", "bright point lights far behind a subject in focus at 2 m", {},
+                     baseCamera(width, height, 0.05, 2.0)};
+    Camera& camera = setup.camera;
+    Scene& scene = setup.scene;
+    scene.background = {0.02f, 0.02f, 0.04f};
+    scene.addQuad({0, 0, 40}, kRight * 40.0, kUp * 30.0, noise({0.02f, 0.02f, 0.05f}, {0.08f, 0.07f, 0.1f}, 1.0f));
+    scene.addBox({0.0, -0.35, 2.0}, {0.2, 0.25, 0.2}, checker({0.9f, 0.85f, 0.8f}, {0.2f, 0.3f, 0.5f}, 0.05f));
+    scene.addSphere({0.25, 0.1, 2.1}, 0.12, checker({0.9f, 0.5f, 0.1f}, {0.1f, 0.1f, 0.1f}, 0.03f));
+    const glm::vec3 colors[] = {{1.0f, 0.8f, 0.5f}, {0.6f, 0.8f, 1.0f}, {1.0f, 0.4f, 0.3f}, {0.7f, 1.0f, 0.6f}};
+    for (int i = 0; i < 14; ++i) {
+        const double z = 18.0 + 1.5 * (i % 5);
+        const double x = -6.0 + 12.0 * (i / 13.0) + 0.4 * std::sin(i * 2.3);
+        const double y = -1.5 + 3.5 * latticeValue(i, 7);
+        scene.addEmitter({x, y, z}, emitterRadiusForPixels(camera, z, 0.6), colors[i % 4], 150.0f + 50.0f * (i % 3));
+    }
+    setApertureForBlur(camera, 20.0, std::max(4.0, 0.025 * width));
+    return setup;
+}
+
+SceneSetup fence(uint32_t width, uint32_t height) {
+    SceneSetup setup{"fence", "thin fence posts close to the camera in front of a sharp brick wall (partial occlusion)",
+                     {}, baseCamera(width, height, 0.035, 3.0)};
+    Scene& scene = setup.scene;
+    scene.background = {0.5f, 0.6f, 0.75f};
+    scene.addQuad({0, 0, 3.0}, kRight * 6.0, kUp * 4.0, bricks({0.6f, 0.3f, 0.2f}, {0.85f, 0.85f, 0.8f}, 0.25f));
+    const Texture paint = stripes({0.08f, 0.22f, 0.1f}, {0.12f, 0.3f, 0.14f}, 0.01f);
+    for (int i = -6; i <= 6; ++i) scene.addBox({0.12 * i, 0.0, 0.7}, {0.012, 1.0, 0.012}, paint);
+    scene.addBox({0.0, -0.2, 0.68}, {1.0, 0.01, 0.01}, paint);
+    setApertureForBlur(setup.camera, 0.7, std::max(4.0, 0.025 * width));
+    return setup;
+}
+
+SceneSetup busyBackground(uint32_t width, uint32_t height) {
+    SceneSetup setup{"busy-background",
+                     "a sharp object at 2 m in front of a busy background blurred by at least 40 pixels", {},
+                     baseCamera(width, height, 0.05, 2.0)};
+    Scene& scene = setup.scene;
+    scene.addQuad({0, 0, 12}, kRight * 12.0, kUp * 8.0, noise({0.05f, 0.1f, 0.3f}, {1.0f, 0.9f, 0.4f}, 0.6f));
+    scene.addSphere({-0.1, 0.0, 2.0}, 0.22, checker({0.95f, 0.95f, 0.95f}, {0.8f, 0.1f, 0.1f}, 0.05f));
+    scene.addBox({0.3, -0.2, 2.05}, {0.08, 0.3, 0.08}, stripes({0.1f, 0.1f, 0.1f}, {0.2f, 0.8f, 0.3f}, 0.03f));
+    setApertureForBlur(setup.camera, 12.0, std::max(40.0, 0.045 * width));
+    return setup;
+}
+
+SceneSetup floorScene(uint32_t width, uint32_t height) {
+    SceneSetup setup{"floor", "a checker floor receding from 0.6 m to 60 m, focus at 4 m", {},
+                     baseCamera(width, height, 0.035, 4.0)};
+    Camera& camera = setup.camera;
+    camera.position = {0.0, 1.0, 0.0};
+    camera.target = {0.0, 0.55, 4.0};
+    Scene& scene = setup.scene;
+    scene.background = {0.6f, 0.7f, 0.9f};
+    scene.addQuad({0, 0, 30}, kRight * 30.0, kForward * 30.0, checker({0.15f, 0.15f, 0.15f}, {0.85f, 0.8f, 0.7f}, 0.5f));
+    scene.addSphere({-0.8, 0.3, 2.0}, 0.3, noise({0.2f, 0.3f, 0.8f}, {0.9f, 0.9f, 1.0f}, 0.05f));
+    scene.addSphere({0.6, 0.4, 4.5}, 0.4, checker({0.9f, 0.3f, 0.1f}, {1.0f, 0.9f, 0.6f}, 0.1f));
+    scene.addSphere({-1.5, 0.8, 12.0}, 0.8, stripes({0.3f, 0.7f, 0.3f}, {0.9f, 0.9f, 0.6f}, 0.2f));
+    setApertureForBlur(camera, 1.2, std::max(4.0, 0.03 * width));
+    return setup;
+}
+
+SceneSetup singlePoint(uint32_t width, uint32_t height) {
+    SceneSetup setup{"point", "one bright point far behind the focus on black: a single bokeh disc", {},
+                     baseCamera(width, height, 0.05, 3.0)};
+    Camera& camera = setup.camera;
+    const double z = 20.0;
+    setApertureForBlur(camera, z, std::max(6.0, 0.03 * width));
+    setup.scene.addEmitter({0.0, 0.0, z}, emitterRadiusForPixels(camera, z, 0.4), {1.0f, 1.0f, 1.0f}, 50.0f);
+    return setup;
+}
+
+struct SceneEntry {
+    const char* name;
+    std::function<SceneSetup(uint32_t, uint32_t)> make;
+};
+
+const std::vector<SceneEntry>& sceneCatalog() {
+    static const std::vector<SceneEntry> catalog = {
+        {"near-object", nearObject}, {"far-highlights", farHighlights}, {"fence", fence},
+        {"busy-background", busyBackground}, {"floor", floorScene},      {"point", singlePoint},
+    };
+    return catalog;
+}
+
+}  // namespace
+
+glm::vec3 Texture::evaluate(glm::dvec2 uv) const {
+    const double u = uv.x / scale, v = uv.y / scale;
+    switch (kind) {
+        case Kind::Solid: return colorA;
+        case Kind::Checker: return (parity(u) ^ parity(v)) ? colorB : colorA;
+        case Kind::Stripes: return parity(u) ? colorB : colorA;
+        case Kind::Noise: {
+            // Three octaves of value noise with a contrast boost: a busy, high-frequency pattern.
+            const float n = 0.55f * valueNoise(u, v) + 0.3f * valueNoise(2.7 * u, 2.7 * v) +
+                            0.15f * valueNoise(7.1 * u, 7.1 * v);
+            const float t = glm::clamp((n - 0.5f) * 2.2f + 0.5f, 0.0f, 1.0f);
+            return glm::mix(colorA, colorB, t);
+        }
+        case Kind::Bricks: {
+            // Bricks twice as wide as tall with a half-brick offset every other row; 8% mortar.
+            const double row = std::floor(v * 2.0);
+            const double brickU = u + (int(row) & 1) * 0.5;
+            const double fracU = brickU - std::floor(brickU), fracV = v * 2.0 - row;
+            const bool mortar = fracU < 0.04 || fracU > 0.96 || fracV < 0.08 || fracV > 0.92;
+            if (mortar) return colorB;
+            const float shade = 0.8f + 0.4f * latticeValue(int32_t(std::floor(brickU)), int32_t(row));
+            return colorA * shade;
+        }
+    }
+    return colorA;
+}
+
+Primitive& Scene::addSphere(glm::dvec3 center, double radius, Texture texture) {
+    Primitive primitive;
+    primitive.kind = Primitive::Kind::Sphere;
+    primitive.center = center;
+    primitive.radius = radius;
+    primitive.texture = texture;
+    primitives.push_back(primitive);
+    return primitives.back();
+}
+
+Primitive& Scene::addEmitter(glm::dvec3 center, double radius, glm::vec3 color, float emission) {
+    Primitive& primitive = addSphere(center, radius, solid(color));
+    primitive.emitter = true;
+    primitive.emission = emission;
+    return primitive;
+}
+
+Primitive& Scene::addQuad(glm::dvec3 center, glm::dvec3 axisU, glm::dvec3 axisV, Texture texture) {
+    Primitive primitive;
+    primitive.kind = Primitive::Kind::Quad;
+    primitive.center = center;
+    primitive.axisU = axisU;
+    primitive.axisV = axisV;
+    primitive.texture = texture;
+    primitives.push_back(primitive);
+    return primitives.back();
+}
+
+Primitive& Scene::addBox(glm::dvec3 center, glm::dvec3 halfExtents, Texture texture) {
+    Primitive primitive;
+    primitive.kind = Primitive::Kind::Box;
+    primitive.center = center;
+    primitive.halfExtents = halfExtents;
+    primitive.texture = texture;
+    primitives.push_back(primitive);
+    return primitives.back();
+}
+
+std::vector<SceneInfo> listScenes() {
+    std::vector<SceneInfo> scenes;
+    for (const SceneEntry& entry : sceneCatalog()) {
+        const SceneSetup setup = entry.make(64, 64);
+        scenes.push_back({setup.name, setup.description});
+    }
+    return scenes;
+}
+
+SceneSetup makeScene(const std::string& name, uint32_t width, uint32_t height) {
+    if (width == 0 || height == 0) throw std::invalid_argument("scene width and height must be at least 1");
+    std::string names;
+    for (const SceneEntry& entry : sceneCatalog()) {
+        if (name == entry.name) return entry.make(width, height);
+        names += names.empty() ? entry.name : std::string(", ") + entry.name;
+    }
+    throw std::invalid_argument("unknown scene '" + name + "' (scenes: " + names + ")");
+}
+
+}  // namespace ffxdof::ref
