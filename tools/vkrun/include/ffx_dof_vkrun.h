@@ -156,9 +156,9 @@ struct RunSettings {
 struct RunResult {
     HostImage output;  // RGBA, linear, decoded from outputFormat (the color image when inPlace)
     std::array<double, kPassCount> passMilliseconds{};  // median over the repeats
-    double totalMilliseconds = 0.0;                       // median of first to last timestamp
-    double copyPassMilliseconds = -1.0;                   // median; -1 without measureCopyPass
-    uint64_t internalMemoryBytes = 0;                     // ffxDofContextGetGpuMemoryUsage total
+    double totalMilliseconds = 0.0;                     // median of first to last timestamp
+    double copyPassMilliseconds = -1.0;                 // median; -1 without measureCopyPass
+    uint64_t internalMemoryBytes = 0;                   // ffxDofContextGetGpuMemoryUsage total
     uint64_t aliasableMemoryBytes = 0;
 };
 

@@ -1,0 +1,59 @@
+// Internals of ffx_dof_vkrun shared by its source files and its tests.
+#pragma once
+
+#include "ffx_dof_vkrun.h"
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace ffxdof::vkrun {
+
+// A Vulkan structure with its sType set and every other member zero. (Brace-initialising only
+// sType trips -Wmissing-field-initializers.)
+template <typename T>
+T makeInfo(VkStructureType type) {
+    T info{};
+    info.sType = type;
+    return info;
+}
+
+// Throws Error("<what> failed: VK_ERROR_...") unless result is VK_SUCCESS.
+void check(VkResult result, const char* what);
+
+bool isDepthAspect(VkFormat format);
+// Bytes of one texel as copied between a buffer and the image (D24_UNORM_S8_UINT: X8_D24, 4 bytes).
+uint32_t bytesPerTexel(VkFormat format);
+// Host floats to texels (color: 4 channels; depth: 1) and color texels back to RGBA floats.
+std::vector<uint8_t> encodeTexels(const HostImage& image, VkFormat format);
+HostImage decodeColorTexels(const uint8_t* bytes, uint32_t width, uint32_t height, VkFormat format);
+
+// An image with its own memory, destroyed with the device it was made on.
+class GpuImage {
+public:
+    GpuImage(Device& device, uint32_t width, uint32_t height, VkFormat format, VkImageUsageFlags usage,
+             VkImageCreateFlags flags = 0);
+    ~GpuImage();
+    GpuImage(const GpuImage&) = delete;
+    GpuImage& operator=(const GpuImage&) = delete;
+
+    VkImage image() const { return image_; }
+    VkFormat format() const { return format_; }
+    uint32_t width() const { return width_; }
+    uint32_t height() const { return height_; }
+    VkImageAspectFlags aspects() const;  // all aspects of the format (depth and stencil for D24S8)
+
+    // Uploads host pixels (converted to the format) and leaves the image in `layout`.
+    void upload(const HostImage& pixels, VkImageLayout layout);
+    // Reads a color image that is in `layout` back as RGBA floats; the image stays in `layout`.
+    HostImage download(VkImageLayout layout);
+
+private:
+    Device& device_;
+    VkImage image_ = VK_NULL_HANDLE;
+    VkDeviceMemory memory_ = VK_NULL_HANDLE;
+    VkFormat format_;
+    uint32_t width_, height_;
+};
+
+}  // namespace ffxdof::vkrun
