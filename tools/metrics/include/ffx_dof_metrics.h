@@ -1,0 +1,92 @@
+// Image-quality metrics for ffx-dof: PSNR, SSIM, PSNR per depth-of-field region, and bokeh checks.
+//
+// Conventions. Images are linear RGB. PSNR and SSIM see values clamped to [0, 1] (peak 1), so that a
+// few HDR highlights (tens or hundreds) do not swamp the figure: they measure what a display shows.
+// PSNR of identical images (MSE 0) is +infinity; PSNR over an empty region is NaN. Images of
+// different sizes are an error (std::invalid_argument).
+#pragma once
+
+#include "ffx_dof_imageio.h"
+#include "ffx_dof_reference.h"
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace ffxdof::metrics {
+
+// One byte per pixel, 1 = in the region.
+using Mask = std::vector<uint8_t>;
+
+// Mean over pixels (and R, G, B) of the squared difference of clamped values; over the mask's
+// pixels when a mask is given.
+double meanSquaredError(const io::ImageRGBA& reference, const io::ImageRGBA& test, const Mask* mask = nullptr);
+// 10 log10(1 / MSE) in dB.
+double psnr(const io::ImageRGBA& reference, const io::ImageRGBA& test, const Mask* mask = nullptr);
+double psnrFromMse(double mse);
+// Largest |difference| of any clamped R, G or B value, over the mask's pixels when given.
+double maxAbsDifference(const io::ImageRGBA& reference, const io::ImageRGBA& test, const Mask* mask = nullptr);
+
+// Rec. 709 luminance of an RGBA pixel.
+inline double luminance(const float* rgba) { return 0.2126 * rgba[0] + 0.7152 * rgba[1] + 0.0722 * rgba[2]; }
+
+// Mean SSIM (Wang, Bovik, Sheikh, Simoncelli 2004) of the luminance of the clamped images: an 11x11
+// Gaussian window with sigma 1.5, K1 = 0.01, K2 = 0.03, dynamic range 1. The window is clamped at the
+// image border (edge pixels repeated), so every pixel counts and tiny images work.
+double ssim(const io::ImageRGBA& reference, const io::ImageRGBA& test);
+
+// Signed CoC radius in full-resolution pixels for every pixel of a linear depth image (metres):
+// positive in the near field, negative in the far field (Camera::cocRadiusPixels).
+io::ImageR cocRadiusMap(const ref::Camera& camera, const io::ImageR& linearDepth);
+
+struct RegionMasks {
+    Mask inFocus;    // |radius| < 1 px
+    Mask nearField;  // radius >= 1 px (in front of the focus plane)
+    Mask farField;   // radius <= -1 px (behind it)
+    Mask haloBand;   // far-field pixels within haloWidth px (Euclidean, centre to centre) of an in-focus pixel
+};
+RegionMasks classifyRegions(const io::ImageR& radiusPixels, double haloWidthPixels = 8.0);
+size_t countPixels(const Mask& mask);
+
+struct RegionScore {
+    double psnr = 0.0;  // NaN when the region is empty
+    size_t pixels = 0;
+};
+
+// Everything `ffx-dof compare` and the quality gates report for one pair of images.
+struct Comparison {
+    double psnr = 0.0;
+    double ssim = 0.0;
+    bool hasRegions = false;  // the region scores are filled only when a radius map was given
+    RegionScore inFocus, nearField, farField, haloBand;
+};
+Comparison compareImages(const io::ImageRGBA& reference, const io::ImageRGBA& test,
+                         const io::ImageR* radiusPixels = nullptr);
+// Several lines, "psnr 31.20 dB", "ssim 0.9512", "psnr in-focus 40.10 dB (1234 px)", ...
+std::string formatComparison(const Comparison& comparison);
+
+// ---- bokeh ---------------------------------------------------------------------------------------
+
+// A single bright disc on a known background (image minus background; no background means black).
+struct BokehMeasurement {
+    double centerX = 0.0, centerY = 0.0;  // luminance centroid, pixels (pixel centres at +0.5)
+    double radius = 0.0;  // sqrt(area / pi) of the pixels brighter than half the disc's inner level
+    double flatness = 0.0;  // standard deviation / mean of the luminance within 0.7 radius
+    double energy = 0.0;  // sum of luminance over the image
+};
+BokehMeasurement measureBokeh(const io::ImageRGBA& image, const io::ImageRGBA* background = nullptr);
+
+struct BokehTolerances {
+    double radiusPixels = 1.0;  // |radius - expected| <= this
+    double flatness = 0.15;     // flatness <= this
+    double energy = 0.05;       // |energy / expected - 1| <= this
+};
+struct BokehCheck {
+    bool radiusOk = false, flatOk = false, energyOk = false;
+    bool ok() const { return radiusOk && flatOk && energyOk; }
+    std::string summary;  // the measured and expected figures, one line
+};
+BokehCheck checkBokeh(const BokehMeasurement& measured, double expectedRadius, double expectedEnergy,
+                      const BokehTolerances& tolerances = {});
+
+}  // namespace ffxdof::metrics
