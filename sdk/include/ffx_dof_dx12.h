@@ -15,11 +15,19 @@
 extern "C" {
 #endif
 
+/** Bits of FfxDofBackendDescriptionDX12::flags. */
+typedef enum FfxDofBackendFlagBitsDX12 {
+    /** Never select the 16-bit (FFX_HALF) shaders even where the device supports native 16-bit ops. */
+    FFX_DOF_DX12_DISABLE_FLOAT16 = (1 << 0),
+    /** Never select the wave64 shaders even where every wave has 64 lanes. */
+    FFX_DOF_DX12_DISABLE_WAVE64 = (1 << 1)
+} FfxDofBackendFlagBitsDX12;
+
 typedef struct FfxDofBackendDescriptionDX12 {
     ID3D12Device* device;        /**< the engine's; the backend holds a reference until destroyed */
     uint32_t maxFramesInFlight;  /**< dispatches the GPU may still be executing when the next is
                                       recorded; 0 means 3 */
-    uint32_t flags;              /**< reserved, must be 0 */
+    uint32_t flags;              /**< FfxDofBackendFlagBitsDX12 */
 } FfxDofBackendDescriptionDX12;
 
 /** Creates a D3D12 backend. Returns FFX_DOF_ERROR_UNSUPPORTED when this build carries no DXIL

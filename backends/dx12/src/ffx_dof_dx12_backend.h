@@ -1,0 +1,99 @@
+// The D3D12 backend: one root signature and the pipeline states of the device's permutations,
+// shared by every context made with it. Private to ffx-dof.
+#pragma once
+
+#include "ffx_dof_backend.h"
+#include "ffx_dof_dx12.h"
+#include "ffx_dof_shader_table.h"
+
+#include <d3d12.h>
+#include <wrl/client.h>
+
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+namespace ffxdof::dx12 {
+
+using Microsoft::WRL::ComPtr;
+
+// Every dispatch binds one contiguous block of descriptors through one descriptor table:
+//   [0, 9)    SRVs t0..t8          (FFX_DOF_SRV_*)
+//   [9, 23)   image UAVs u0..u13   (FFX_DOF_UAV_*)
+//   [23, 24)  buffer UAV u24       (FFX_DOF_UAV_BUFFER_GLOBALS)
+// HLSL has one u# namespace for images and buffers, so the buffer class starts at the distance the
+// resource table puts between the two classes (FFX_DOF_UAV_BUFFER_BASE - FFX_DOF_UAV_IMAGE_BASE),
+// which is also the register glslang's single UAV binding shift maps onto the Vulkan binding.
+constexpr uint32_t kSrvCount = FFX_DOF_SRV_LAYER_ALPHA + 1;
+constexpr uint32_t kUavImageCount = FFX_DOF_UAV_OUTPUT + 1;
+constexpr uint32_t kUavBufferCount = FFX_DOF_UAV_BUFFER_GLOBALS + 1;
+constexpr uint32_t kUavBufferRegisterBase = FFX_DOF_UAV_BUFFER_BASE - FFX_DOF_UAV_IMAGE_BASE;
+constexpr uint32_t kSrvTableOffset = 0;
+constexpr uint32_t kUavImageTableOffset = kSrvTableOffset + kSrvCount;
+constexpr uint32_t kUavBufferTableOffset = kUavImageTableOffset + kUavImageCount;
+constexpr uint32_t kDescriptorsPerDispatch = kUavBufferTableOffset + kUavBufferCount;
+static_assert(kUavBufferRegisterBase >= kUavImageCount, "buffer UAV registers overlap the image UAV registers");
+
+constexpr UINT kRootConstantsParameter = 0;  // b0: FfxDofConstants
+constexpr UINT kRootDescriptorTableParameter = 1;
+constexpr UINT kRootConstantCount = sizeof(FfxDofConstants) / 4;
+
+constexpr uint32_t kDefaultFramesInFlight = 3;
+constexpr uint32_t kMaxFramesInFlight = 16;
+
+// Axes the backend chooses from the device (FFX_HALF, FFX_DOF_OPTION_WAVE64).
+struct DeviceOptions {
+    bool half = false;
+    bool wave64 = false;
+};
+
+// What a pass touches, from the reflected bindings of its table (union over its permutations).
+struct PassAccess {
+    uint32_t srvMask = 0;       // bit i: FFX_DOF_SRV_* slot i
+    uint32_t uavImageMask = 0;  // bit i: FFX_DOF_UAV_* slot i
+    bool usesGlobals = false;   // FFX_DOF_UAV_BUFFER_GLOBALS
+};
+
+// One pass's pipeline state for a context: chosen once at context creation.
+struct PassPipeline {
+    ID3D12PipelineState* pipelineState = nullptr;  // owned by the Backend
+    PassAccess access;
+};
+
+class Backend final : public FfxDofBackend_T {
+public:
+    FfxDofErrorCode init(const FfxDofBackendDescriptionDX12& description);
+    FfxDofErrorCode createContext(const ContextConfig& config, std::unique_ptr<BackendContext>* out) override;
+
+    // The pipeline of `pass` for the context-dependent options, or an error naming the permutation.
+    FfxDofErrorCode pipeline(Pass pass, const PermutationOptions& options, PassPipeline* out) const;
+
+    ID3D12Device* device() const { return device_.Get(); }
+    ID3D12RootSignature* rootSignature() const { return rootSignature_.Get(); }
+    uint32_t framesInFlight() const { return framesInFlight_; }
+    UINT descriptorSize() const { return descriptorSize_; }
+    const DeviceOptions& deviceOptions() const { return deviceOptions_; }
+
+private:
+    struct PassPipelines {
+        const shaders::PassTable* table = nullptr;
+        PassAccess access;
+        std::vector<ComPtr<ID3D12PipelineState>> byBlob;  // null for blobs of other device options
+    };
+
+    FfxDofErrorCode queryDevice(uint32_t flags);
+    FfxDofErrorCode createRootSignature();
+    FfxDofErrorCode createPipelines(Pass pass);
+
+    ComPtr<ID3D12Device> device_;
+    ComPtr<ID3D12RootSignature> rootSignature_;
+    uint32_t framesInFlight_ = kDefaultFramesInFlight;
+    UINT descriptorSize_ = 0;
+    DeviceOptions deviceOptions_;
+    PassPipelines passes_[kPassCount];
+};
+
+// "DXGI_FORMAT_R16G16B16A16_FLOAT" style name, or the number for formats outside the rule table.
+const char* describeFormat(DXGI_FORMAT format, char (&buffer)[32]);
+
+}  // namespace ffxdof::dx12

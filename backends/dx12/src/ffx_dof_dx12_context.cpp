@@ -1,0 +1,547 @@
+// A D3D12 context: the internal resources, the descriptor ring, and the recording of one dispatch
+// (descriptors, barriers, the five passes) into the engine's command list.
+#include "ffx_dof_context.h"
+#include "ffx_dof_dx12_backend.h"
+#include "ffx_dof_dx12_formats.h"
+
+#include <cstdint>
+#include <new>
+
+namespace ffxdof::dx12 {
+namespace {
+
+// The internal images: names, formats and slots follow shaders_common/ffx_dof_resources.h, which
+// is the source of truth (B10G11R11 there is DXGI's R11G11B10_FLOAT: same bits, other naming).
+enum class ImageExtent : uint32_t {
+    Half,   // ceil(W / 2) x ceil(H / 2)
+    Tiles,  // ceil(half / FFX_DOF_TILE_SIZE)
+};
+
+struct InternalImageSpec {
+    const char* name;
+    DXGI_FORMAT format;
+    ImageExtent extent;
+    bool mipChain;     // kMipCount levels (fewer where the image is too small for them)
+    uint32_t srvSlot;  // FFX_DOF_SRV_*: every level
+    uint32_t uavSlot;  // FFX_DOF_UAV_*: level 0; a chain has one consecutive slot per level
+};
+
+constexpr InternalImageSpec kInternalImages[] = {
+    {"COLOR_MIPS", DXGI_FORMAT_R11G11B10_FLOAT, ImageExtent::Half, true, FFX_DOF_SRV_COLOR_MIPS,
+     FFX_DOF_UAV_COLOR_MIP0},
+    {"COC_MIPS", DXGI_FORMAT_R16_FLOAT, ImageExtent::Half, true, FFX_DOF_SRV_COC_MIPS, FFX_DOF_UAV_COC_MIP0},
+    {"TILES", DXGI_FORMAT_R16G16_FLOAT, ImageExtent::Tiles, false, FFX_DOF_SRV_TILES, FFX_DOF_UAV_TILES},
+    {"DILATED_TILES", DXGI_FORMAT_R16G16_FLOAT, ImageExtent::Tiles, false, FFX_DOF_SRV_DILATED_TILES,
+     FFX_DOF_UAV_DILATED_TILES},
+    {"NEAR_COLOR", DXGI_FORMAT_R11G11B10_FLOAT, ImageExtent::Half, false, FFX_DOF_SRV_NEAR_COLOR,
+     FFX_DOF_UAV_NEAR_COLOR},
+    {"FAR_COLOR", DXGI_FORMAT_R11G11B10_FLOAT, ImageExtent::Half, false, FFX_DOF_SRV_FAR_COLOR, FFX_DOF_UAV_FAR_COLOR},
+    {"LAYER_ALPHA", DXGI_FORMAT_R8G8_UNORM, ImageExtent::Half, false, FFX_DOF_SRV_LAYER_ALPHA, FFX_DOF_UAV_LAYER_ALPHA},
+};
+constexpr uint32_t kInternalImageCount = sizeof(kInternalImages) / sizeof(kInternalImages[0]);
+
+// GLOBALS (FFX_DOF_UAV_BUFFER_GLOBALS): RWStructuredBuffer<uint> in HLSL, so a structured UAV.
+constexpr UINT kGlobalsElementBytes = 4;
+constexpr UINT kGlobalsElementCount = 4;
+
+constexpr D3D12_RESOURCE_STATES kReadState = D3D12_RESOURCE_STATE_NON_PIXEL_SHADER_RESOURCE;
+constexpr D3D12_RESOURCE_STATES kWriteState = D3D12_RESOURCE_STATE_UNORDERED_ACCESS;
+
+uint32_t divideRoundingUp(uint32_t value, uint32_t divisor) { return (value + divisor - 1) / divisor; }
+
+uint32_t mipLevelsFor(const InternalImageSpec& spec, uint32_t width, uint32_t height) {
+    if (!spec.mipChain) return 1;
+    uint32_t levels = 1;
+    for (uint32_t largest = width > height ? width : height; largest > 1 && levels < kMipCount; largest /= 2) {
+        ++levels;
+    }
+    return levels;
+}
+
+// Subresources whose states a dispatch follows: every level of every internal image, plus color,
+// depth and output (whole resources; output shares color's entry when in place).
+constexpr uint32_t kMaxTracked = kInternalImageCount * kMipCount + 3;
+constexpr uint8_t kNoTarget = 0xff;
+
+// Which tracked entries each binding slot reaches in one dispatch.
+struct SlotTargets {
+    struct Range {
+        uint8_t first = kNoTarget;
+        uint8_t count = 0;
+    };
+    Range srv[kSrvCount];
+    uint8_t uavImage[kUavImageCount];  // kNoTarget: a level the image does not have (null descriptor)
+    SlotTargets() {
+        for (uint8_t& target : uavImage) target = kNoTarget;
+    }
+};
+
+enum class Access : uint8_t { None, Read, Write };
+
+// Follows the state of every tracked subresource through the passes and batches the barriers that
+// make each pass's accesses legal. Without a command list it only simulates (to find rest states).
+class StateTracker {
+public:
+    struct Entry {
+        ID3D12Resource* resource = nullptr;
+        UINT subresource = D3D12_RESOURCE_BARRIER_ALL_SUBRESOURCES;
+        D3D12_RESOURCE_STATES state = D3D12_RESOURCE_STATE_COMMON;
+        D3D12_RESOURCE_STATES final = D3D12_RESOURCE_STATE_COMMON;
+        bool unorderedWrites = false;  // written through a UAV with no barrier since
+    };
+
+    uint8_t track(ID3D12Resource* resource, UINT subresource, D3D12_RESOURCE_STATES state,
+                  D3D12_RESOURCE_STATES final) {
+        Entry& entry = entries_[count_];
+        entry.resource = resource;
+        entry.subresource = subresource;
+        entry.state = state;
+        entry.final = final;
+        // Writes before this dispatch (the engine's, or a previous dispatch's) may still be in flight.
+        entry.unorderedWrites = state == kWriteState;
+        return static_cast<uint8_t>(count_++);
+    }
+
+    void beforePass(const SlotTargets& slots, const PassAccess& access, ID3D12Resource* globals) {
+        for (uint32_t i = 0; i < count_; ++i) access_[i] = Access::None;
+        for (uint32_t slot = 0; slot < kSrvCount; ++slot) {
+            if (!(access.srvMask & (1u << slot))) continue;
+            for (uint32_t i = 0; i < slots.srv[slot].count; ++i) access_[slots.srv[slot].first + i] = Access::Read;
+        }
+        // A write wins over a read of the same subresource: in place, the composite pass binds the
+        // color and the output, and its COMBINE_IN_PLACE permutation reads the color through the output.
+        for (uint32_t slot = 0; slot < kUavImageCount; ++slot) {
+            if ((access.uavImageMask & (1u << slot)) && slots.uavImage[slot] != kNoTarget)
+                access_[slots.uavImage[slot]] = Access::Write;
+        }
+        for (uint32_t i = 0; i < count_; ++i) {
+            Entry& entry = entries_[i];
+            if (access_[i] == Access::Read && (entry.state & kReadState) == 0) {
+                transition(entry, kReadState);
+            } else if (access_[i] == Access::Write && entry.state != kWriteState) {
+                transition(entry, kWriteState);
+            } else if (access_[i] == Access::Write && entry.unorderedWrites) {
+                uavBarrier(entry.resource);
+            }
+            if (access_[i] != Access::None) entry.unorderedWrites = false;
+        }
+        // GLOBALS stays a UAV (a buffer: promoted from COMMON on first use, decays after the list),
+        // so only UAV barriers order the atomics of one pass against the next.
+        if (access.usesGlobals && globalsWritten_) uavBarrier(globals);
+    }
+
+    void afterPass(const PassAccess& access) {
+        for (uint32_t i = 0; i < count_; ++i) {
+            if (access_[i] == Access::Write) entries_[i].unorderedWrites = true;
+        }
+        globalsWritten_ = globalsWritten_ || access.usesGlobals;
+    }
+
+    // Back to the states the engine declared (engine images) and the rest states (internal images).
+    void restore() {
+        for (uint32_t i = 0; i < count_; ++i) {
+            Entry& entry = entries_[i];
+            if (entry.state != entry.final) {
+                transition(entry, entry.final);
+            } else if (entry.state == kWriteState && entry.unorderedWrites) {
+                uavBarrier(entry.resource);  // the engine's next UAV access must see our writes
+            }
+        }
+    }
+
+    // A dispatch may follow another in the same command list: its first GLOBALS atomics must wait
+    // for the previous composite pass's reset.
+    void assumeGlobalsWritten() { globalsWritten_ = true; }
+
+    void flush(ID3D12GraphicsCommandList* list) {
+        if (list != nullptr && barrierCount_ != 0) list->ResourceBarrier(barrierCount_, barriers_);
+        barrierCount_ = 0;
+    }
+
+    const Entry& entry(uint32_t index) const { return entries_[index]; }
+
+private:
+    void transition(Entry& entry, D3D12_RESOURCE_STATES after) {
+        D3D12_RESOURCE_BARRIER& barrier = barriers_[barrierCount_++];
+        barrier = {};
+        barrier.Type = D3D12_RESOURCE_BARRIER_TYPE_TRANSITION;
+        barrier.Transition.pResource = entry.resource;
+        barrier.Transition.Subresource = entry.subresource;
+        barrier.Transition.StateBefore = entry.state;
+        barrier.Transition.StateAfter = after;
+        entry.state = after;
+    }
+
+    void uavBarrier(ID3D12Resource* resource) {
+        for (UINT b = 0; b < barrierCount_; ++b) {
+            if (barriers_[b].Type == D3D12_RESOURCE_BARRIER_TYPE_UAV && barriers_[b].UAV.pResource == resource) return;
+        }
+        D3D12_RESOURCE_BARRIER& barrier = barriers_[barrierCount_++];
+        barrier = {};
+        barrier.Type = D3D12_RESOURCE_BARRIER_TYPE_UAV;
+        barrier.UAV.pResource = resource;
+    }
+
+    Entry entries_[kMaxTracked];
+    Access access_[kMaxTracked]{};
+    uint32_t count_ = 0;
+    bool globalsWritten_ = false;
+    D3D12_RESOURCE_BARRIER barriers_[2 * kMaxTracked + 1]{};
+    UINT barrierCount_ = 0;
+};
+
+// An engine image, checked and with the view format the backend uses for it.
+struct EngineImage {
+    ID3D12Resource* resource = nullptr;
+    DXGI_FORMAT viewFormat = DXGI_FORMAT_UNKNOWN;
+    bool srgb = false;
+    D3D12_RESOURCE_STATES state = D3D12_RESOURCE_STATE_COMMON;
+};
+
+FfxDofErrorCode checkEngineImage(const FfxDofResource& image, ImageRole role, const char* name, EngineImage* out) {
+    char declaredName[32];
+    char resourceName[32];
+    char familyName[32];
+    const DXGI_FORMAT declared = static_cast<DXGI_FORMAT>(image.format);
+    const FormatRule* rule = findFormatRule(declared, role);
+    if (rule == nullptr)
+        return fail(FFX_DOF_ERROR_INVALID_RESOURCE,
+                    "%s: %s is not accepted for this image (docs/integration-d3d12.md "
+                    "lists the formats)",
+                    name, describeFormat(declared, declaredName));
+    ID3D12Resource* resource = reinterpret_cast<ID3D12Resource*>(static_cast<uintptr_t>(image.handle));
+    const D3D12_RESOURCE_DESC desc = resource->GetDesc();
+    if (desc.Dimension != D3D12_RESOURCE_DIMENSION_TEXTURE2D || desc.DepthOrArraySize != 1)
+        return fail(FFX_DOF_ERROR_INVALID_RESOURCE, "%s: the resource is not a single 2D texture", name);
+    if (desc.SampleDesc.Count != 1)
+        return fail(FFX_DOF_ERROR_INVALID_RESOURCE, "%s: the resource has %u samples; resolve it first", name,
+                    desc.SampleDesc.Count);
+    if (desc.Width != image.width || desc.Height != image.height)
+        return fail(FFX_DOF_ERROR_INVALID_RESOURCE, "%s: declared %ux%u but the resource is %llux%u", name, image.width,
+                    image.height, static_cast<unsigned long long>(desc.Width), desc.Height);
+    const DXGI_FORMAT view = role == ImageRole::Output ? rule->uav : rule->srv;
+    if (!viewableOn(*rule, view, desc.Format))
+        return fail(FFX_DOF_ERROR_INVALID_RESOURCE,
+                    "%s: a %s view cannot be made on a resource created as %s; create the resource as %s", name,
+                    describeFormat(view, declaredName), describeFormat(desc.Format, resourceName),
+                    describeFormat(rule->family, familyName));
+    if (role == ImageRole::Output && !(desc.Flags & D3D12_RESOURCE_FLAG_ALLOW_UNORDERED_ACCESS))
+        return fail(FFX_DOF_ERROR_INVALID_RESOURCE, "%s: the resource lacks D3D12_RESOURCE_FLAG_ALLOW_UNORDERED_ACCESS",
+                    name);
+    if (role != ImageRole::Output && (desc.Flags & D3D12_RESOURCE_FLAG_DENY_SHADER_RESOURCE))
+        return fail(FFX_DOF_ERROR_INVALID_RESOURCE, "%s: the resource has D3D12_RESOURCE_FLAG_DENY_SHADER_RESOURCE",
+                    name);
+    out->resource = resource;
+    out->viewFormat = view;
+    out->srgb = rule->srgb;
+    out->state = static_cast<D3D12_RESOURCE_STATES>(image.state);
+    return FFX_DOF_OK;
+}
+
+class Context final : public BackendContext {
+public:
+    explicit Context(const Backend& backend) : backend_(backend) {}
+
+    FfxDofErrorCode init(const ContextConfig& config);
+    FfxDofErrorCode dispatch(const DispatchPlan& plan) override;
+    FfxDofMemoryUsage memoryUsage() const override { return memory_; }
+
+private:
+    struct InternalImage {
+        ComPtr<ID3D12Resource> resource;
+        uint32_t mipLevels = 1;
+        uint32_t width = 0, height = 0;
+        D3D12_RESOURCE_STATES rest = kReadState;  // every level, between dispatches
+    };
+
+    // Tracks the internal levels (always first, in a fixed order) and fills their slot targets.
+    void trackInternalImages(StateTracker* tracker, SlotTargets* slots) const;
+    // Runs the passes' barrier logic without a command list to find where each image ends up.
+    void chooseRestStates();
+    FfxDofErrorCode createResources();
+    FfxDofErrorCode createDescriptorHeap();
+    FfxDofErrorCode checkOutputFormatSupport(DXGI_FORMAT format);
+
+    D3D12_CPU_DESCRIPTOR_HANDLE cpuDescriptor(uint32_t ringSlot, uint32_t offset) const {
+        D3D12_CPU_DESCRIPTOR_HANDLE handle = heapCpuStart_;
+        handle.ptr += static_cast<SIZE_T>(ringSlot * kDescriptorsPerDispatch + offset) * backend_.descriptorSize();
+        return handle;
+    }
+    void writeSrv(ID3D12Resource* resource, DXGI_FORMAT format, UINT mipLevels, D3D12_CPU_DESCRIPTOR_HANDLE at) const;
+    void writeUav(ID3D12Resource* resource, DXGI_FORMAT format, UINT mip, D3D12_CPU_DESCRIPTOR_HANDLE at) const;
+
+    const Backend& backend_;
+    ContextConfig config_;
+    PermutationOptions options_;
+    PassPipeline passes_[kPassCount];
+    InternalImage images_[kInternalImageCount];
+    ComPtr<ID3D12Resource> globals_;
+    ComPtr<ID3D12DescriptorHeap> heap_;
+    D3D12_CPU_DESCRIPTOR_HANDLE heapCpuStart_{};
+    D3D12_GPU_DESCRIPTOR_HANDLE heapGpuStart_{};
+    uint32_t nextRingSlot_ = 0;
+    FfxDofMemoryUsage memory_{};
+    DXGI_FORMAT supportedOutputFormat_ = DXGI_FORMAT_UNKNOWN;  // last output format found usable
+};
+
+FfxDofErrorCode Context::init(const ContextConfig& config) {
+    config_ = config;
+    // The core maps the flags to permutation options; ask it with an empty dispatch rather than
+    // repeat the mapping here.
+    options_ = planDispatch(config, FfxDofDispatchDescription{}, 0).options;
+    for (uint32_t p = 0; p < kPassCount; ++p) {
+        if (const FfxDofErrorCode status = backend_.pipeline(static_cast<Pass>(p), options_, &passes_[p]);
+            status != FFX_DOF_OK)
+            return status;
+    }
+
+    const uint32_t halfWidth = divideRoundingUp(config.resolution.width, 2);
+    const uint32_t halfHeight = divideRoundingUp(config.resolution.height, 2);
+    for (uint32_t i = 0; i < kInternalImageCount; ++i) {
+        const bool half = kInternalImages[i].extent == ImageExtent::Half;
+        images_[i].width = half ? halfWidth : divideRoundingUp(halfWidth, FFX_DOF_TILE_SIZE);
+        images_[i].height = half ? halfHeight : divideRoundingUp(halfHeight, FFX_DOF_TILE_SIZE);
+        images_[i].mipLevels = mipLevelsFor(kInternalImages[i], images_[i].width, images_[i].height);
+    }
+    chooseRestStates();
+    if (const FfxDofErrorCode status = createResources(); status != FFX_DOF_OK) return status;
+    return createDescriptorHeap();
+}
+
+void Context::trackInternalImages(StateTracker* tracker, SlotTargets* slots) const {
+    for (uint32_t i = 0; i < kInternalImageCount; ++i) {
+        const InternalImageSpec& spec = kInternalImages[i];
+        const InternalImage& image = images_[i];
+        slots->srv[spec.srvSlot].count = static_cast<uint8_t>(image.mipLevels);
+        for (uint32_t mip = 0; mip < image.mipLevels; ++mip) {
+            const uint8_t entry = tracker->track(image.resource.Get(), mip, image.rest, image.rest);
+            if (mip == 0) slots->srv[spec.srvSlot].first = entry;
+            slots->uavImage[spec.uavSlot + mip] = entry;
+        }
+    }
+}
+
+void Context::chooseRestStates() {
+    // Rest in the state each image's level 0 has after the last pass, so that the end of a dispatch
+    // needs no barrier for it and the next dispatch starts from a known state whatever order the
+    // engine records command lists in. (Levels that end elsewhere are moved back at the end.)
+    StateTracker tracker;
+    SlotTargets slots;
+    trackInternalImages(&tracker, &slots);
+    for (const PassPipeline& pass : passes_) {
+        tracker.beforePass(slots, pass.access, nullptr);
+        tracker.afterPass(pass.access);
+        tracker.flush(nullptr);
+    }
+    for (uint32_t i = 0; i < kInternalImageCount; ++i) {
+        images_[i].rest = tracker.entry(slots.srv[kInternalImages[i].srvSlot].first).state;
+    }
+}
+
+FfxDofErrorCode Context::createResources() {
+    ID3D12Device* device = backend_.device();
+    D3D12_HEAP_PROPERTIES heap{};
+    heap.Type = D3D12_HEAP_TYPE_DEFAULT;
+    for (uint32_t i = 0; i < kInternalImageCount; ++i) {
+        InternalImage& image = images_[i];
+        D3D12_RESOURCE_DESC desc{};
+        desc.Dimension = D3D12_RESOURCE_DIMENSION_TEXTURE2D;
+        desc.Width = image.width;
+        desc.Height = image.height;
+        desc.DepthOrArraySize = 1;
+        desc.MipLevels = static_cast<UINT16>(image.mipLevels);
+        desc.Format = kInternalImages[i].format;
+        desc.SampleDesc.Count = 1;
+        desc.Layout = D3D12_TEXTURE_LAYOUT_UNKNOWN;
+        desc.Flags = D3D12_RESOURCE_FLAG_ALLOW_UNORDERED_ACCESS;
+        const HRESULT hr = device->CreateCommittedResource(&heap, D3D12_HEAP_FLAG_NONE, &desc, image.rest, nullptr,
+                                                           IID_PPV_ARGS(&image.resource));
+        if (FAILED(hr))
+            return fail(hr == E_OUTOFMEMORY ? FFX_DOF_ERROR_OUT_OF_MEMORY : FFX_DOF_ERROR_BACKEND,
+                        "creating internal image %s (%ux%u, %u levels) failed (HRESULT 0x%08lx)",
+                        kInternalImages[i].name, image.width, image.height, image.mipLevels,
+                        static_cast<unsigned long>(hr));
+        const D3D12_RESOURCE_ALLOCATION_INFO info = device->GetResourceAllocationInfo(0, 1, &desc);
+        memory_.totalUsageInBytes += info.SizeInBytes;
+        memory_.aliasableUsageInBytes += info.SizeInBytes;  // rewritten by every dispatch before it is read
+    }
+
+    // A committed resource in a default heap starts zeroed (no D3D12_HEAP_FLAG_CREATE_NOT_ZEROED),
+    // which is the "zero before the first dispatch" that GLOBALS needs.
+    D3D12_RESOURCE_DESC desc{};
+    desc.Dimension = D3D12_RESOURCE_DIMENSION_BUFFER;
+    desc.Width = kGlobalsElementBytes * kGlobalsElementCount;
+    desc.Height = 1;
+    desc.DepthOrArraySize = 1;
+    desc.MipLevels = 1;
+    desc.Format = DXGI_FORMAT_UNKNOWN;
+    desc.SampleDesc.Count = 1;
+    desc.Layout = D3D12_TEXTURE_LAYOUT_ROW_MAJOR;
+    desc.Flags = D3D12_RESOURCE_FLAG_ALLOW_UNORDERED_ACCESS;
+    const HRESULT hr = device->CreateCommittedResource(&heap, D3D12_HEAP_FLAG_NONE, &desc, D3D12_RESOURCE_STATE_COMMON,
+                                                       nullptr, IID_PPV_ARGS(&globals_));
+    if (FAILED(hr))
+        return fail(hr == E_OUTOFMEMORY ? FFX_DOF_ERROR_OUT_OF_MEMORY : FFX_DOF_ERROR_BACKEND,
+                    "creating the GLOBALS buffer failed (HRESULT 0x%08lx)", static_cast<unsigned long>(hr));
+    // Not aliasable: it carries the zero the composite pass writes back into the next dispatch.
+    memory_.totalUsageInBytes += device->GetResourceAllocationInfo(0, 1, &desc).SizeInBytes;
+    return FFX_DOF_OK;
+}
+
+void Context::writeSrv(ID3D12Resource* resource, DXGI_FORMAT format, UINT mipLevels,
+                       D3D12_CPU_DESCRIPTOR_HANDLE at) const {
+    D3D12_SHADER_RESOURCE_VIEW_DESC desc{};
+    desc.Format = format;
+    desc.ViewDimension = D3D12_SRV_DIMENSION_TEXTURE2D;
+    desc.Shader4ComponentMapping = D3D12_DEFAULT_SHADER_4_COMPONENT_MAPPING;
+    desc.Texture2D.MipLevels = mipLevels;
+    desc.Texture2D.PlaneSlice = 0;  // the depth plane of a depth-stencil format
+    backend_.device()->CreateShaderResourceView(resource, &desc, at);
+}
+
+void Context::writeUav(ID3D12Resource* resource, DXGI_FORMAT format, UINT mip, D3D12_CPU_DESCRIPTOR_HANDLE at) const {
+    D3D12_UNORDERED_ACCESS_VIEW_DESC desc{};
+    desc.Format = format;
+    desc.ViewDimension = D3D12_UAV_DIMENSION_TEXTURE2D;
+    desc.Texture2D.MipSlice = mip;
+    // A null resource makes a null descriptor: stores to a level the image lacks are dropped.
+    backend_.device()->CreateUnorderedAccessView(resource, nullptr, &desc, at);
+}
+
+FfxDofErrorCode Context::createDescriptorHeap() {
+    D3D12_DESCRIPTOR_HEAP_DESC desc{};
+    desc.Type = D3D12_DESCRIPTOR_HEAP_TYPE_CBV_SRV_UAV;
+    desc.NumDescriptors = kDescriptorsPerDispatch * backend_.framesInFlight();
+    desc.Flags = D3D12_DESCRIPTOR_HEAP_FLAG_SHADER_VISIBLE;
+    const HRESULT hr = backend_.device()->CreateDescriptorHeap(&desc, IID_PPV_ARGS(&heap_));
+    if (FAILED(hr))
+        return fail(FFX_DOF_ERROR_BACKEND,
+                    "creating a shader-visible descriptor heap of %u descriptors failed (HRESULT "
+                    "0x%08lx)",
+                    desc.NumDescriptors, static_cast<unsigned long>(hr));
+    heapCpuStart_ = heap_->GetCPUDescriptorHandleForHeapStart();
+    heapGpuStart_ = heap_->GetGPUDescriptorHandleForHeapStart();
+
+    // The internal descriptors are the same in every ring slot; a dispatch writes only the engine's.
+    for (uint32_t slot = 0; slot < backend_.framesInFlight(); ++slot) {
+        for (uint32_t i = 0; i < kInternalImageCount; ++i) {
+            const InternalImageSpec& spec = kInternalImages[i];
+            ID3D12Resource* resource = images_[i].resource.Get();
+            writeSrv(resource, spec.format, images_[i].mipLevels, cpuDescriptor(slot, kSrvTableOffset + spec.srvSlot));
+            const uint32_t levels = spec.mipChain ? kMipCount : 1;
+            for (uint32_t mip = 0; mip < levels; ++mip) {
+                writeUav(mip < images_[i].mipLevels ? resource : nullptr, spec.format, mip,
+                         cpuDescriptor(slot, kUavImageTableOffset + spec.uavSlot + mip));
+            }
+        }
+        D3D12_UNORDERED_ACCESS_VIEW_DESC globals{};
+        globals.Format = DXGI_FORMAT_UNKNOWN;
+        globals.ViewDimension = D3D12_UAV_DIMENSION_BUFFER;
+        globals.Buffer.NumElements = kGlobalsElementCount;
+        globals.Buffer.StructureByteStride = kGlobalsElementBytes;
+        backend_.device()->CreateUnorderedAccessView(
+            globals_.Get(), nullptr, &globals, cpuDescriptor(slot, kUavBufferTableOffset + FFX_DOF_UAV_BUFFER_GLOBALS));
+    }
+    return FFX_DOF_OK;
+}
+
+FfxDofErrorCode Context::checkOutputFormatSupport(DXGI_FORMAT format) {
+    if (format == supportedOutputFormat_) return FFX_DOF_OK;
+    D3D12_FEATURE_DATA_FORMAT_SUPPORT support{};
+    support.Format = format;
+    // In place, the composite pass also loads the color through the output UAV.
+    const UINT needed2 =
+        D3D12_FORMAT_SUPPORT2_UAV_TYPED_STORE | (options_.combineInPlace ? D3D12_FORMAT_SUPPORT2_UAV_TYPED_LOAD : 0);
+    char name[32];
+    if (FAILED(backend_.device()->CheckFeatureSupport(D3D12_FEATURE_FORMAT_SUPPORT, &support, sizeof(support))) ||
+        !(support.Support1 & D3D12_FORMAT_SUPPORT1_TYPED_UNORDERED_ACCESS_VIEW) ||
+        (support.Support2 & needed2) != needed2)
+        return fail(FFX_DOF_ERROR_UNSUPPORTED, "output: the device cannot %s typed UAVs of %s",
+                    options_.combineInPlace ? "load and store" : "store", describeFormat(format, name));
+    supportedOutputFormat_ = format;
+    return FFX_DOF_OK;
+}
+
+FfxDofErrorCode Context::dispatch(const DispatchPlan& plan) {
+    if (plan.options.reverseDepth != options_.reverseDepth || plan.options.ringMergeLog != options_.ringMergeLog ||
+        plan.options.combineInPlace != options_.combineInPlace)
+        return fail(FFX_DOF_ERROR_BACKEND, "the dispatch plan's permutation options differ from the context's");
+
+    ID3D12GraphicsCommandList* list = static_cast<ID3D12GraphicsCommandList*>(plan.commandList);
+    const D3D12_COMMAND_LIST_TYPE listType = list->GetType();
+    if (listType != D3D12_COMMAND_LIST_TYPE_DIRECT && listType != D3D12_COMMAND_LIST_TYPE_COMPUTE)
+        return fail(FFX_DOF_ERROR_INVALID_ARGUMENT, "commandList is of type %d; it must be DIRECT or COMPUTE",
+                    static_cast<int>(listType));
+
+    EngineImage color, depth, output;
+    if (const FfxDofErrorCode status = checkEngineImage(plan.color, ImageRole::Color, "color", &color);
+        status != FFX_DOF_OK)
+        return status;
+    if (const FfxDofErrorCode status = checkEngineImage(plan.depth, ImageRole::Depth, "depth", &depth);
+        status != FFX_DOF_OK)
+        return status;
+    if (const FfxDofErrorCode status = checkEngineImage(plan.output, ImageRole::Output, "output", &output);
+        status != FFX_DOF_OK)
+        return status;
+    if (plan.outputIsColor && color.state != output.state)
+        return fail(FFX_DOF_ERROR_INVALID_RESOURCE,
+                    "output is the color image but declares state 0x%x where color declares 0x%x",
+                    static_cast<unsigned>(output.state), static_cast<unsigned>(color.state));
+    if (const FfxDofErrorCode status = checkOutputFormatSupport(output.viewFormat); status != FFX_DOF_OK) return status;
+
+    // Descriptors: the ring slot the GPU finished with maxFramesInFlight dispatches ago.
+    const uint32_t ringSlot = nextRingSlot_;
+    nextRingSlot_ = (nextRingSlot_ + 1) % backend_.framesInFlight();
+    writeSrv(color.resource, color.viewFormat, 1, cpuDescriptor(ringSlot, kSrvTableOffset + FFX_DOF_SRV_INPUT_COLOR));
+    writeSrv(depth.resource, depth.viewFormat, 1, cpuDescriptor(ringSlot, kSrvTableOffset + FFX_DOF_SRV_INPUT_DEPTH));
+    writeUav(output.resource, output.viewFormat, 0, cpuDescriptor(ringSlot, kUavImageTableOffset + FFX_DOF_UAV_OUTPUT));
+
+    StateTracker tracker;
+    SlotTargets slots;
+    trackInternalImages(&tracker, &slots);
+    const uint8_t colorEntry =
+        tracker.track(color.resource, D3D12_RESOURCE_BARRIER_ALL_SUBRESOURCES, color.state, color.state);
+    slots.srv[FFX_DOF_SRV_INPUT_COLOR] = {colorEntry, 1};
+    slots.srv[FFX_DOF_SRV_INPUT_DEPTH] = {
+        tracker.track(depth.resource, D3D12_RESOURCE_BARRIER_ALL_SUBRESOURCES, depth.state, depth.state), 1};
+    slots.uavImage[FFX_DOF_UAV_OUTPUT] =
+        plan.outputIsColor
+            ? colorEntry
+            : tracker.track(output.resource, D3D12_RESOURCE_BARRIER_ALL_SUBRESOURCES, output.state, output.state);
+    tracker.assumeGlobalsWritten();
+
+    FfxDofConstants constants = plan.constants;
+    if (output.srgb) constants.outputFlags |= FFX_DOF_OUTPUT_FLAG_ENCODE_SRGB;
+
+    // This replaces the engine's descriptor heaps, root signature and pipeline state on the list.
+    ID3D12DescriptorHeap* heaps[] = {heap_.Get()};
+    list->SetDescriptorHeaps(1, heaps);
+    list->SetComputeRootSignature(backend_.rootSignature());
+    list->SetComputeRoot32BitConstants(kRootConstantsParameter, kRootConstantCount, &constants, 0);
+    D3D12_GPU_DESCRIPTOR_HANDLE table = heapGpuStart_;
+    table.ptr += static_cast<UINT64>(ringSlot) * kDescriptorsPerDispatch * backend_.descriptorSize();
+    list->SetComputeRootDescriptorTable(kRootDescriptorTableParameter, table);
+
+    for (uint32_t p = 0; p < kPassCount; ++p) {
+        tracker.beforePass(slots, passes_[p].access, globals_.Get());
+        tracker.flush(list);
+        list->SetPipelineState(passes_[p].pipelineState);
+        list->Dispatch(plan.passes[p].x, plan.passes[p].y, plan.passes[p].z);
+        tracker.afterPass(passes_[p].access);
+    }
+    tracker.restore();
+    tracker.flush(list);
+    return FFX_DOF_OK;
+}
+
+}  // namespace
+
+FfxDofErrorCode Backend::createContext(const ContextConfig& config, std::unique_ptr<BackendContext>* out) {
+    std::unique_ptr<Context> context(new (std::nothrow) Context(*this));
+    if (!context) return fail(FFX_DOF_ERROR_OUT_OF_MEMORY, "allocating the D3D12 context failed");
+    if (const FfxDofErrorCode status = context->init(config); status != FFX_DOF_OK) return status;
+    *out = std::move(context);
+    return FFX_DOF_OK;
+}
+
+}  // namespace ffxdof::dx12
