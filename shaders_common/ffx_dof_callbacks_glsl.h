@@ -1,0 +1,211 @@
+// GLSL bindings and accessors of ffx-dof. The entry point defines FFX_GLSL and one
+// FFX_DOF_PASS_<NAME>; only the bindings that pass uses are declared (backends bind by reflection).
+// Vulkan binding = class base + index from ffx_dof_resources.h, set 0. Constants are push constants.
+#ifndef FFX_DOF_CALLBACKS_GLSL_H
+#define FFX_DOF_CALLBACKS_GLSL_H
+
+#include "ffx_dof_common.h"
+#include "ffx_dof_pass_resources.h"
+
+#define FFX_DOF_BINDING_SRV(index) layout(set = 0, binding = FFX_DOF_SRV_BASE + (index))
+#define FFX_DOF_BINDING_UAV_IMAGE(index, format) layout(set = 0, binding = FFX_DOF_UAV_IMAGE_BASE + (index), format)
+#define FFX_DOF_BINDING_UAV_BUFFER(index) layout(set = 0, binding = FFX_DOF_UAV_BUFFER_BASE + (index), std430)
+
+layout(push_constant) uniform FfxDofPushConstants
+{
+    FfxDofConstants ffxDofPushedConstants;
+};
+FfxDofConstants ffxDofGetConstants()
+{
+    return ffxDofPushedConstants;
+}
+
+#if FFX_DOF_USES_INPUT_COLOR
+FFX_DOF_BINDING_SRV(FFX_DOF_SRV_INPUT_COLOR) uniform texture2D ffxDofInputColor;
+FfxFloat32x4 ffxDofLoadInputColor(FfxUInt32x2 pixel)
+{
+    return texelFetch(ffxDofInputColor, ivec2(pixel), 0);
+}
+#endif
+
+#if FFX_DOF_USES_INPUT_DEPTH
+FFX_DOF_BINDING_SRV(FFX_DOF_SRV_INPUT_DEPTH) uniform texture2D ffxDofInputDepth;
+FfxFloat32 ffxDofLoadInputDepth(FfxUInt32x2 pixel)
+{
+    return texelFetch(ffxDofInputDepth, ivec2(pixel), 0).x;
+}
+#endif
+
+#if FFX_DOF_USES_COLOR_MIPS
+FFX_DOF_BINDING_SRV(FFX_DOF_SRV_COLOR_MIPS) uniform texture2D ffxDofColorMips;
+FfxDofFloat3 ffxDofLoadColorMip(FfxInt32x2 texel, FfxUInt32 mip)
+{
+    vec4 color = texelFetch(ffxDofColorMips, texel, int(mip));
+    return FfxDofFloat3(color.x, color.y, color.z);
+}
+#endif
+
+#if FFX_DOF_USES_COC_MIPS
+FFX_DOF_BINDING_SRV(FFX_DOF_SRV_COC_MIPS) uniform texture2D ffxDofCocMips;
+FfxFloat32 ffxDofLoadCocMip(FfxInt32x2 texel, FfxUInt32 mip)
+{
+    return texelFetch(ffxDofCocMips, texel, int(mip)).x;
+}
+#endif
+
+#if FFX_DOF_USES_TILES
+FFX_DOF_BINDING_SRV(FFX_DOF_SRV_TILES) uniform texture2D ffxDofTiles;
+FfxFloat32x2 ffxDofLoadTile(FfxUInt32x2 tile)
+{
+    return texelFetch(ffxDofTiles, ivec2(tile), 0).xy;
+}
+#endif
+
+#if FFX_DOF_USES_DILATED_TILES
+FFX_DOF_BINDING_SRV(FFX_DOF_SRV_DILATED_TILES) uniform texture2D ffxDofDilatedTiles;
+FfxFloat32x2 ffxDofLoadDilatedTile(FfxUInt32x2 tile)
+{
+    return texelFetch(ffxDofDilatedTiles, ivec2(tile), 0).xy;
+}
+#endif
+
+#if FFX_DOF_USES_LAYERS
+FFX_DOF_BINDING_SRV(FFX_DOF_SRV_NEAR_COLOR) uniform texture2D ffxDofNearColor;
+FFX_DOF_BINDING_SRV(FFX_DOF_SRV_FAR_COLOR) uniform texture2D ffxDofFarColor;
+FFX_DOF_BINDING_SRV(FFX_DOF_SRV_LAYER_ALPHA) uniform texture2D ffxDofLayerAlpha;
+FfxDofFloat3 ffxDofLoadNearColor(FfxInt32x2 texel)
+{
+    vec4 color = texelFetch(ffxDofNearColor, texel, 0);
+    return FfxDofFloat3(color.x, color.y, color.z);
+}
+FfxDofFloat3 ffxDofLoadFarColor(FfxInt32x2 texel)
+{
+    vec4 color = texelFetch(ffxDofFarColor, texel, 0);
+    return FfxDofFloat3(color.x, color.y, color.z);
+}
+FfxFloat32x2 ffxDofLoadLayerAlpha(FfxInt32x2 texel)
+{
+    return texelFetch(ffxDofLayerAlpha, texel, 0).xy;
+}
+#endif
+
+#if FFX_DOF_USES_RW_MIPS
+FFX_DOF_BINDING_UAV_IMAGE(FFX_DOF_UAV_COLOR_MIP0, r11f_g11f_b10f) uniform writeonly image2D ffxDofColorMip0;
+FFX_DOF_BINDING_UAV_IMAGE(FFX_DOF_UAV_COC_MIP0, r16f) uniform writeonly image2D ffxDofCocMip0;
+#if FFX_DOF_OPTION_MAX_MIP > 1
+FFX_DOF_BINDING_UAV_IMAGE(FFX_DOF_UAV_COLOR_MIP1, r11f_g11f_b10f) uniform writeonly image2D ffxDofColorMip1;
+FFX_DOF_BINDING_UAV_IMAGE(FFX_DOF_UAV_COC_MIP1, r16f) uniform writeonly image2D ffxDofCocMip1;
+#endif
+#if FFX_DOF_OPTION_MAX_MIP > 2
+FFX_DOF_BINDING_UAV_IMAGE(FFX_DOF_UAV_COLOR_MIP2, r11f_g11f_b10f) uniform writeonly image2D ffxDofColorMip2;
+FFX_DOF_BINDING_UAV_IMAGE(FFX_DOF_UAV_COC_MIP2, r16f) uniform writeonly image2D ffxDofCocMip2;
+#endif
+#if FFX_DOF_OPTION_MAX_MIP > 3
+FFX_DOF_BINDING_UAV_IMAGE(FFX_DOF_UAV_COLOR_MIP3, r11f_g11f_b10f) uniform writeonly image2D ffxDofColorMip3;
+FFX_DOF_BINDING_UAV_IMAGE(FFX_DOF_UAV_COC_MIP3, r16f) uniform writeonly image2D ffxDofCocMip3;
+#endif
+void ffxDofStoreColorMip(FfxUInt32 mip, FfxUInt32x2 texel, FfxDofFloat3 color)
+{
+    vec4 value = vec4(color.x, color.y, color.z, 1.0f);
+    if (mip == 0u)
+        imageStore(ffxDofColorMip0, ivec2(texel), value);
+#if FFX_DOF_OPTION_MAX_MIP > 1
+    else if (mip == 1u)
+        imageStore(ffxDofColorMip1, ivec2(texel), value);
+#endif
+#if FFX_DOF_OPTION_MAX_MIP > 2
+    else if (mip == 2u)
+        imageStore(ffxDofColorMip2, ivec2(texel), value);
+#endif
+#if FFX_DOF_OPTION_MAX_MIP > 3
+    else
+        imageStore(ffxDofColorMip3, ivec2(texel), value);
+#endif
+}
+void ffxDofStoreCocMip(FfxUInt32 mip, FfxUInt32x2 texel, FfxFloat32 coc)
+{
+    vec4 value = vec4(coc, 0.0f, 0.0f, 0.0f);
+    if (mip == 0u)
+        imageStore(ffxDofCocMip0, ivec2(texel), value);
+#if FFX_DOF_OPTION_MAX_MIP > 1
+    else if (mip == 1u)
+        imageStore(ffxDofCocMip1, ivec2(texel), value);
+#endif
+#if FFX_DOF_OPTION_MAX_MIP > 2
+    else if (mip == 2u)
+        imageStore(ffxDofCocMip2, ivec2(texel), value);
+#endif
+#if FFX_DOF_OPTION_MAX_MIP > 3
+    else
+        imageStore(ffxDofCocMip3, ivec2(texel), value);
+#endif
+}
+#endif
+
+#if FFX_DOF_USES_RW_TILES
+FFX_DOF_BINDING_UAV_IMAGE(FFX_DOF_UAV_TILES, rg16f) uniform writeonly image2D ffxDofRwTiles;
+void ffxDofStoreTile(FfxUInt32x2 tile, FfxFloat32x2 cocMinMax)
+{
+    imageStore(ffxDofRwTiles, ivec2(tile), vec4(cocMinMax.x, cocMinMax.y, 0.0f, 0.0f));
+}
+#endif
+
+#if FFX_DOF_USES_RW_DILATED_TILES
+FFX_DOF_BINDING_UAV_IMAGE(FFX_DOF_UAV_DILATED_TILES, rg16f) uniform writeonly image2D ffxDofRwDilatedTiles;
+void ffxDofStoreDilatedTile(FfxUInt32x2 tile, FfxFloat32x2 farNear)
+{
+    imageStore(ffxDofRwDilatedTiles, ivec2(tile), vec4(farNear.x, farNear.y, 0.0f, 0.0f));
+}
+#endif
+
+#if FFX_DOF_USES_RW_LAYERS
+FFX_DOF_BINDING_UAV_IMAGE(FFX_DOF_UAV_NEAR_COLOR, r11f_g11f_b10f) uniform writeonly image2D ffxDofRwNearColor;
+FFX_DOF_BINDING_UAV_IMAGE(FFX_DOF_UAV_FAR_COLOR, r11f_g11f_b10f) uniform writeonly image2D ffxDofRwFarColor;
+FFX_DOF_BINDING_UAV_IMAGE(FFX_DOF_UAV_LAYER_ALPHA, rg8) uniform writeonly image2D ffxDofRwLayerAlpha;
+void ffxDofStoreNearColor(FfxUInt32x2 texel, FfxDofFloat3 color)
+{
+    imageStore(ffxDofRwNearColor, ivec2(texel), vec4(color.x, color.y, color.z, 1.0f));
+}
+void ffxDofStoreFarColor(FfxUInt32x2 texel, FfxDofFloat3 color)
+{
+    imageStore(ffxDofRwFarColor, ivec2(texel), vec4(color.x, color.y, color.z, 1.0f));
+}
+void ffxDofStoreLayerAlpha(FfxUInt32x2 texel, FfxFloat32x2 nearOpacityFarValidity)
+{
+    imageStore(ffxDofRwLayerAlpha, ivec2(texel), vec4(nearOpacityFarValidity.x, nearOpacityFarValidity.y, 0.0f, 0.0f));
+}
+#endif
+
+#if FFX_DOF_USES_RW_OUTPUT
+// The engine's output may be any of several formats: no format qualifier
+// (shaderStorageImageWriteWithoutFormat).
+layout(set = 0, binding = FFX_DOF_UAV_IMAGE_BASE + FFX_DOF_UAV_OUTPUT) uniform writeonly image2D ffxDofOutput;
+void ffxDofStoreOutput(FfxUInt32x2 pixel, FfxFloat32x4 color)
+{
+    if ((ffxDofPushedConstants.outputFlags & FFX_DOF_OUTPUT_FLAG_ENCODE_SRGB) != 0u)
+        color = vec4(ffxDofLinearToSrgb(color.x), ffxDofLinearToSrgb(color.y), ffxDofLinearToSrgb(color.z), color.w);
+    imageStore(ffxDofOutput, ivec2(pixel), color);
+}
+#endif
+
+#if FFX_DOF_USES_GLOBALS
+FFX_DOF_BINDING_UAV_BUFFER(FFX_DOF_UAV_BUFFER_GLOBALS) buffer FfxDofGlobals
+{
+    uint ffxDofGlobalMaxRadiusBits;
+};
+FfxFloat32 ffxDofLoadGlobalMaxRadius()
+{
+    return uintBitsToFloat(ffxDofGlobalMaxRadiusBits);
+}
+void ffxDofAtomicMaxGlobalRadius(FfxFloat32 radius)
+{
+    // Non-negative floats order like their bit patterns.
+    atomicMax(ffxDofGlobalMaxRadiusBits, floatBitsToUint(max(radius, 0.0f)));
+}
+void ffxDofResetGlobals()
+{
+    ffxDofGlobalMaxRadiusBits = 0u;
+}
+#endif
+
+#endif  // FFX_DOF_CALLBACKS_GLSL_H

@@ -1,0 +1,216 @@
+// HLSL bindings and accessors of ffx-dof. The entry point defines FFX_HLSL and one
+// FFX_DOF_PASS_<NAME>; only the bindings that pass uses are declared.
+// D3D12: t#/u#/s# = the index from ffx_dof_resources.h in space 0; the GLOBALS storage buffer is
+// u0 in space 1 (u# is shared by images and buffers on D3D12). Constants are root constants (the
+// only constant buffer, so b0). Vulkan (glslang or dxc -spirv): [[vk::binding(base + index, 0)]]
+// gives the same bindings as the GLSL path, and the constants become push constants.
+// Storage images carry no format on Vulkan: compile with glslang's --no-storage-format (dxc picks
+// Unknown for these template types with -fspv-... defaults the backend sets).
+#ifndef FFX_DOF_CALLBACKS_HLSL_H
+#define FFX_DOF_CALLBACKS_HLSL_H
+
+#include "ffx_dof_common.h"
+#include "ffx_dof_pass_resources.h"
+
+#define FFX_DOF_HLSL_REGISTER_(registerClass, index) register(registerClass##index)
+#define FFX_DOF_HLSL_REGISTER(registerClass, index) FFX_DOF_HLSL_REGISTER_(registerClass, index)
+#define FFX_DOF_BINDING_SRV(index) [[vk::binding(FFX_DOF_SRV_BASE + index, 0)]]
+#define FFX_DOF_BINDING_UAV_IMAGE(index) [[vk::binding(FFX_DOF_UAV_IMAGE_BASE + index, 0)]]
+#define FFX_DOF_BINDING_UAV_BUFFER(index) [[vk::binding(FFX_DOF_UAV_BUFFER_BASE + index, 0)]]
+
+#if FFX_DOF_OPTION_WAVE64 && defined(__DXC_VERSION_MAJOR)
+#define FFX_DOF_WAVE_SIZE_ATTRIBUTE [WaveSize(64)]
+#else
+#define FFX_DOF_WAVE_SIZE_ATTRIBUTE
+#endif
+
+[[vk::push_constant]] cbuffer FfxDofConstantBuffer
+{
+    FfxDofConstants ffxDofPushedConstants;
+};
+FfxDofConstants ffxDofGetConstants()
+{
+    return ffxDofPushedConstants;
+}
+
+#if FFX_DOF_USES_INPUT_COLOR
+FFX_DOF_BINDING_SRV(FFX_DOF_SRV_INPUT_COLOR) Texture2D<float4> ffxDofInputColor : FFX_DOF_HLSL_REGISTER(t, FFX_DOF_SRV_INPUT_COLOR);
+FfxFloat32x4 ffxDofLoadInputColor(FfxUInt32x2 pixel)
+{
+    return ffxDofInputColor.Load(int3(pixel, 0));
+}
+#endif
+
+#if FFX_DOF_USES_INPUT_DEPTH
+FFX_DOF_BINDING_SRV(FFX_DOF_SRV_INPUT_DEPTH) Texture2D<float> ffxDofInputDepth : FFX_DOF_HLSL_REGISTER(t, FFX_DOF_SRV_INPUT_DEPTH);
+FfxFloat32 ffxDofLoadInputDepth(FfxUInt32x2 pixel)
+{
+    return ffxDofInputDepth.Load(int3(pixel, 0));
+}
+#endif
+
+#if FFX_DOF_USES_COLOR_MIPS
+FFX_DOF_BINDING_SRV(FFX_DOF_SRV_COLOR_MIPS) Texture2D<float3> ffxDofColorMips : FFX_DOF_HLSL_REGISTER(t, FFX_DOF_SRV_COLOR_MIPS);
+FfxDofFloat3 ffxDofLoadColorMip(FfxInt32x2 texel, FfxUInt32 mip)
+{
+    return FfxDofFloat3(ffxDofColorMips.Load(int3(texel, int(mip))));
+}
+#endif
+
+#if FFX_DOF_USES_COC_MIPS
+FFX_DOF_BINDING_SRV(FFX_DOF_SRV_COC_MIPS) Texture2D<float> ffxDofCocMips : FFX_DOF_HLSL_REGISTER(t, FFX_DOF_SRV_COC_MIPS);
+FfxFloat32 ffxDofLoadCocMip(FfxInt32x2 texel, FfxUInt32 mip)
+{
+    return ffxDofCocMips.Load(int3(texel, int(mip)));
+}
+#endif
+
+#if FFX_DOF_USES_TILES
+FFX_DOF_BINDING_SRV(FFX_DOF_SRV_TILES) Texture2D<float2> ffxDofTiles : FFX_DOF_HLSL_REGISTER(t, FFX_DOF_SRV_TILES);
+FfxFloat32x2 ffxDofLoadTile(FfxUInt32x2 tile)
+{
+    return ffxDofTiles.Load(int3(tile, 0));
+}
+#endif
+
+#if FFX_DOF_USES_DILATED_TILES
+FFX_DOF_BINDING_SRV(FFX_DOF_SRV_DILATED_TILES) Texture2D<float2> ffxDofDilatedTiles : FFX_DOF_HLSL_REGISTER(t, FFX_DOF_SRV_DILATED_TILES);
+FfxFloat32x2 ffxDofLoadDilatedTile(FfxUInt32x2 tile)
+{
+    return ffxDofDilatedTiles.Load(int3(tile, 0));
+}
+#endif
+
+#if FFX_DOF_USES_LAYERS
+FFX_DOF_BINDING_SRV(FFX_DOF_SRV_NEAR_COLOR) Texture2D<float3> ffxDofNearColor : FFX_DOF_HLSL_REGISTER(t, FFX_DOF_SRV_NEAR_COLOR);
+FFX_DOF_BINDING_SRV(FFX_DOF_SRV_FAR_COLOR) Texture2D<float3> ffxDofFarColor : FFX_DOF_HLSL_REGISTER(t, FFX_DOF_SRV_FAR_COLOR);
+FFX_DOF_BINDING_SRV(FFX_DOF_SRV_LAYER_ALPHA) Texture2D<float2> ffxDofLayerAlpha : FFX_DOF_HLSL_REGISTER(t, FFX_DOF_SRV_LAYER_ALPHA);
+FfxDofFloat3 ffxDofLoadNearColor(FfxInt32x2 texel)
+{
+    return FfxDofFloat3(ffxDofNearColor.Load(int3(texel, 0)));
+}
+FfxDofFloat3 ffxDofLoadFarColor(FfxInt32x2 texel)
+{
+    return FfxDofFloat3(ffxDofFarColor.Load(int3(texel, 0)));
+}
+FfxFloat32x2 ffxDofLoadLayerAlpha(FfxInt32x2 texel)
+{
+    return ffxDofLayerAlpha.Load(int3(texel, 0));
+}
+#endif
+
+#if FFX_DOF_USES_RW_MIPS
+FFX_DOF_BINDING_UAV_IMAGE(FFX_DOF_UAV_COLOR_MIP0) RWTexture2D<float3> ffxDofColorMip0 : FFX_DOF_HLSL_REGISTER(u, FFX_DOF_UAV_COLOR_MIP0);
+FFX_DOF_BINDING_UAV_IMAGE(FFX_DOF_UAV_COC_MIP0) RWTexture2D<float> ffxDofCocMip0 : FFX_DOF_HLSL_REGISTER(u, FFX_DOF_UAV_COC_MIP0);
+#if FFX_DOF_OPTION_MAX_MIP > 1
+FFX_DOF_BINDING_UAV_IMAGE(FFX_DOF_UAV_COLOR_MIP1) RWTexture2D<float3> ffxDofColorMip1 : FFX_DOF_HLSL_REGISTER(u, FFX_DOF_UAV_COLOR_MIP1);
+FFX_DOF_BINDING_UAV_IMAGE(FFX_DOF_UAV_COC_MIP1) RWTexture2D<float> ffxDofCocMip1 : FFX_DOF_HLSL_REGISTER(u, FFX_DOF_UAV_COC_MIP1);
+#endif
+#if FFX_DOF_OPTION_MAX_MIP > 2
+FFX_DOF_BINDING_UAV_IMAGE(FFX_DOF_UAV_COLOR_MIP2) RWTexture2D<float3> ffxDofColorMip2 : FFX_DOF_HLSL_REGISTER(u, FFX_DOF_UAV_COLOR_MIP2);
+FFX_DOF_BINDING_UAV_IMAGE(FFX_DOF_UAV_COC_MIP2) RWTexture2D<float> ffxDofCocMip2 : FFX_DOF_HLSL_REGISTER(u, FFX_DOF_UAV_COC_MIP2);
+#endif
+#if FFX_DOF_OPTION_MAX_MIP > 3
+FFX_DOF_BINDING_UAV_IMAGE(FFX_DOF_UAV_COLOR_MIP3) RWTexture2D<float3> ffxDofColorMip3 : FFX_DOF_HLSL_REGISTER(u, FFX_DOF_UAV_COLOR_MIP3);
+FFX_DOF_BINDING_UAV_IMAGE(FFX_DOF_UAV_COC_MIP3) RWTexture2D<float> ffxDofCocMip3 : FFX_DOF_HLSL_REGISTER(u, FFX_DOF_UAV_COC_MIP3);
+#endif
+void ffxDofStoreColorMip(FfxUInt32 mip, FfxUInt32x2 texel, FfxDofFloat3 color)
+{
+    float3 value = float3(color);
+    if (mip == 0u)
+        ffxDofColorMip0[texel] = value;
+#if FFX_DOF_OPTION_MAX_MIP > 1
+    else if (mip == 1u)
+        ffxDofColorMip1[texel] = value;
+#endif
+#if FFX_DOF_OPTION_MAX_MIP > 2
+    else if (mip == 2u)
+        ffxDofColorMip2[texel] = value;
+#endif
+#if FFX_DOF_OPTION_MAX_MIP > 3
+    else
+        ffxDofColorMip3[texel] = value;
+#endif
+}
+void ffxDofStoreCocMip(FfxUInt32 mip, FfxUInt32x2 texel, FfxFloat32 coc)
+{
+    if (mip == 0u)
+        ffxDofCocMip0[texel] = coc;
+#if FFX_DOF_OPTION_MAX_MIP > 1
+    else if (mip == 1u)
+        ffxDofCocMip1[texel] = coc;
+#endif
+#if FFX_DOF_OPTION_MAX_MIP > 2
+    else if (mip == 2u)
+        ffxDofCocMip2[texel] = coc;
+#endif
+#if FFX_DOF_OPTION_MAX_MIP > 3
+    else
+        ffxDofCocMip3[texel] = coc;
+#endif
+}
+#endif
+
+#if FFX_DOF_USES_RW_TILES
+FFX_DOF_BINDING_UAV_IMAGE(FFX_DOF_UAV_TILES) RWTexture2D<float2> ffxDofRwTiles : FFX_DOF_HLSL_REGISTER(u, FFX_DOF_UAV_TILES);
+void ffxDofStoreTile(FfxUInt32x2 tile, FfxFloat32x2 cocMinMax)
+{
+    ffxDofRwTiles[tile] = cocMinMax;
+}
+#endif
+
+#if FFX_DOF_USES_RW_DILATED_TILES
+FFX_DOF_BINDING_UAV_IMAGE(FFX_DOF_UAV_DILATED_TILES) RWTexture2D<float2> ffxDofRwDilatedTiles : FFX_DOF_HLSL_REGISTER(u, FFX_DOF_UAV_DILATED_TILES);
+void ffxDofStoreDilatedTile(FfxUInt32x2 tile, FfxFloat32x2 farNear)
+{
+    ffxDofRwDilatedTiles[tile] = farNear;
+}
+#endif
+
+#if FFX_DOF_USES_RW_LAYERS
+FFX_DOF_BINDING_UAV_IMAGE(FFX_DOF_UAV_NEAR_COLOR) RWTexture2D<float3> ffxDofRwNearColor : FFX_DOF_HLSL_REGISTER(u, FFX_DOF_UAV_NEAR_COLOR);
+FFX_DOF_BINDING_UAV_IMAGE(FFX_DOF_UAV_FAR_COLOR) RWTexture2D<float3> ffxDofRwFarColor : FFX_DOF_HLSL_REGISTER(u, FFX_DOF_UAV_FAR_COLOR);
+FFX_DOF_BINDING_UAV_IMAGE(FFX_DOF_UAV_LAYER_ALPHA) RWTexture2D<float2> ffxDofRwLayerAlpha : FFX_DOF_HLSL_REGISTER(u, FFX_DOF_UAV_LAYER_ALPHA);
+void ffxDofStoreNearColor(FfxUInt32x2 texel, FfxDofFloat3 color)
+{
+    ffxDofRwNearColor[texel] = float3(color);
+}
+void ffxDofStoreFarColor(FfxUInt32x2 texel, FfxDofFloat3 color)
+{
+    ffxDofRwFarColor[texel] = float3(color);
+}
+void ffxDofStoreLayerAlpha(FfxUInt32x2 texel, FfxFloat32x2 nearOpacityFarValidity)
+{
+    ffxDofRwLayerAlpha[texel] = nearOpacityFarValidity;
+}
+#endif
+
+#if FFX_DOF_USES_RW_OUTPUT
+FFX_DOF_BINDING_UAV_IMAGE(FFX_DOF_UAV_OUTPUT) RWTexture2D<float4> ffxDofOutput : FFX_DOF_HLSL_REGISTER(u, FFX_DOF_UAV_OUTPUT);
+void ffxDofStoreOutput(FfxUInt32x2 pixel, FfxFloat32x4 color)
+{
+    if ((ffxDofPushedConstants.outputFlags & FFX_DOF_OUTPUT_FLAG_ENCODE_SRGB) != 0u)
+        color = float4(ffxDofLinearToSrgb(color.x), ffxDofLinearToSrgb(color.y), ffxDofLinearToSrgb(color.z), color.w);
+    ffxDofOutput[pixel] = color;
+}
+#endif
+
+#if FFX_DOF_USES_GLOBALS
+FFX_DOF_BINDING_UAV_BUFFER(FFX_DOF_UAV_BUFFER_GLOBALS) RWStructuredBuffer<uint> ffxDofGlobals : register(u0, space1);
+FfxFloat32 ffxDofLoadGlobalMaxRadius()
+{
+    return asfloat(ffxDofGlobals[0]);
+}
+void ffxDofAtomicMaxGlobalRadius(FfxFloat32 radius)
+{
+    // Non-negative floats order like their bit patterns.
+    uint previous;
+    InterlockedMax(ffxDofGlobals[0], asuint(max(radius, 0.0f)), previous);
+}
+void ffxDofResetGlobals()
+{
+    ffxDofGlobals[0] = 0u;
+}
+#endif
+
+#endif  // FFX_DOF_CALLBACKS_HLSL_H

@@ -1,0 +1,376 @@
+// Pure functions shared by the five passes of ffx-dof (no bindings, no accessors). Every function
+// here is unit-tested on the CPU (tests/shaders/ffx_dof_common_tests.cpp).
+//
+// Units: a CoC radius is in half-resolution pixels and signed: positive in the near field (in
+// front of the focus plane), negative in the far field. Distances are in half-resolution pixels.
+#ifndef FFX_DOF_COMMON_H
+#define FFX_DOF_COMMON_H
+
+#include "ffx_dof_portability.h"
+#include "ffx_dof_constants.h"
+#include "ffx_dof_resources.h"
+
+// ---- Options (every one can be overridden with -D; the permutation axes are listed in
+// ffx_dof_permutations.json) --------------------------------------------------------------------
+
+// Compile-time upper bound on kernel rings; the runtime bound is FfxDofConstants::maxRings.
+#ifndef FFX_DOF_OPTION_MAX_RINGS
+#define FFX_DOF_OPTION_MAX_RINGS 32
+#endif
+// Number of MIP levels of COLOR_MIPS / COC_MIPS that exist and may be sampled (1..4: a tile of
+// 8 x 8 half-res px reduces to 1 x 1 at level 3 inside one workgroup).
+#ifndef FFX_DOF_OPTION_MAX_MIP
+#define FFX_DOF_OPTION_MAX_MIP 4
+#endif
+#if FFX_DOF_OPTION_MAX_MIP < 1 || FFX_DOF_OPTION_MAX_MIP > 4
+#error "FFX_DOF_OPTION_MAX_MIP must be 1..4"
+#endif
+// log2 of the number of rings merged into one in flat far-field tiles (0: never merge).
+#ifndef FFX_DOF_OPTION_MAX_RING_MERGE_LOG
+#define FFX_DOF_OPTION_MAX_RING_MERGE_LOG 1
+#endif
+// 1: the depth buffer is inverted (near plane at 1).
+#ifndef FFX_DOF_OPTION_REVERSE_DEPTH
+#define FFX_DOF_OPTION_REVERSE_DEPTH 0
+#endif
+// 1: the output already holds the input; only changed pixels are written.
+#ifndef FFX_DOF_OPTION_COMBINE_IN_PLACE
+#define FFX_DOF_OPTION_COMBINE_IN_PLACE 0
+#endif
+
+// ---- Tuning constants -------------------------------------------------------------------------
+
+// Below this |radius| a pixel is in focus: half-resolution blur cannot represent it.
+#define FFX_DOF_IN_FOCUS_RADIUS 0.5f
+// Radii at or above this are near-field samples (scatter as a layer in front).
+#define FFX_DOF_NEAR_THRESHOLD 0.5f
+// Extra half-res px a tile's radius is granted during dilation: soft sample reach (0.5), the
+// sub-pixel kernel jitter (< 0.36) and the composite's 3x3 filter plus bilinear footprint (2).
+#define FFX_DOF_DILATE_MARGIN 3.0f
+// Amplitude of the random kernel origin: +-half of this, in half-res px.
+#define FFX_DOF_JITTER_AMPLITUDE 0.5f
+// Upper bound on the brightness gain of the median post-filter.
+#define FFX_DOF_MEDIAN_MAX_GAIN 2.0f
+// Above this near-field opacity the fixed 3x3 blur is not used (it would spread foreground color).
+#define FFX_DOF_NEAR_BLOCKS_FIXED_BLUR 0.3f
+// Coverage of the neighbours of a pixel by a disc of diameter 3 px centred on it (edge, corner);
+// the centre is covered fully. Numerically integrated; tests/shaders recomputes them.
+#define FFX_DOF_FIXED_BLUR_EDGE_WEIGHT 0.9718f
+#define FFX_DOF_FIXED_BLUR_CORNER_WEIGHT 0.5454f
+
+// ---- CoC ----------------------------------------------------------------------------------------
+
+// Signed CoC radius of a depth value, always in 32-bit: rounding depth to 16 bits first would move
+// in-focus pixels next to the near plane out of focus.
+FFX_DOF_INLINE FfxFloat32 ffxDofCocFromDepth(FfxFloat32 depth, FfxFloat32 cocScale, FfxFloat32 cocBias,
+                                            FfxFloat32 cocLimit)
+{
+    return clamp(depth * cocScale + cocBias, -cocLimit, cocLimit);
+}
+
+// The depth (of two) that is nearer the camera: the smaller one unless the depth buffer is inverted.
+FFX_DOF_INLINE FfxFloat32 ffxDofNearerDepth(FfxFloat32 a, FfxFloat32 b)
+{
+#if FFX_DOF_OPTION_REVERSE_DEPTH
+    return max(a, b);
+#else
+    return min(a, b);
+#endif
+}
+FFX_DOF_INLINE FfxFloat32 ffxDofFartherDepth(FfxFloat32 a, FfxFloat32 b)
+{
+#if FFX_DOF_OPTION_REVERSE_DEPTH
+    return min(a, b);
+#else
+    return max(a, b);
+#endif
+}
+
+// ---- Bilateral downsampling ----------------------------------------------------------------------
+
+// Weight of a pixel of a 2x2 quad relative to the quad's top-left pixel: 1 for equal radii, falling
+// linearly to 0 at a difference of one pixel of radius.
+FFX_DOF_INLINE FfxFloat32 ffxDofBilateralWeight(FfxFloat32 referenceCoc, FfxFloat32 coc)
+{
+    return ffxDofSaturate(1.0f - abs(coc - referenceCoc));
+}
+
+// Reduces a 2x2 quad (0: top-left, 1: top-right, 2: bottom-left, 3: bottom-right). The same kernel
+// makes every MIP level.
+FFX_DOF_INLINE void ffxDofBilateralReduce(FfxDofFloat3 color0, FfxDofFloat3 color1, FfxDofFloat3 color2,
+                                          FfxDofFloat3 color3, FfxFloat32 coc0, FfxFloat32 coc1, FfxFloat32 coc2,
+                                          FfxFloat32 coc3, FFX_DOF_OUT(FfxDofFloat3) color, FFX_DOF_OUT(FfxFloat32) coc)
+{
+    FfxFloat32 weight1 = ffxDofBilateralWeight(coc0, coc1);
+    FfxFloat32 weight2 = ffxDofBilateralWeight(coc0, coc2);
+    FfxFloat32 weight3 = ffxDofBilateralWeight(coc0, coc3);
+    FfxFloat32 normalization = 1.0f / (1.0f + weight1 + weight2 + weight3);
+    color = (color0 + color1 * FfxDofFloat(weight1) + color2 * FfxDofFloat(weight2) + color3 * FfxDofFloat(weight3)) *
+            FfxDofFloat(normalization);
+    coc = (coc0 + coc1 * weight1 + coc2 * weight2 + coc3 * weight3) * normalization;
+}
+
+// ---- Workgroup and tile arithmetic --------------------------------------------------------------
+
+// Position of an invocation in its 8 x 8 workgroup.
+FFX_DOF_INLINE FfxUInt32x2 ffxDofLocalCoord(FfxUInt32 localIndex)
+{
+    return FfxUInt32x2(localIndex % 8u, localIndex / 8u);
+}
+
+// Size of MIP level `mip` of an image whose level 0 is `size` (the Vulkan/D3D rule).
+FFX_DOF_INLINE FfxUInt32x2 ffxDofMipSize(FfxUInt32x2 size, FfxUInt32 mip)
+{
+    return max(FfxUInt32x2(size.x >> mip, size.y >> mip), FfxUInt32x2(1u, 1u));
+}
+
+// Shortest distance, in half-res px, between a pixel centre of the central tile and a pixel centre
+// of the tile `tileOffset` tiles away.
+FFX_DOF_INLINE FfxFloat32 ffxDofTileGapDistance(FfxInt32x2 tileOffset)
+{
+    FfxFloat32 tileSize = FfxFloat32(FFX_DOF_TILE_SIZE);
+    FfxFloat32 gapX = max(FfxFloat32(abs(tileOffset.x)) * tileSize - (tileSize - 1.0f), 0.0f);
+    FfxFloat32 gapY = max(FfxFloat32(abs(tileOffset.y)) * tileSize - (tileSize - 1.0f), 0.0f);
+    return sqrt(gapX * gapX + gapY * gapY);
+}
+
+// Whether a tile whose largest spreading radius is `radius` can affect any pixel `distance` away
+// (ffxDofTileGapDistance), including everything the later passes derive from that pixel.
+FFX_DOF_INLINE FfxBoolean ffxDofTileReaches(FfxFloat32 radius, FfxFloat32 distance)
+{
+    return radius > 0.0f && radius + FFX_DOF_DILATE_MARGIN > distance;
+}
+
+// Number of tiles to look at on each side of the central tile during dilation.
+FFX_DOF_INLINE FfxInt32 ffxDofDilateTileRange(FfxFloat32 globalMaxRadius)
+{
+    return FfxInt32(ceil((globalMaxRadius + FFX_DOF_DILATE_MARGIN) / FfxFloat32(FFX_DOF_TILE_SIZE)));
+}
+
+// ---- Kernel shape: the only two functions that know it is circular -----------------------------
+
+// Samples in ring `ring` (ring 0 is the centre sample).
+FFX_DOF_INLINE FfxUInt32 ffxDofRingSampleCount(FfxUInt32 ring)
+{
+    return ring == 0u ? 1u : 6u * ring;
+}
+
+// Offset of sample `sampleIndex` of ring `ring`, in units of the ring spacing (so ring r lies at
+// distance r). Odd rings are turned by half a sample so that neighbouring rings interleave.
+FFX_DOF_INLINE FfxFloat32x2 ffxDofRingSamplePosition(FfxUInt32 ring, FfxUInt32 sampleIndex)
+{
+    FfxFloat32 angle = (FfxFloat32(sampleIndex) + 0.5f * FfxFloat32(ring & 1u)) *
+                       (6.28318530718f / FfxFloat32(ffxDofRingSampleCount(ring)));
+    return FfxFloat32x2(cos(angle), sin(angle)) * FfxFloat32(ring);
+}
+
+// ---- Kernel size --------------------------------------------------------------------------------
+
+// Rings for a kernel of `radius`: none below the in-focus radius (the pixel is copied), else one per
+// pixel of radius, at most the quality setting and FFX_DOF_OPTION_MAX_RINGS.
+FFX_DOF_INLINE FfxUInt32 ffxDofRingCount(FfxFloat32 radius, FfxUInt32 maxRings)
+{
+    if (radius < FFX_DOF_IN_FOCUS_RADIUS)
+        return 0u;
+    FfxUInt32 limit = clamp(maxRings, 1u, FfxUInt32(FFX_DOF_OPTION_MAX_RINGS));
+    return min(FfxUInt32(ceil(radius)), limit);
+}
+
+// MIP level to sample when samples are `spacing` half-res px apart: the finest level whose texels
+// are no larger than the spacing.
+FFX_DOF_INLINE FfxFloat32 ffxDofMipForSpacing(FfxFloat32 spacing)
+{
+    return clamp(floor(log2(max(spacing, 1.0f))), 0.0f, FfxFloat32(FFX_DOF_OPTION_MAX_MIP - 1));
+}
+
+// Random sub-pixel kernel origin for one pixel and frame, in half-res px.
+FFX_DOF_INLINE FfxUInt32 ffxDofHash(FfxUInt32 x)
+{
+    x ^= x >> 16u;
+    x *= 0x7feb352du;
+    x ^= x >> 15u;
+    x *= 0x846ca68bu;
+    x ^= x >> 16u;
+    return x;
+}
+FFX_DOF_INLINE FfxFloat32x2 ffxDofKernelJitter(FfxUInt32x2 pixel, FfxUInt32 frameIndex)
+{
+    FfxUInt32 h = ffxDofHash(pixel.x ^ ffxDofHash(pixel.y ^ ffxDofHash(frameIndex)));
+    FfxFloat32x2 unit = FfxFloat32x2(FfxFloat32(h & 0xffffu), FfxFloat32(h >> 16u)) * (1.0f / 65536.0f);
+    return (unit - FfxFloat32x2(0.5f, 0.5f)) * FFX_DOF_JITTER_AMPLITUDE;
+}
+
+// ---- Gathering ----------------------------------------------------------------------------------
+
+// How much a sample of |radius| reaches a pixel `distance` away (scatter-as-gather), with half a
+// pixel of anti-aliasing.
+FFX_DOF_INLINE FfxFloat32 ffxDofReach(FfxFloat32 absRadius, FfxFloat32 distance)
+{
+    return ffxDofSaturate(absRadius - distance + 0.5f);
+}
+
+// A sample spreads its energy over its disc: weight proportional to the inverse disc area,
+// normalized so that a radius of half a pixel or less weighs 4.
+FFX_DOF_INLINE FfxFloat32 ffxDofAreaWeight(FfxFloat32 absRadius)
+{
+    return 1.0f / max(absRadius * absRadius, 0.25f);
+}
+
+// A set of far-field samples (one ring, or all rings outside it).
+struct FfxDofBucket
+{
+    FfxFloat32x3 color;      // sum of color * weight (32-bit: hundreds of HDR samples overflow 16 bits)
+    FfxFloat32 weight;       // sum of reach * area weight
+    FfxFloat32 radius;       // sum of |radius| * weight
+    FfxFloat32 coverage;     // sum of reach
+    FfxFloat32 sampleCount;  // samples looked at (set per ring, near-field samples included)
+};
+
+FFX_DOF_INLINE FfxDofBucket ffxDofEmptyBucket()
+{
+    FfxDofBucket bucket;
+    bucket.color = FfxFloat32x3(0.0f, 0.0f, 0.0f);
+    bucket.weight = 0.0f;
+    bucket.radius = 0.0f;
+    bucket.coverage = 0.0f;
+    bucket.sampleCount = 0.0f;
+    return bucket;
+}
+
+FFX_DOF_INLINE void ffxDofBucketAdd(FFX_DOF_INOUT(FfxDofBucket) bucket, FfxDofFloat3 color, FfxFloat32 absRadius,
+                                    FfxFloat32 reach, FfxFloat32 sampleWeight)
+{
+    FfxFloat32 weight = reach * ffxDofAreaWeight(absRadius) * sampleWeight;
+    bucket.color += ffxDofToFloat32x3(color) * weight;
+    bucket.weight += weight;
+    bucket.radius += absRadius * weight;
+    bucket.coverage += reach;
+}
+
+// Merges the ring just gathered (`inner`) into the bucket of every ring outside it. Both are seen as
+// rings of their mean radius; where the inner one is nearer the camera (a smaller far-field radius)
+// it hides the outer one in proportion to how much of the ring reaches the centre, fully once the
+// radii differ by a ring spacing. Equal radii never occlude, so a flat region averages plainly.
+FFX_DOF_INLINE FfxDofBucket ffxDofMergeBuckets(FfxDofBucket outer, FfxDofBucket inner, FfxFloat32 ringSpacing)
+{
+    FfxFloat32 outerRadius = outer.weight > 0.0f ? outer.radius / outer.weight : 0.0f;
+    FfxFloat32 innerRadius = inner.weight > 0.0f ? inner.radius / inner.weight : 0.0f;
+    FfxFloat32 innerCoverage = inner.sampleCount > 0.0f ? inner.coverage / inner.sampleCount : 0.0f;
+    FfxFloat32 occlusion = innerCoverage * ffxDofSaturate((outerRadius - innerRadius) / max(ringSpacing, 1e-6f));
+    FfxFloat32 keep = 1.0f - occlusion;
+    FfxDofBucket merged;
+    merged.color = outer.color * keep + inner.color;
+    merged.weight = outer.weight * keep + inner.weight;
+    merged.radius = outer.radius * keep + inner.radius;
+    merged.coverage = outer.coverage + inner.coverage;
+    merged.sampleCount = outer.sampleCount + inner.sampleCount;
+    return merged;
+}
+
+// Near-field opacity from the area weights of the near samples that reach the pixel: each sample
+// stands for (kernel area / sample count) of the kernel and spreads over its own disc.
+FFX_DOF_INLINE FfxFloat32 ffxDofNearOpacity(FfxFloat32 nearWeight, FfxFloat32 kernelRadius, FfxFloat32 sampleCount)
+{
+    return ffxDofSaturate(nearWeight * kernelRadius * kernelRadius / max(sampleCount, 1.0f));
+}
+
+// ---- Post-filter and composition ----------------------------------------------------------------
+
+FFX_DOF_INLINE FfxFloat32 ffxDofLuminance(FfxDofFloat3 color)
+{
+    return FfxFloat32(color.x) * 0.2126f + FfxFloat32(color.y) * 0.7152f + FfxFloat32(color.z) * 0.0722f;
+}
+
+// Median of nine values by a 19-exchange selection network.
+FFX_DOF_INLINE void ffxDofSort2(FFX_DOF_INOUT(FfxFloat32) a, FFX_DOF_INOUT(FfxFloat32) b)
+{
+    FfxFloat32 lo = min(a, b);
+    b = max(a, b);
+    a = lo;
+}
+FFX_DOF_INLINE FfxFloat32 ffxDofMedian9(FfxFloat32 p0, FfxFloat32 p1, FfxFloat32 p2, FfxFloat32 p3, FfxFloat32 p4,
+                                       FfxFloat32 p5, FfxFloat32 p6, FfxFloat32 p7, FfxFloat32 p8)
+{
+    ffxDofSort2(p1, p2);
+    ffxDofSort2(p4, p5);
+    ffxDofSort2(p7, p8);
+    ffxDofSort2(p0, p1);
+    ffxDofSort2(p3, p4);
+    ffxDofSort2(p6, p7);
+    ffxDofSort2(p1, p2);
+    ffxDofSort2(p4, p5);
+    ffxDofSort2(p7, p8);
+    p3 = max(p0, p3);
+    p5 = min(p5, p8);
+    ffxDofSort2(p4, p7);
+    p6 = max(p3, p6);
+    p4 = max(p1, p4);
+    p2 = min(p2, p5);
+    p4 = min(p4, p7);
+    ffxDofSort2(p4, p2);
+    p4 = max(p6, p4);
+    return min(p4, p2);
+}
+
+// Brightness factor that moves a pixel of luminance `centerLuminance` to the median of its
+// neighbourhood; a zero median or a black pixel leaves it unchanged, the gain is bounded.
+FFX_DOF_INLINE FfxFloat32 ffxDofMedianGain(FfxFloat32 centerLuminance, FfxFloat32 medianLuminance)
+{
+    if (medianLuminance <= 0.0f || centerLuminance <= 0.0f)
+        return 1.0f;
+    return min(medianLuminance / centerLuminance, FFX_DOF_MEDIAN_MAX_GAIN);
+}
+
+// Blend weight from a filtered opacity: flat at 0 and 1 so that the layer edges do not bleed.
+FFX_DOF_INLINE FfxFloat32 ffxDofCubicWeight(FfxFloat32 opacity)
+{
+    FfxFloat32 a = ffxDofSaturate(opacity);
+    return a * a * (3.0f - 2.0f * a);
+}
+
+// Weight of a neighbour of the fixed 3x3 blur (offsets in -1..1).
+FFX_DOF_INLINE FfxFloat32 ffxDofFixedBlurWeight(FfxInt32 dx, FfxInt32 dy)
+{
+    FfxInt32 taxicab = abs(dx) + abs(dy);
+    return taxicab == 0 ? 1.0f : (taxicab == 1 ? FFX_DOF_FIXED_BLUR_EDGE_WEIGHT : FFX_DOF_FIXED_BLUR_CORNER_WEIGHT);
+}
+
+// Weights of the 2 x 2 half-res texels around a full-res pixel for bilinear upsampling:
+// returns the fractional position (weights of the right / bottom texels) and the top-left texel.
+FFX_DOF_INLINE FfxFloat32x2 ffxDofUpsamplePosition(FfxUInt32x2 fullPixel, FFX_DOF_OUT(FfxInt32x2) topLeftTexel)
+{
+    // Full-res pixel centre in half-res texel space, where texel i has its centre at i.
+    FfxFloat32x2 position = (FfxFloat32x2(fullPixel) + FfxFloat32x2(0.5f, 0.5f)) * 0.5f - FfxFloat32x2(0.5f, 0.5f);
+    FfxFloat32x2 base = floor(position);
+    topLeftTexel = FfxInt32x2(base);
+    return position - base;
+}
+
+// Joint-bilateral factor of a half-res tap for a full-res pixel: how well the tap's radius matches
+// the pixel's, relative to the pixel's own radius. Never exactly 0, so a pixel that matches no tap
+// falls back to plain bilinear weights.
+FFX_DOF_INLINE FfxFloat32 ffxDofUpsampleCocWeight(FfxFloat32 tapCoc, FfxFloat32 pixelCoc)
+{
+    FfxFloat32 tolerance = max(1.0f, 0.5f * abs(pixelCoc));
+    return max(ffxDofSaturate(1.0f - abs(tapCoc - pixelCoc) / tolerance), 1e-3f);
+}
+
+// Blend weights of the layers below the near field, from the pixel's |radius| (half-res px):
+// the fixed 3x3 blur covers 0.5..1.5, the far-field layer takes over from 1 to 2.
+FFX_DOF_INLINE FfxFloat32 ffxDofFixedBlurBlend(FfxFloat32 absCoc, FfxFloat32 nearOpacity)
+{
+    return nearOpacity > FFX_DOF_NEAR_BLOCKS_FIXED_BLUR ? 0.0f : ffxDofSaturate(absCoc - FFX_DOF_IN_FOCUS_RADIUS);
+}
+FFX_DOF_INLINE FfxFloat32 ffxDofFarBlend(FfxFloat32 absCoc, FfxFloat32 farValidity)
+{
+    return ffxDofSaturate(absCoc - 1.0f) * farValidity;
+}
+
+// sRGB encoding for outputs written through a UNORM view of an sRGB image.
+FFX_DOF_INLINE FfxFloat32 ffxDofLinearToSrgb(FfxFloat32 x)
+{
+    FfxFloat32 c = ffxDofSaturate(x);
+    return c <= 0.0031308f ? c * 12.92f : 1.055f * pow(c, 1.0f / 2.4f) - 0.055f;
+}
+
+#endif  // FFX_DOF_COMMON_H

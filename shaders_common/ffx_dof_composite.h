@@ -1,0 +1,234 @@
+// Pass 5 of 5: composition at full resolution.
+//
+// One workgroup covers one tile (16 x 16 full-res px); each invocation writes a 2 x 2 quad.
+//   1. A tile that is in focus and that no near-field blur reaches is copied (or, with
+//      FFX_DOF_OPTION_COMBINE_IN_PLACE, left alone): exactly what the per-pixel path would do.
+//   2. The group loads the 12 x 12 half-res texels around the tile and post-filters the 10 x 10 that
+//      bilinear upsampling touches, once per texel: median-luminance filter of near and far color,
+//      3x3 average of near opacity, invalid near texels filled from the most opaque neighbour.
+//   3. Per pixel: CoC from depth (32-bit); in focus and not covered by the near field -> the input,
+//      bit for bit. Otherwise: near layer upsampled bilinearly (any zero-opacity corner gives zero
+//      opacity); far layer upsampled joint-bilaterally (taps weighted by validity and by how well
+//      their CoC matches the pixel's, so a sharp foreground never spills into the blurred
+//      background); fixed 3x3 blur for radii 0.5..1.5; layers blended (ffxDofFixedBlurBlend,
+//      ffxDofFarBlend, ffxDofCubicWeight).
+// The composite also writes 0 to GLOBALS for the next dispatch (pass 3 has read it).
+#ifndef FFX_DOF_COMPOSITE_H
+#define FFX_DOF_COMPOSITE_H
+
+#include "ffx_dof_common.h"
+
+#if defined(FFX_CPU)
+FfxDofConstants ffxDofGetConstants();
+FfxFloat32 ffxDofLoadInputDepth(FfxUInt32x2 pixel);
+FfxFloat32x4 ffxDofLoadInputColor(FfxUInt32x2 pixel);
+FfxFloat32x2 ffxDofLoadTile(FfxUInt32x2 tile);
+FfxFloat32x2 ffxDofLoadDilatedTile(FfxUInt32x2 tile);
+FfxFloat32 ffxDofLoadCocMip(FfxInt32x2 texel, FfxUInt32 mip);
+FfxDofFloat3 ffxDofLoadNearColor(FfxInt32x2 texel);
+FfxDofFloat3 ffxDofLoadFarColor(FfxInt32x2 texel);
+FfxFloat32x2 ffxDofLoadLayerAlpha(FfxInt32x2 texel);
+void ffxDofStoreOutput(FfxUInt32x2 pixel, FfxFloat32x4 color);
+void ffxDofResetGlobals();
+#endif
+
+#define FFX_DOF_RAW_SIDE 12       // half-res texels loaded per side: tile + 2 each side
+#define FFX_DOF_FILTERED_SIDE 10  // half-res texels filtered per side: tile + 1 each side
+
+FFX_DOF_GROUPSHARED FfxDofFloat3 ffxDofSharedRawNear[FFX_DOF_RAW_SIDE * FFX_DOF_RAW_SIDE];
+FFX_DOF_GROUPSHARED FfxDofFloat3 ffxDofSharedRawFar[FFX_DOF_RAW_SIDE * FFX_DOF_RAW_SIDE];
+FFX_DOF_GROUPSHARED FfxFloat32x2 ffxDofSharedRawAlpha[FFX_DOF_RAW_SIDE * FFX_DOF_RAW_SIDE];
+FFX_DOF_GROUPSHARED FfxDofFloat3 ffxDofSharedNear[FFX_DOF_FILTERED_SIDE * FFX_DOF_FILTERED_SIDE];
+FFX_DOF_GROUPSHARED FfxDofFloat3 ffxDofSharedFar[FFX_DOF_FILTERED_SIDE * FFX_DOF_FILTERED_SIDE];
+FFX_DOF_GROUPSHARED FfxFloat32x2 ffxDofSharedAlpha[FFX_DOF_FILTERED_SIDE * FFX_DOF_FILTERED_SIDE];
+FFX_DOF_GROUPSHARED FfxFloat32 ffxDofSharedCoc[FFX_DOF_FILTERED_SIDE * FFX_DOF_FILTERED_SIDE];
+
+FFX_DOF_INLINE FfxInt32x2 ffxDofClampHalfTexel(FfxInt32x2 texel, FfxUInt32x2 halfSize)
+{
+    return clamp(texel, FfxInt32x2(0, 0), FfxInt32x2(halfSize) - FfxInt32x2(1, 1));
+}
+
+// Post-filter of filtered texel `index` (raw texel (x + 1, y + 1)).
+FFX_DOF_INLINE void ffxDofPostFilterTexel(FfxUInt32 index)
+{
+    FfxUInt32 x = index % FfxUInt32(FFX_DOF_FILTERED_SIDE);
+    FfxUInt32 y = index / FfxUInt32(FFX_DOF_FILTERED_SIDE);
+    FfxUInt32 center = (y + 1u) * FfxUInt32(FFX_DOF_RAW_SIDE) + x + 1u;
+    FfxFloat32x2 centerAlpha = ffxDofSharedRawAlpha[center];
+    FfxFloat32 nearCenterLuminance = ffxDofLuminance(ffxDofSharedRawNear[center]);
+    FfxFloat32 farCenterLuminance = ffxDofLuminance(ffxDofSharedRawFar[center]);
+    FfxFloat32 nearLuminance[9];
+    FfxFloat32 farLuminance[9];
+    FfxFloat32 opacitySum = 0.0f;
+    FfxFloat32 bestOpacity = 0.0f;
+    FfxUInt32 bestIndex = center;
+    FFX_DOF_UNROLL
+    for (FfxUInt32 k = 0u; k < 9u; ++k)
+    {
+        FfxUInt32 raw = (y + k / 3u) * FfxUInt32(FFX_DOF_RAW_SIDE) + x + k % 3u;
+        FfxFloat32x2 alpha = ffxDofSharedRawAlpha[raw];
+        // Texels without a value take the centre's luminance so they do not pull the median.
+        nearLuminance[k] = alpha.x > 0.0f ? ffxDofLuminance(ffxDofSharedRawNear[raw]) : nearCenterLuminance;
+        farLuminance[k] = alpha.y > 0.0f ? ffxDofLuminance(ffxDofSharedRawFar[raw]) : farCenterLuminance;
+        opacitySum += alpha.x;
+        if (alpha.x > bestOpacity)
+        {
+            bestOpacity = alpha.x;
+            bestIndex = raw;
+        }
+    }
+    FfxFloat32 nearMedian = ffxDofMedian9(nearLuminance[0], nearLuminance[1], nearLuminance[2], nearLuminance[3],
+                                          nearLuminance[4], nearLuminance[5], nearLuminance[6], nearLuminance[7],
+                                          nearLuminance[8]);
+    FfxFloat32 farMedian = ffxDofMedian9(farLuminance[0], farLuminance[1], farLuminance[2], farLuminance[3],
+                                         farLuminance[4], farLuminance[5], farLuminance[6], farLuminance[7],
+                                         farLuminance[8]);
+    FfxDofFloat3 nearColor = ffxDofSharedRawNear[centerAlpha.x > 0.0f ? center : bestIndex];
+    if (centerAlpha.x > 0.0f)
+        nearColor = nearColor * FfxDofFloat(ffxDofMedianGain(nearCenterLuminance, nearMedian));
+    FfxDofFloat3 farColor = ffxDofSharedRawFar[center];
+    if (centerAlpha.y > 0.0f)
+        farColor = farColor * FfxDofFloat(ffxDofMedianGain(farCenterLuminance, farMedian));
+    ffxDofSharedNear[index] = nearColor;
+    ffxDofSharedFar[index] = farColor;
+    ffxDofSharedAlpha[index] = FfxFloat32x2(opacitySum * (1.0f / 9.0f), centerAlpha.y);
+}
+
+FFX_DOF_INLINE FfxFloat32x3 ffxDofFixedBlur(FfxUInt32x2 pixel, FfxUInt32x2 fullSize)
+{
+    FfxFloat32x3 sum = FfxFloat32x3(0.0f, 0.0f, 0.0f);
+    FfxFloat32 weightSum = 0.0f;
+    FFX_DOF_UNROLL
+    for (FfxInt32 dy = -1; dy <= 1; ++dy)
+    {
+        FFX_DOF_UNROLL
+        for (FfxInt32 dx = -1; dx <= 1; ++dx)
+        {
+            FfxInt32x2 neighbour = clamp(FfxInt32x2(pixel) + FfxInt32x2(dx, dy), FfxInt32x2(0, 0),
+                                         FfxInt32x2(fullSize) - FfxInt32x2(1, 1));
+            FfxFloat32x4 color = ffxDofLoadInputColor(FfxUInt32x2(neighbour));
+            FfxFloat32 weight = ffxDofFixedBlurWeight(dx, dy);
+            sum += FfxFloat32x3(color.x, color.y, color.z) * weight;
+            weightSum += weight;
+        }
+    }
+    return sum / weightSum;
+}
+
+// The composed color of one full-res pixel; `filteredOrigin` is the half-res texel at filtered
+// index 0. Returns false (and leaves `color` alone) when the pixel keeps its input value.
+FFX_DOF_INLINE FfxBoolean ffxDofComposePixel(FfxUInt32x2 pixel, FfxInt32x2 filteredOrigin, FfxDofConstants constants,
+                                             FFX_DOF_INOUT(FfxFloat32x4) color)
+{
+    FfxFloat32 coc = ffxDofCocFromDepth(ffxDofLoadInputDepth(pixel), constants.cocScale, constants.cocBias,
+                                        constants.cocLimit);
+    FfxInt32x2 topLeft;
+    FfxFloat32x2 fraction = ffxDofUpsamplePosition(pixel, topLeft);
+    FfxInt32x2 local = topLeft - filteredOrigin;
+    FfxUInt32 index00 = FfxUInt32(local.y * FFX_DOF_FILTERED_SIDE + local.x);
+    FfxUInt32 indices[4];
+    indices[0] = index00;
+    indices[1] = index00 + 1u;
+    indices[2] = index00 + FfxUInt32(FFX_DOF_FILTERED_SIDE);
+    indices[3] = index00 + FfxUInt32(FFX_DOF_FILTERED_SIDE) + 1u;
+    FfxFloat32 bilinear[4];
+    bilinear[0] = (1.0f - fraction.x) * (1.0f - fraction.y);
+    bilinear[1] = fraction.x * (1.0f - fraction.y);
+    bilinear[2] = (1.0f - fraction.x) * fraction.y;
+    bilinear[3] = fraction.x * fraction.y;
+
+    FfxFloat32 nearOpacity = 0.0f;
+    FfxFloat32x3 nearColor = FfxFloat32x3(0.0f, 0.0f, 0.0f);
+    FfxBoolean nearValid = true;
+    FfxFloat32x3 farSum = FfxFloat32x3(0.0f, 0.0f, 0.0f);
+    FfxFloat32 farWeight = 0.0f;
+    FfxFloat32 farTotal = 0.0f;
+    FFX_DOF_UNROLL
+    for (FfxUInt32 k = 0u; k < 4u; ++k)
+    {
+        FfxFloat32x2 alpha = ffxDofSharedAlpha[indices[k]];
+        nearValid = nearValid && alpha.x > 0.0f;
+        nearOpacity += alpha.x * bilinear[k];
+        nearColor += ffxDofToFloat32x3(ffxDofSharedNear[indices[k]]) * bilinear[k];
+        FfxFloat32 tapWeight = bilinear[k] * ffxDofUpsampleCocWeight(ffxDofSharedCoc[indices[k]], coc);
+        farSum += ffxDofToFloat32x3(ffxDofSharedFar[indices[k]]) * (tapWeight * alpha.y);
+        farWeight += tapWeight * alpha.y;
+        farTotal += tapWeight;
+    }
+    if (!nearValid)
+        nearOpacity = 0.0f;
+    FfxFloat32 absCoc = abs(coc);
+    if (absCoc < FFX_DOF_IN_FOCUS_RADIUS && nearOpacity <= 0.0f)
+        return false;
+
+    FfxFloat32x3 result = FfxFloat32x3(color.x, color.y, color.z);
+    FfxFloat32 fixedBlurBlend = ffxDofFixedBlurBlend(absCoc, nearOpacity);
+    if (fixedBlurBlend > 0.0f)
+        result = ffxDofLerp(result, ffxDofFixedBlur(pixel, constants.fullSize), fixedBlurBlend);
+    if (farWeight > 0.0f)
+        result = ffxDofLerp(result, farSum / farWeight, ffxDofFarBlend(absCoc, farWeight / farTotal));
+    result = ffxDofLerp(result, nearColor, ffxDofCubicWeight(nearOpacity));
+    color = FfxFloat32x4(result.x, result.y, result.z, color.w);
+    return true;
+}
+
+FFX_DOF_INLINE void ffxDofComposite(FfxUInt32x2 groupId, FfxUInt32 localIndex)
+{
+    FfxDofConstants constants = ffxDofGetConstants();
+    if (groupId.x == 0u && groupId.y == 0u && localIndex == 0u)
+        ffxDofResetGlobals();
+
+    FfxUInt32x2 quad = groupId * 16u + ffxDofLocalCoord(localIndex) * 2u;
+    FfxFloat32x2 tile = ffxDofLoadTile(groupId);
+    FfxFloat32x2 dilated = ffxDofLoadDilatedTile(groupId);
+    // Uniform per workgroup, so returning before the barriers is allowed.
+    if (max(abs(tile.x), abs(tile.y)) < FFX_DOF_IN_FOCUS_RADIUS && dilated.y < FFX_DOF_NEAR_THRESHOLD)
+    {
+#if !FFX_DOF_OPTION_COMBINE_IN_PLACE
+        FFX_DOF_UNROLL
+        for (FfxUInt32 k = 0u; k < 4u; ++k)
+        {
+            FfxUInt32x2 pixel = quad + FfxUInt32x2(k & 1u, k >> 1u);
+            if (pixel.x < constants.fullSize.x && pixel.y < constants.fullSize.y)
+                ffxDofStoreOutput(pixel, ffxDofLoadInputColor(pixel));
+        }
+#endif
+        return;
+    }
+
+    FfxInt32x2 tileOrigin = FfxInt32x2(groupId * FfxUInt32(FFX_DOF_TILE_SIZE));
+    for (FfxUInt32 index = localIndex; index < FfxUInt32(FFX_DOF_RAW_SIDE * FFX_DOF_RAW_SIDE); index += FfxUInt32(FFX_DOF_GROUP_THREADS))
+    {
+        FfxInt32x2 texel = ffxDofClampHalfTexel(tileOrigin - FfxInt32x2(2, 2) + FfxInt32x2(FfxInt32(index % FfxUInt32(FFX_DOF_RAW_SIDE)), FfxInt32(index / FfxUInt32(FFX_DOF_RAW_SIDE))), constants.halfSize);
+        ffxDofSharedRawNear[index] = ffxDofLoadNearColor(texel);
+        ffxDofSharedRawFar[index] = ffxDofLoadFarColor(texel);
+        ffxDofSharedRawAlpha[index] = ffxDofLoadLayerAlpha(texel);
+    }
+    ffxDofGroupBarrier();
+    FfxInt32x2 filteredOrigin = tileOrigin - FfxInt32x2(1, 1);
+    for (FfxUInt32 index = localIndex; index < FfxUInt32(FFX_DOF_FILTERED_SIDE * FFX_DOF_FILTERED_SIDE); index += FfxUInt32(FFX_DOF_GROUP_THREADS))
+    {
+        ffxDofPostFilterTexel(index);
+        FfxInt32x2 texel = ffxDofClampHalfTexel(filteredOrigin + FfxInt32x2(FfxInt32(index % FfxUInt32(FFX_DOF_FILTERED_SIDE)), FfxInt32(index / FfxUInt32(FFX_DOF_FILTERED_SIDE))), constants.halfSize);
+        ffxDofSharedCoc[index] = ffxDofLoadCocMip(texel, 0u);
+    }
+    ffxDofGroupBarrier();
+
+    FFX_DOF_UNROLL
+    for (FfxUInt32 k = 0u; k < 4u; ++k)
+    {
+        FfxUInt32x2 pixel = quad + FfxUInt32x2(k & 1u, k >> 1u);
+        if (pixel.x >= constants.fullSize.x || pixel.y >= constants.fullSize.y)
+            continue;
+        FfxFloat32x4 color = ffxDofLoadInputColor(pixel);
+#if FFX_DOF_OPTION_COMBINE_IN_PLACE
+        if (ffxDofComposePixel(pixel, filteredOrigin, constants, color))
+            ffxDofStoreOutput(pixel, color);
+#else
+        ffxDofComposePixel(pixel, filteredOrigin, constants, color);
+        ffxDofStoreOutput(pixel, color);
+#endif
+    }
+}
+
+#endif  // FFX_DOF_COMPOSITE_H

@@ -1,0 +1,59 @@
+// Pass 3 of 5: tile dilation by scatter-as-gather.
+//
+// One invocation per tile. Every tile within the global maximum radius (plus the margin of
+// ffxDofTileReaches) is examined; a tile contributes its near (max) or far (min) end when that end's
+// radius can reach the nearest pixel of the central tile. The distance is measured from the
+// central tile's rectangle, not its centre, so nothing is ever under-dilated.
+// Output (DILATED_TILES): x = most negative (far) radius, y = most positive (near) radius among the
+// tile itself and every tile that reaches it.
+#ifndef FFX_DOF_DILATE_H
+#define FFX_DOF_DILATE_H
+
+#include "ffx_dof_common.h"
+
+#if defined(FFX_CPU)
+FfxDofConstants ffxDofGetConstants();
+FfxFloat32 ffxDofLoadGlobalMaxRadius();
+FfxFloat32x2 ffxDofLoadTile(FfxUInt32x2 tile);
+void ffxDofStoreDilatedTile(FfxUInt32x2 tile, FfxFloat32x2 farNear);
+#endif
+
+// The dilated (far, near) range of `centerTile` given the radius every tile spreads.
+FFX_DOF_INLINE FfxFloat32x2 ffxDofDilateTile(FfxUInt32x2 centerTile, FfxUInt32x2 tileCount, FfxFloat32 globalMaxRadius)
+{
+    FfxFloat32x2 own = ffxDofLoadTile(centerTile);
+    FfxFloat32 farCoc = own.x;
+    FfxFloat32 nearCoc = own.y;
+    FfxInt32 range = ffxDofDilateTileRange(globalMaxRadius);
+    FfxInt32x2 center = FfxInt32x2(centerTile);
+    FfxInt32 firstY = max(center.y - range, 0);
+    FfxInt32 lastY = min(center.y + range, FfxInt32(tileCount.y) - 1);
+    FfxInt32 firstX = max(center.x - range, 0);
+    FfxInt32 lastX = min(center.x + range, FfxInt32(tileCount.x) - 1);
+    FFX_DOF_LOOP
+    for (FfxInt32 y = firstY; y <= lastY; ++y)
+    {
+        FFX_DOF_LOOP
+        for (FfxInt32 x = firstX; x <= lastX; ++x)
+        {
+            FfxFloat32x2 tile = ffxDofLoadTile(FfxUInt32x2(FfxUInt32(x), FfxUInt32(y)));
+            FfxFloat32 distance = ffxDofTileGapDistance(FfxInt32x2(x, y) - center);
+            if (ffxDofTileReaches(-tile.x, distance))
+                farCoc = min(farCoc, tile.x);
+            if (ffxDofTileReaches(tile.y, distance))
+                nearCoc = max(nearCoc, tile.y);
+        }
+    }
+    return FfxFloat32x2(farCoc, nearCoc);
+}
+
+FFX_DOF_INLINE void ffxDofDilate(FfxUInt32x2 groupId, FfxUInt32 localIndex)
+{
+    FfxDofConstants constants = ffxDofGetConstants();
+    FfxUInt32x2 tile = groupId * 8u + ffxDofLocalCoord(localIndex);
+    if (tile.x >= constants.tileCount.x || tile.y >= constants.tileCount.y)
+        return;
+    ffxDofStoreDilatedTile(tile, ffxDofDilateTile(tile, constants.tileCount, ffxDofLoadGlobalMaxRadius()));
+}
+
+#endif  // FFX_DOF_DILATE_H

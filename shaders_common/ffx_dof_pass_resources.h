@@ -1,0 +1,76 @@
+// Which resources each pass touches: the per-API callback headers declare exactly these bindings
+// for the pass named by FFX_DOF_PASS_<NAME> (docs/technique.md has the same table for people).
+#ifndef FFX_DOF_PASS_RESOURCES_H
+#define FFX_DOF_PASS_RESOURCES_H
+
+#if defined(FFX_DOF_PASS_DOWNSAMPLE_DEPTH)
+#define FFX_DOF_USES_INPUT_DEPTH 1
+#define FFX_DOF_USES_RW_TILES 1
+#define FFX_DOF_USES_GLOBALS 1
+#elif defined(FFX_DOF_PASS_DOWNSAMPLE_COLOR)
+#define FFX_DOF_USES_INPUT_COLOR 1
+#define FFX_DOF_USES_INPUT_DEPTH 1
+#define FFX_DOF_USES_RW_MIPS 1
+#elif defined(FFX_DOF_PASS_DILATE)
+#define FFX_DOF_USES_TILES 1
+#define FFX_DOF_USES_RW_DILATED_TILES 1
+#define FFX_DOF_USES_GLOBALS 1
+#elif defined(FFX_DOF_PASS_BLUR)
+#define FFX_DOF_USES_COLOR_MIPS 1
+#define FFX_DOF_USES_COC_MIPS 1
+#define FFX_DOF_USES_DILATED_TILES 1
+#define FFX_DOF_USES_RW_LAYERS 1
+#elif defined(FFX_DOF_PASS_COMPOSITE)
+#define FFX_DOF_USES_INPUT_COLOR 1
+#define FFX_DOF_USES_INPUT_DEPTH 1
+#define FFX_DOF_USES_COC_MIPS 1
+#define FFX_DOF_USES_TILES 1
+#define FFX_DOF_USES_DILATED_TILES 1
+#define FFX_DOF_USES_LAYERS 1
+#define FFX_DOF_USES_RW_OUTPUT 1
+#define FFX_DOF_USES_GLOBALS 1
+#else
+#error "define one FFX_DOF_PASS_<NAME> before including a callback header"
+#endif
+
+#ifndef FFX_DOF_USES_INPUT_COLOR
+#define FFX_DOF_USES_INPUT_COLOR 0
+#endif
+#ifndef FFX_DOF_USES_INPUT_DEPTH
+#define FFX_DOF_USES_INPUT_DEPTH 0
+#endif
+#ifndef FFX_DOF_USES_COLOR_MIPS
+#define FFX_DOF_USES_COLOR_MIPS 0
+#endif
+#ifndef FFX_DOF_USES_COC_MIPS
+#define FFX_DOF_USES_COC_MIPS 0
+#endif
+#ifndef FFX_DOF_USES_TILES
+#define FFX_DOF_USES_TILES 0
+#endif
+#ifndef FFX_DOF_USES_DILATED_TILES
+#define FFX_DOF_USES_DILATED_TILES 0
+#endif
+#ifndef FFX_DOF_USES_LAYERS
+#define FFX_DOF_USES_LAYERS 0
+#endif
+#ifndef FFX_DOF_USES_RW_MIPS
+#define FFX_DOF_USES_RW_MIPS 0
+#endif
+#ifndef FFX_DOF_USES_RW_TILES
+#define FFX_DOF_USES_RW_TILES 0
+#endif
+#ifndef FFX_DOF_USES_RW_DILATED_TILES
+#define FFX_DOF_USES_RW_DILATED_TILES 0
+#endif
+#ifndef FFX_DOF_USES_RW_LAYERS
+#define FFX_DOF_USES_RW_LAYERS 0
+#endif
+#ifndef FFX_DOF_USES_RW_OUTPUT
+#define FFX_DOF_USES_RW_OUTPUT 0
+#endif
+#ifndef FFX_DOF_USES_GLOBALS
+#define FFX_DOF_USES_GLOBALS 0
+#endif
+
+#endif  // FFX_DOF_PASS_RESOURCES_H
