@@ -5,7 +5,8 @@
 // D3D12 register = index in its own class, space 0):
 //   sampled textures (SRV, t#)     base  0
 //   storage images   (UAV, u#)     base 16
-//   storage buffers  (UAV, u#)     base 40
+//   storage buffers  (UAV, u#)     base 40   (D3D12: u<index> in space 1, since u# is shared
+//                                            with the storage images)
 //   samplers         (s#)          base 48
 // Push/root constants carry FfxDofConstants (b0 on D3D12).
 //
