@@ -40,6 +40,10 @@ void runApply(const ApplyOptions& options);
 
 struct DemoOptions {
     std::string outputDirectory = "demo-out";
+    std::string scene = "busy-background";  // a built-in scene of the reference renderer
+    uint32_t width = 960;
+    uint32_t height = 540;
+    uint32_t lensSamples = 64;  // thin-lens samples per pixel of the truth
     EffectOptions effect;
 };
 void runDemo(const DemoOptions& options);

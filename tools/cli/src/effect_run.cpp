@@ -40,8 +40,8 @@ vkrun::RunSettings makeRunSettings(const EffectOptions& effect, const CocParamet
     settings.depthFormat = VK_FORMAT_D32_SFLOAT;
     settings.quality = effect.quality;
     settings.cocLimitFactor = float(effect.cocLimit);
-    settings.contextFlags =
-        (reversedDepth ? FFX_DOF_REVERSE_DEPTH : 0u) | (effect.noRingMerge ? FFX_DOF_DISABLE_RING_MERGE : 0u);
+    settings.contextFlags = (reversedDepth ? uint32_t(FFX_DOF_REVERSE_DEPTH) : 0u) |
+                            (effect.noRingMerge ? uint32_t(FFX_DOF_DISABLE_RING_MERGE) : 0u);
     settings.cocScale = coc.cocScale;
     settings.cocBias = coc.cocBias;
     return settings;

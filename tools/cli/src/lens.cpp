@@ -21,8 +21,8 @@ std::string formatNumber(double value) {
 
 void requirePositive(const char* option, double value, const char* unit) {
     if (!std::isfinite(value) || value <= 0.0) {
-        invalid(std::string(option) + " must be a finite number greater than 0 " + unit + ", got " +
-                formatNumber(value));
+        invalid(std::string(option) + " must be a finite number" + (*unit ? std::string(" of ") + unit : "") +
+                " greater than 0, got " + formatNumber(value));
     }
 }
 

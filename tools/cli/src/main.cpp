@@ -130,6 +130,11 @@ int run(int argc, char** argv) {
     CLI::App* demoCommand =
         app.add_subcommand("demo", "Render the built-in scene, apply the effect, compare with the thin-lens truth");
     demoCommand->add_option("--out", demo.outputDirectory, "Output folder")->capture_default_str();
+    demoCommand->add_option("--scene", demo.scene, "Built-in scene of the reference renderer")->capture_default_str();
+    demoCommand->add_option("--width", demo.width, "Width, pixels")->capture_default_str();
+    demoCommand->add_option("--height", demo.height, "Height, pixels")->capture_default_str();
+    demoCommand->add_option("--lens-samples", demo.lensSamples, "Thin-lens samples per pixel of the truth")
+        ->capture_default_str();
     addEffectOptions(*demoCommand, demo.effect);
 
     BenchOptions bench;
@@ -142,6 +147,7 @@ int run(int argc, char** argv) {
     benchCommand->add_flag("--json", bench.json, "Print one JSON object instead of a table");
     addEffectOptions(*benchCommand, bench.effect);
 
+#if FFX_DOF_CLI_HAS_COMPARE
     CompareOptions compare;
     CLI::App* compareCommand = app.add_subcommand("compare", "PSNR and SSIM of a test image against a reference");
     compareCommand->add_option("--ref", compare.referencePath, "Reference EXR")->required();
@@ -152,6 +158,7 @@ int run(int argc, char** argv) {
         compareCommand->add_option("--camera", compare.cameraPath, "Camera JSON of the reference renderer");
     depthOption->needs(cameraOption);
     cameraOption->needs(depthOption);
+#endif
 
     try {
         app.parse(argc, argv);
@@ -169,6 +176,14 @@ int run(int argc, char** argv) {
         if (error.get_exit_code() == static_cast<int>(CLI::ExitCodes::Success)) {
             return app.exit(error);
         }
+        // CLI11 reports an unknown command word as a missing subcommand; name the word instead.
+        if (app.get_subcommands().empty() && argc > 1 && argv[1][0] != '-') {
+            std::string names;
+            for (const CLI::App* command : app.get_subcommands({})) {
+                names += (names.empty() ? "" : ", ") + command->get_name();
+            }
+            throw CliError(ExitCode::Usage, "unknown command '" + std::string(argv[1]) + "' (commands: " + names + ")");
+        }
         throw CliError(ExitCode::Usage, std::string(error.what()) + " (see ffx-dof --help)");
     }
 
@@ -178,9 +193,12 @@ int run(int argc, char** argv) {
         runDemo(demo);
     } else if (benchCommand->parsed()) {
         runBench(bench);
-    } else if (compareCommand->parsed()) {
+    }
+#if FFX_DOF_CLI_HAS_COMPARE
+    if (compareCommand->parsed()) {
         runCompare(compare);
     }
+#endif
     return 0;
 }
 

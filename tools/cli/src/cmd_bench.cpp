@@ -1,0 +1,105 @@
+// ffx-dof bench: GPU timestamps of every pass, the total, the internal memory, and a plain copy
+// pass measured in the same run (the device floor), on a reproducible procedural scene.
+#include "cli_error.h"
+#include "commands.h"
+#include "effect_run.h"
+#include "ffx_dof_reference.h"
+
+#include <nlohmann/json.hpp>
+
+#include <chrono>
+#include <cstdio>
+#include <ctime>
+
+namespace ffxdof::cli {
+namespace {
+
+// A floor receding from 0.6 m to 60 m with objects before, at and behind the focus: every tile class
+// of the blur pass occurs (in focus, near, far, mixed). The reference renderer draws it deterministically.
+constexpr const char* kBenchScene = "floor";
+
+std::string utcDate() {
+    const std::time_t now = std::time(nullptr);
+    char text[32];
+    std::strftime(text, sizeof(text), "%Y-%m-%d", std::gmtime(&now));
+    return text;
+}
+
+}  // namespace
+
+void runBench(const BenchOptions& options) {
+    checkEffectOptions(options.effect);
+    if (options.width < 1 || options.height < 1 || options.width > FFX_DOF_MAX_RESOLUTION ||
+        options.height > FFX_DOF_MAX_RESOLUTION) {
+        throw CliError(ExitCode::InvalidValue,
+                       "--width and --height must be 1 to " + std::to_string(FFX_DOF_MAX_RESOLUTION) + ", got " +
+                           std::to_string(options.width) + "x" + std::to_string(options.height));
+    }
+    if (options.repeat < 1 || options.repeat > 10000) {
+        throw CliError(ExitCode::InvalidValue, "--repeat must be 1 to 10000, got " + std::to_string(options.repeat));
+    }
+
+    const ref::SceneSetup setup = ref::makeScene(kBenchScene, options.width, options.height);
+    ref::RenderSettings renderSettings;
+    const ref::PinholeImages pinhole = ref::renderPinhole(setup.scene, setup.camera, renderSettings);
+
+    const ThinLens lens{setup.camera.apertureRadius, setup.camera.focalLength, setup.camera.focusDistance,
+                        setup.camera.sensorWidth};
+    const EffectDepth depth = linearToEffectDepth(pinhole.depth, "bench scene depth");
+    const CocParameters coc = computeCocParameters(lens, depth.projection, options.width);
+
+    std::unique_ptr<vkrun::Device> device = openDevice(options.effect.device);
+    vkrun::RunSettings settings = makeRunSettings(options.effect, coc, depth.projection.reversed);
+    // What an engine would typically bind: half-float color and output.
+    settings.colorFormat = VK_FORMAT_R16G16B16A16_SFLOAT;
+    settings.outputFormat = VK_FORMAT_R16G16B16A16_SFLOAT;
+    settings.repeat = options.repeat;
+    settings.measureCopyPass = true;
+    const vkrun::RunResult result = runEffectOrThrow(
+        *device, toHostImage(pinhole.color), toHostImage(options.width, options.height, depth.deviceDepth), settings);
+
+    const double ratio = result.totalMilliseconds / result.copyPassMilliseconds;
+    const vkrun::DeviceFeatures& features = device->features();
+    const bool float16 = features.shaderFloat16 && features.storageBuffer16BitAccess;
+    if (options.json) {
+        nlohmann::ordered_json json;
+        json["date"] = utcDate();
+        json["device"] = device->name();
+        json["width"] = options.width;
+        json["height"] = options.height;
+        json["quality"] = options.effect.quality;
+        json["cocLimit"] = options.effect.cocLimit;
+        json["ringMerge"] = !options.effect.noRingMerge;
+        json["float16"] = float16;
+        json["scene"] = kBenchScene;
+        json["repeat"] = options.repeat;
+        nlohmann::ordered_json passes;
+        for (uint32_t pass = 0; pass < vkrun::kPassCount; ++pass) {
+            passes[vkrun::passName(pass)] = result.passMilliseconds[pass];
+        }
+        json["passMs"] = passes;
+        json["totalMs"] = result.totalMilliseconds;
+        json["copyMs"] = result.copyPassMilliseconds;
+        json["ratio"] = ratio;
+        json["memoryBytes"] = result.internalMemoryBytes;
+        json["aliasableMemoryBytes"] = result.aliasableMemoryBytes;
+        std::printf("%s\n", json.dump(2).c_str());
+        return;
+    }
+    std::printf("ffx-dof bench, %s, %s\n", utcDate().c_str(), device->name().c_str());
+    std::printf("%ux%u, quality %u, coc-limit %g, ring merge %s, 16-bit %s, scene %s, median of %u\n", options.width,
+                options.height, options.effect.quality, options.effect.cocLimit,
+                options.effect.noRingMerge ? "off" : "on", float16 ? "yes" : "no", kBenchScene, options.repeat);
+    for (uint32_t pass = 0; pass < vkrun::kPassCount; ++pass) {
+        std::printf("  %-24s %10.3f ms\n", vkrun::passName(pass), result.passMilliseconds[pass]);
+    }
+    std::printf("  %-24s %10.3f ms\n", "total", result.totalMilliseconds);
+    std::printf("  %-24s %10.3f ms\n", "copy pass (floor)", result.copyPassMilliseconds);
+    std::printf("  %-24s %10.2f\n", "ratio total / copy", ratio);
+    std::printf("  %-24s %10llu bytes (%.2f MiB), aliasable %llu bytes\n", "internal memory",
+                static_cast<unsigned long long>(result.internalMemoryBytes),
+                double(result.internalMemoryBytes) / (1024.0 * 1024.0),
+                static_cast<unsigned long long>(result.aliasableMemoryBytes));
+}
+
+}  // namespace ffxdof::cli

@@ -1,0 +1,112 @@
+// ffx-dof demo: renders a built-in scene with the reference renderer (pinhole input, linear depth and the
+// thin-lens truth), applies the effect on Vulkan, and writes the images and a side-by-side.
+#include "cli_error.h"
+#include "commands.h"
+#include "effect_run.h"
+#include "ffx_dof_reference.h"
+
+#include <cstdio>
+#include <filesystem>
+#include <stdexcept>
+#include <vector>
+
+namespace ffxdof::cli {
+namespace {
+
+// input | ours | truth, with a dark gap between the panels.
+io::ImageRGBA sideBySide(const std::vector<const io::ImageRGBA*>& panels) {
+    constexpr uint32_t kGap = 8;
+    const uint32_t width = panels[0]->width, height = panels[0]->height;
+    const uint32_t count = uint32_t(panels.size());
+    io::ImageRGBA combined(count * width + (count - 1) * kGap, height);
+    for (float& value : combined.pixels) value = 0.02f;
+    for (uint32_t panel = 0; panel < count; ++panel) {
+        for (uint32_t y = 0; y < height; ++y) {
+            for (uint32_t x = 0; x < width; ++x) {
+                const float* source = panels[panel]->at(x, y);
+                float* target = combined.at(panel * (width + kGap) + x, y);
+                std::copy(source, source + 3, target);
+                target[3] = 1.0f;
+            }
+        }
+    }
+    return combined;
+}
+
+}  // namespace
+
+void runDemo(const DemoOptions& options) {
+    checkEffectOptions(options.effect);
+    if (options.width < 1 || options.height < 1 || options.width > 8192 || options.height > 8192) {
+        throw CliError(ExitCode::InvalidValue, "--width and --height must be 1 to 8192");
+    }
+    if (options.lensSamples < 1) {
+        throw CliError(ExitCode::InvalidValue, "--lens-samples must be at least 1");
+    }
+    ref::SceneSetup setup;
+    try {
+        setup = ref::makeScene(options.scene, options.width, options.height);
+    } catch (const std::invalid_argument& error) {
+        throw CliError(ExitCode::InvalidValue, std::string("--scene: ") + error.what());
+    }
+    namespace fs = std::filesystem;
+    const fs::path directory(options.outputDirectory);
+    std::error_code error;
+    fs::create_directories(directory, error);
+    if (error || !fs::is_directory(directory)) {
+        throw CliError(ExitCode::OutputWrite, "cannot create the output folder " + directory.string() + ": " +
+                                                  (error ? error.message() : "a file of that name exists"));
+    }
+
+    // The device is opened before the (slow) rendering so that a machine without Vulkan fails at once.
+    std::unique_ptr<vkrun::Device> device = openDevice(options.effect.device);
+
+    std::printf("rendering scene \"%s\" (%s), %ux%u, %u lens samples per pixel...\n", setup.name.c_str(),
+                setup.description.c_str(), options.width, options.height, options.lensSamples);
+    std::fflush(stdout);
+    ref::RenderSettings renderSettings;
+    renderSettings.lensSamples = options.lensSamples;
+    const ref::PinholeImages pinhole = ref::renderPinhole(setup.scene, setup.camera, renderSettings);
+    const ref::ThinLensImage truth = ref::renderThinLens(setup.scene, setup.camera, renderSettings);
+
+    const ref::Camera& camera = setup.camera;
+    const ThinLens lens{camera.apertureRadius, camera.focalLength, camera.focusDistance, camera.sensorWidth};
+    const EffectDepth depth = linearToEffectDepth(pinhole.depth, "scene depth");
+    const CocParameters coc = computeCocParameters(lens, depth.projection, camera.width);
+    const vkrun::RunResult result = runEffectOrThrow(*device, toHostImage(pinhole.color),
+                                                     toHostImage(camera.width, camera.height, depth.deviceDepth),
+                                                     makeRunSettings(options.effect, coc, depth.projection.reversed));
+    const io::ImageRGBA output = toImageRGBA(result.output);
+
+    std::vector<std::string> written;
+    const auto write = [&](const char* name, auto&& writeFile) {
+        const std::string path = (directory / name).string();
+        try {
+            writeFile(path);
+        } catch (const io::IoError& ioError) {
+            throw CliError(ExitCode::OutputWrite, ioError.what());
+        }
+        written.push_back(path);
+    };
+    write("input.exr", [&](const std::string& path) { io::writeExr(path, pinhole.color); });
+    write("input.png", [&](const std::string& path) { io::writePng(path, pinhole.color); });
+    write("depth.exr",
+          [&](const std::string& path) { io::writeExr(path, pinhole.depth, io::ExrPixelType::Float, "Z"); });
+    write("output.exr", [&](const std::string& path) { io::writeExr(path, output); });
+    write("output.png", [&](const std::string& path) { io::writePng(path, output); });
+    write("truth.exr", [&](const std::string& path) { io::writeExr(path, truth.color); });
+    write("truth.png", [&](const std::string& path) { io::writePng(path, truth.color); });
+    write("side-by-side.png", [&](const std::string& path) {
+        io::writePng(path, sideBySide({&pinhole.color, &output, &truth.color}));
+    });
+    write("camera.json", [&](const std::string& path) { ref::writeCameraJson(path, camera); });
+
+    std::printf("applied depth of field on %s: focus %.2f m, f/%.2f, %.0f mm\n", device->name().c_str(),
+                camera.focusDistance, camera.fstop(), camera.focalLength * 1000.0);
+    std::printf("truth convergence (RMS, half vs all lens samples): %.4f\n", truth.convergenceRms);
+    std::printf("wrote:\n");
+    for (const std::string& path : written) std::printf("  %s\n", path.c_str());
+    std::printf("side-by-side.png is input | ffx-dof | thin-lens truth\n");
+}
+
+}  // namespace ffxdof::cli
