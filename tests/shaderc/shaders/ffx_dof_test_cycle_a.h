@@ -1,0 +1,2 @@
+// Deliberately unguarded include cycle (a -> b -> a) for the include-cycle test.
+#include "ffx_dof_test_cycle_b.h"

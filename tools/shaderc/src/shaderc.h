@@ -1,0 +1,152 @@
+// ffx-dof-shaderc as a library: parse the permutation axes, compile every permutation of one pass
+// (glslang, in process, in parallel), optimize (spirv-opt performance recipe) and validate
+// (spirv-val), deduplicate, reflect the bindings (SPIRV-Cross) and emit C++ tables, a JSON
+// manifest and a depfile. main.cpp is only the command line around this.
+#pragma once
+
+#include "ffx_dof_shader_table.h"
+
+#include <cstdint>
+#include <filesystem>
+#include <map>
+#include <set>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace ffxdof::shaderc {
+
+namespace fs = std::filesystem;
+using shaders::BindingKind;
+
+// Every failure the tool reports. what() is the complete, user-facing message (one line for bad
+// input; a compile error adds its source context on the following lines).
+class Error : public std::runtime_error {
+public:
+    using std::runtime_error::runtime_error;
+};
+
+enum class Language { Glsl, Hlsl };
+const char* languageName(Language language);
+Language parseLanguage(const std::string& text);  // "glsl" | "hlsl"
+
+struct Define {
+    std::string name;
+    std::string value;
+};
+
+struct Axis {
+    std::string macro;
+    std::vector<uint32_t> values;
+};
+
+// "NAME=VALUE" or "NAME" (value 1). Throws Error on a malformed name.
+Define parseDefine(const std::string& text);
+// "NAME={0,1,2}". Throws Error on any other syntax, an empty or repeated value list.
+Axis parseAxis(const std::string& text);
+// Product of the axes' value counts; throws when it is unreasonably large (> 65535 blobs).
+uint32_t permutationCount(const std::vector<Axis>& axes);
+// Macro values of permutation `index` (mixed radix, last axis fastest; see ffx_dof_shader_table.h).
+std::vector<Define> permutationDefines(const std::vector<Axis>& axes, uint32_t index);
+
+// Initializes glslang for the lifetime of the object (InitializeProcess / FinalizeProcess).
+class GlslangProcess {
+public:
+    GlslangProcess();
+    ~GlslangProcess();
+    GlslangProcess(const GlslangProcess&) = delete;
+    GlslangProcess& operator=(const GlslangProcess&) = delete;
+};
+
+// glslang's per-register-class binding shifts for HLSL (t, u, s, b), like dxc's -fvk-*-shift.
+struct HlslBindingShifts {
+    uint32_t texture = 0;
+    uint32_t uav = 0;
+    uint32_t sampler = 0;
+    uint32_t constantBuffer = 0;
+};
+
+struct CompileOptions {
+    std::string pass;  // for messages and table names
+    Language language = Language::Glsl;
+    fs::path source;
+    std::vector<fs::path> includeDirs;
+    std::vector<Define> defines;  // plain defines, in every permutation
+    HlslBindingShifts hlslShifts;
+    bool optimize = true;
+};
+
+struct CompiledShader {
+    std::vector<uint32_t> spirv;
+    std::set<fs::path> openedFiles;  // the source and every file the includer opened
+};
+
+// Compiles, optimizes and validates one permutation: the plain defines plus `permutation`.
+// Needs a live GlslangProcess. Throws Error naming the pass, the defines and the compiler
+// message with source context.
+CompiledShader compilePermutation(const CompileOptions& options, const std::vector<Define>& permutation);
+
+struct ReflectedBinding {
+    std::string name;
+    uint32_t set = 0;
+    uint32_t binding = 0;
+    BindingKind kind = BindingKind::SampledImage;
+    uint32_t arraySize = 1;
+    uint32_t size = 0;  // push constants: block size in bytes
+    bool operator==(const ReflectedBinding& other) const;
+};
+
+struct ReflectedMember {
+    std::string name;
+    uint32_t offset = 0;
+    uint32_t size = 0;
+    bool operator==(const ReflectedMember& other) const {
+        return name == other.name && offset == other.offset && size == other.size;
+    }
+};
+
+struct Reflection {
+    std::vector<ReflectedBinding> bindings;  // sorted by (kind == PushConstants, set, binding)
+    std::vector<ReflectedMember> pushConstantMembers;
+    uint32_t localSize[3] = {1, 1, 1};
+    bool usesFloat16 = false;
+};
+
+Reflection reflect(const std::vector<uint32_t>& spirv);
+
+struct PassBuild {
+    CompileOptions options;
+    std::vector<Axis> axes;
+    std::vector<std::vector<uint32_t>> blobs;  // unique, in order of first use
+    std::vector<Reflection> blobReflections;
+    std::vector<uint16_t> permutationToBlob;
+    std::vector<ReflectedBinding> bindings;  // merged over all permutations
+    std::vector<ReflectedMember> pushConstantMembers;
+    std::set<fs::path> dependencies;
+};
+
+// Compiles every permutation on `threads` workers (0: all cores), deduplicates and reflects.
+// Throws Error for the first failing permutation (lowest index) or disagreeing bindings.
+PassBuild buildPass(const CompileOptions& options, const std::vector<Axis>& axes, unsigned threads);
+
+// Merges the per-blob reflections; throws Error when two permutations disagree on a binding.
+void mergeReflections(PassBuild& build);
+
+struct EmitOptions {
+    std::string cppNamespace = "ffxdof::shaders";
+    std::string symbol;  // the PassTable variable; default "pass_<pass>"
+};
+
+std::string emitHeader(const PassBuild& build, const EmitOptions& options);
+std::string emitSource(const PassBuild& build, const EmitOptions& options, const std::string& headerName);
+std::string emitManifest(const PassBuild& build);
+// Makefile syntax: "<target>: <dep> <dep> ...", spaces escaped.
+std::string emitDepfile(const fs::path& target, const std::set<fs::path>& dependencies);
+
+// Writes every file to a temporary next to it, then renames them all into place. On any failure
+// nothing is left behind (temporaries removed) and an Error names the path.
+void writeFilesAtomically(const std::vector<std::pair<fs::path, std::string>>& files);
+
+std::string symbolFor(const std::string& pass);
+
+}  // namespace ffxdof::shaderc
