@@ -58,7 +58,8 @@ FfxDofErrorCode passAccess(const shaders::PassTable& table, PassAccess* out) {
     for (uint32_t b = 0; b < table.bindingCount; ++b) {
         const shaders::Binding& binding = table.bindings[b];
         const uint32_t slot = binding.binding;
-        bool fits = binding.set == 0 && binding.arraySize <= 1;
+        const uint32_t space = binding.kind == shaders::BindingKind::StorageBuffer ? kUavBufferRegisterSpace : 0;
+        bool fits = binding.set == space && binding.arraySize <= 1;
         switch (binding.kind) {
             case shaders::BindingKind::SampledImage:
                 fits = fits && slot < kSrvCount;
@@ -69,7 +70,7 @@ FfxDofErrorCode passAccess(const shaders::PassTable& table, PassAccess* out) {
                 if (fits) access.uavImageMask |= 1u << slot;
                 break;
             case shaders::BindingKind::StorageBuffer:
-                fits = fits && slot == kUavBufferRegisterBase + FFX_DOF_UAV_BUFFER_GLOBALS;
+                fits = fits && slot == FFX_DOF_UAV_BUFFER_GLOBALS;
                 access.usesGlobals = access.usesGlobals || fits;
                 break;
             case shaders::BindingKind::Sampler:
@@ -165,7 +166,7 @@ FfxDofErrorCode Backend::createRootSignature() {
     const D3D12_DESCRIPTOR_RANGE ranges[] = {
         {D3D12_DESCRIPTOR_RANGE_TYPE_SRV, kSrvCount, 0, 0, kSrvTableOffset},
         {D3D12_DESCRIPTOR_RANGE_TYPE_UAV, kUavImageCount, 0, 0, kUavImageTableOffset},
-        {D3D12_DESCRIPTOR_RANGE_TYPE_UAV, kUavBufferCount, kUavBufferRegisterBase, 0, kUavBufferTableOffset},
+        {D3D12_DESCRIPTOR_RANGE_TYPE_UAV, kUavBufferCount, 0, kUavBufferRegisterSpace, kUavBufferTableOffset},
     };
     D3D12_ROOT_PARAMETER parameters[2]{};
     parameters[kRootConstantsParameter].ParameterType = D3D12_ROOT_PARAMETER_TYPE_32BIT_CONSTANTS;

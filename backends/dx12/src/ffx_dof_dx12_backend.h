@@ -18,21 +18,19 @@ namespace ffxdof::dx12 {
 using Microsoft::WRL::ComPtr;
 
 // Every dispatch binds one contiguous block of descriptors through one descriptor table:
-//   [0, 9)    SRVs t0..t8          (FFX_DOF_SRV_*)
-//   [9, 23)   image UAVs u0..u13   (FFX_DOF_UAV_*)
-//   [23, 24)  buffer UAV u24       (FFX_DOF_UAV_BUFFER_GLOBALS)
-// HLSL has one u# namespace for images and buffers, so the buffer class starts at the distance the
-// resource table puts between the two classes (FFX_DOF_UAV_BUFFER_BASE - FFX_DOF_UAV_IMAGE_BASE),
-// which is also the register glslang's single UAV binding shift maps onto the Vulkan binding.
+//   [0, 9)    SRVs t0..t8               (FFX_DOF_SRV_*)
+//   [9, 23)   image UAVs u0..u13        (FFX_DOF_UAV_*)
+//   [23, 24)  buffer UAV u0, space 1    (FFX_DOF_UAV_BUFFER_*)
+// HLSL has one u# namespace for images and buffers, so the buffers take register space 1
+// (shaders_common/ffx_dof_callbacks_hlsl.h declares them there).
 constexpr uint32_t kSrvCount = FFX_DOF_SRV_LAYER_ALPHA + 1;
 constexpr uint32_t kUavImageCount = FFX_DOF_UAV_OUTPUT + 1;
 constexpr uint32_t kUavBufferCount = FFX_DOF_UAV_BUFFER_GLOBALS + 1;
-constexpr uint32_t kUavBufferRegisterBase = FFX_DOF_UAV_BUFFER_BASE - FFX_DOF_UAV_IMAGE_BASE;
+constexpr UINT kUavBufferRegisterSpace = 1;
 constexpr uint32_t kSrvTableOffset = 0;
 constexpr uint32_t kUavImageTableOffset = kSrvTableOffset + kSrvCount;
 constexpr uint32_t kUavBufferTableOffset = kUavImageTableOffset + kUavImageCount;
 constexpr uint32_t kDescriptorsPerDispatch = kUavBufferTableOffset + kUavBufferCount;
-static_assert(kUavBufferRegisterBase >= kUavImageCount, "buffer UAV registers overlap the image UAV registers");
 
 constexpr UINT kRootConstantsParameter = 0;  // b0: FfxDofConstants
 constexpr UINT kRootDescriptorTableParameter = 1;
