@@ -4,7 +4,8 @@
 //
 // For one camera it renders the pinhole image (the input of a post-process DoF: 4x4 stratified
 // sub-pixel samples through the pinhole), the depth of the pinhole ray through each pixel centre,
-// and the thin-lens image (the truth: N lens samples per pixel, pixel positions jittered too).
+// and the thin-lens image (the truth: N lens samples per pixel, cycling over the same 4x4 sub-pixel
+// positions, so that in focus the truth has exactly the input's anti-aliasing; use N a multiple of 16).
 //
 // Camera convention. View space looks down +Z (x right, y up); view depth Z is the distance along
 // the optical axis in metres. The lens is a thin lens of focal length f focused at distance F: its

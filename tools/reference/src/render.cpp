@@ -136,19 +136,26 @@ double radicalInverse(uint32_t index, uint32_t base) {
     return result;
 }
 
-// The i-th point of a 4D Halton sequence (bases 2, 3, 5, 7) shifted per pixel (Cranley-Patterson
-// rotation): every prefix is well stratified, so the N/2 estimate is a fair convergence check.
+// Sample i of a pixel: the sub-pixel position cycles through the 4x4 strata centres of the pinhole
+// image (in bit-reversed order, so any prefix of 2^k samples is spread over the pixel), so that
+// in-focus pixels get exactly the input's anti-aliasing and a zero aperture reproduces the pinhole
+// image; the lens position is a 2D Halton point (bases 3 and 5, independent of i mod 16) shifted per
+// pixel (Cranley-Patterson rotation). Every prefix is well stratified, so the N/2 estimate is a fair
+// convergence check.
 struct SamplePoint {
     double pixelX, pixelY, lensU, lensV;
 };
 
-SamplePoint samplePoint(uint32_t index, const double rotation[4]) {
+constexpr int kPixelGrid = 4;
+
+SamplePoint samplePoint(uint32_t index, const double rotation[2]) {
     const auto rotate = [](double value, double offset) {
         const double shifted = value + offset;
         return shifted >= 1.0 ? shifted - 1.0 : shifted;
     };
-    return {rotate(radicalInverse(index, 2), rotation[0]), rotate(radicalInverse(index, 3), rotation[1]),
-            rotate(radicalInverse(index, 5), rotation[2]), rotate(radicalInverse(index, 7), rotation[3])};
+    const uint32_t stratum = ((index & 1) << 3) | ((index & 2) << 1) | ((index & 4) >> 1) | ((index & 8) >> 3);
+    return {(stratum % kPixelGrid + 0.5) / kPixelGrid, (stratum / kPixelGrid + 0.5) / kPixelGrid,
+            rotate(radicalInverse(index, 3), rotation[0]), rotate(radicalInverse(index, 5), rotation[1])};
 }
 
 // Shirley-Chiu concentric map of the unit square onto the unit disc (area-preserving, low distortion).
@@ -261,7 +268,7 @@ PinholeImages renderPinhole(const Scene& scene, const Camera& camera, const Rend
     const ProjectionTerms standard = camera.projection(), reversed = camera.reversedProjection();
     PinholeImages images{io::ImageRGBA(camera.width, camera.height), io::ImageR(camera.width, camera.height),
                          io::ImageR(camera.width, camera.height), io::ImageR(camera.width, camera.height)};
-    constexpr int kGrid = 4;  // 4x4 stratified sub-pixel samples at the strata centres (no noise)
+    constexpr int kGrid = kPixelGrid;  // 4x4 stratified sub-pixel samples at the strata centres (no noise)
     forEachRow(camera.height, settings.threads, [&](uint32_t y) {
         for (uint32_t x = 0; x < camera.width; ++x) {
             glm::dvec3 sum(0.0);
@@ -316,10 +323,10 @@ ThinLensImage renderThinLens(const Scene& scene, const Camera& camera, const Ren
     std::vector<double> squaredChangePerRow(camera.height, 0.0);
     forEachRow(camera.height, settings.threads, [&](uint32_t y) {
         for (uint32_t x = 0; x < camera.width; ++x) {
-            double rotation[4], emitterRotation[4];
-            for (uint32_t d = 0; d < 4; ++d) {
+            double rotation[2], emitterRotation[2];
+            for (uint32_t d = 0; d < 2; ++d) {
                 rotation[d] = hashUnit(x, y, settings.seed, d);
-                emitterRotation[d] = hashUnit(x, y, settings.seed, 4 + d);
+                emitterRotation[d] = hashUnit(x, y, settings.seed, 2 + d);
             }
             glm::dvec3 sumHalf(0.0), sum(0.0);
             for (uint32_t i = 0; i < sampleCount; ++i) {

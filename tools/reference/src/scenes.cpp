@@ -97,7 +97,7 @@ SceneSetup farHighlights(uint32_t width, uint32_t height) {
         const double z = 18.0 + 1.5 * (i % 5);
         const double x = -6.0 + 12.0 * (i / 13.0) + 0.4 * std::sin(i * 2.3);
         const double y = -1.5 + 3.5 * latticeValue(i, 7);
-        scene.addEmitter({x, y, z}, emitterRadiusForPixels(camera, z, 0.6), colors[i % 4], 150.0f + 50.0f * (i % 3));
+        scene.addEmitter({x, y, z}, emitterRadiusForPixels(camera, z, 1.0), colors[i % 4], 150.0f + 50.0f * (i % 3));
     }
     setApertureForBlur(camera, 20.0, std::max(4.0, 0.025 * width));
     return setup;

@@ -1,0 +1,20 @@
+# Runs ffx-dof-reference on a small scene and checks that every documented output exists, and that a
+# bad scene name fails with a non-zero exit code and names the scenes.
+file(REMOVE_RECURSE ${OUT})
+execute_process(COMMAND ${REFERENCE} --scene fence --width 24 --height 16 --lens-samples 4 --out ${OUT}
+                RESULT_VARIABLE result OUTPUT_VARIABLE output ERROR_VARIABLE errors)
+if(NOT result EQUAL 0)
+  message(FATAL_ERROR "ffx-dof-reference failed (${result}): ${output}${errors}")
+endif()
+foreach(name color.exr depth.exr depth_device.exr depth_device_reversed.exr truth.exr camera.json)
+  if(NOT EXISTS ${OUT}/${name})
+    message(FATAL_ERROR "missing output ${name}")
+  endif()
+endforeach()
+if(NOT output MATCHES "convergence")
+  message(FATAL_ERROR "no convergence figure printed: ${output}")
+endif()
+execute_process(COMMAND ${REFERENCE} --scene no-such-scene --out ${OUT} RESULT_VARIABLE result ERROR_VARIABLE errors)
+if(result EQUAL 0 OR NOT errors MATCHES "near-object")
+  message(FATAL_ERROR "an unknown scene was not rejected with the list of scenes: ${result} ${errors}")
+endif()
