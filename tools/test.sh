@@ -28,6 +28,6 @@ cmake --build --preset asan -j "$jobs"
 ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 ctest --preset asan -j "$jobs"
 
 step "Direct3D 12 backend, cross-compiled with MinGW-w64"
-bash tools/build-mingw.sh
+bash tools/ci/build-mingw.sh
 
 step "done"
