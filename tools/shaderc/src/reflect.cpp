@@ -35,6 +35,36 @@ uint32_t arraySizeOf(spvc_compiler compiler, spvc_type_id typeId, const std::str
     return spvc_type_get_array_dimension(type, 0);
 }
 
+// A variable without a name (a GLSL block without instance name) is called by its type's name.
+std::string resourceName(spvc_compiler compiler, const spvc_reflected_resource& resource) {
+    if (resource.name && resource.name[0]) return resource.name;
+    const char* typeName = spvc_compiler_get_name(compiler, resource.base_type_id);
+    return typeName ? typeName : "";
+}
+
+// The push-constant block's scalars and vectors with their absolute offsets; members of nested
+// structs are named "outer.inner", so a block that wraps FfxDofConstants in one member still
+// lists every FfxDofConstants field.
+void appendLeafMembers(spvc_compiler compiler, spvc_context context, spvc_type_id structId, const std::string& prefix,
+                       uint32_t baseOffset, std::vector<ReflectedMember>* members) {
+    const spvc_type type = spvc_compiler_get_type_handle(compiler, structId);
+    const unsigned count = spvc_type_get_num_member_types(type);
+    for (unsigned m = 0; m < count; ++m) {
+        unsigned offset = 0;
+        size_t size = 0;
+        check(spvc_compiler_type_struct_member_offset(compiler, type, m, &offset), context, "member offset");
+        check(spvc_compiler_get_declared_struct_member_size(compiler, type, m, &size), context, "member size");
+        const std::string name = prefix + spvc_compiler_get_member_name(compiler, structId, m);
+        const spvc_type_id memberId = spvc_type_get_member_type(type, m);
+        const spvc_type member = spvc_compiler_get_type_handle(compiler, memberId);
+        if (spvc_type_get_basetype(member) == SPVC_BASETYPE_STRUCT && spvc_type_get_num_array_dimensions(member) == 0) {
+            appendLeafMembers(compiler, context, memberId, name + ".", baseOffset + offset, members);
+        } else {
+            members->push_back({name, baseOffset + offset, static_cast<uint32_t>(size)});
+        }
+    }
+}
+
 }  // namespace
 
 bool ReflectedBinding::operator==(const ReflectedBinding& other) const {
@@ -69,7 +99,7 @@ Reflection reflect(const std::vector<uint32_t>& spirv) {
         check(spvc_resources_get_resource_list_for_type(resources, type, &list, &count), rawContext, "list");
         for (size_t i = 0; i < count; ++i) {
             ReflectedBinding binding;
-            binding.name = list[i].name;
+            binding.name = resourceName(compiler, list[i]);
             binding.kind = kind;
             binding.set = spvc_compiler_get_decoration(compiler, list[i].id, SpvDecorationDescriptorSet);
             binding.binding = spvc_compiler_get_decoration(compiler, list[i].id, SpvDecorationBinding);
@@ -105,23 +135,11 @@ Reflection reflect(const std::vector<uint32_t>& spirv) {
         size_t size = 0;
         check(spvc_compiler_get_declared_struct_size(compiler, block, &size), rawContext, "push constant size");
         ReflectedBinding binding;
-        binding.name = pushConstants[i].name;
+        binding.name = resourceName(compiler, pushConstants[i]);
         binding.kind = BindingKind::PushConstants;
         binding.size = static_cast<uint32_t>(size);
         reflection.bindings.push_back(binding);
-        const unsigned members = spvc_type_get_num_member_types(block);
-        for (unsigned m = 0; m < members; ++m) {
-            ReflectedMember member;
-            member.name = spvc_compiler_get_member_name(compiler, pushConstants[i].base_type_id, m);
-            unsigned offset = 0;
-            size_t memberSize = 0;
-            check(spvc_compiler_type_struct_member_offset(compiler, block, m, &offset), rawContext, "member offset");
-            check(spvc_compiler_get_declared_struct_member_size(compiler, block, m, &memberSize), rawContext,
-                  "member size");
-            member.offset = offset;
-            member.size = static_cast<uint32_t>(memberSize);
-            reflection.pushConstantMembers.push_back(member);
-        }
+        appendLeafMembers(compiler, rawContext, pushConstants[i].base_type_id, "", 0, &reflection.pushConstantMembers);
     }
     std::sort(reflection.bindings.begin(), reflection.bindings.end(), [](const auto& a, const auto& b) {
         return std::make_tuple(a.kind == BindingKind::PushConstants, a.set, a.binding, a.name) <
