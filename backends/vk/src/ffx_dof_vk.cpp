@@ -169,7 +169,8 @@ private:
 class BackendVK final : public FfxDofBackend_T {
 public:
     ~BackendVK() override {
-        fn.vkDestroySampler(device, sampler, allocator);
+        // After a failed init the objects (and even the functions) may be missing.
+        if (sampler) fn.vkDestroySampler(device, sampler, allocator);
         if (ownsPipelineCache) fn.vkDestroyPipelineCache(device, pipelineCache, allocator);
     }
 

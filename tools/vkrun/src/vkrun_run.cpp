@@ -219,7 +219,11 @@ RunResult runEffect(Device& device, const HostImage& color, const HostImage& dep
         VK_IMAGE_USAGE_SAMPLED_BIT | transfers | (settings.inPlace ? VK_IMAGE_USAGE_STORAGE_BIT : 0);
     GpuImage colorImage(device, width, height, settings.colorFormat, colorUsage,
                         createFlagsFor(settings.colorFormat, settings.inPlace));
-    GpuImage depthImage(device, width, height, settings.depthFormat, VK_IMAGE_USAGE_SAMPLED_BIT | transfers);
+    // A depth buffer is a depth attachment (which its read-only depth layouts require).
+    const VkImageUsageFlags depthUsage =
+        VK_IMAGE_USAGE_SAMPLED_BIT | transfers |
+        (isDepthAspect(settings.depthFormat) ? VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT : 0);
+    GpuImage depthImage(device, width, height, settings.depthFormat, depthUsage);
     std::unique_ptr<GpuImage> outputImage;
     if (!settings.inPlace) {
         outputImage = std::make_unique<GpuImage>(device, width, height, settings.outputFormat,
@@ -278,11 +282,12 @@ RunResult runEffect(Device& device, const HostImage& color, const HostImage& dep
     }
 
     FfxDofDispatchDescription dispatch{};
-    dispatch.color = ffxDofGetResourceVK(colorImage.image(), settings.colorFormat, width, height, colorLayout, 0);
+    // In place, the color image is the (mutable, for sRGB) output image.
+    dispatch.color = ffxDofGetResourceVK(colorImage.image(), settings.colorFormat, width, height, colorLayout,
+                                         settings.inPlace ? outputFlags : 0u);
     dispatch.depth = ffxDofGetResourceVK(depthImage.image(), settings.depthFormat, width, height, depthLayout, 0);
-    dispatch.output =
-        ffxDofGetResourceVK(result.image(), settings.outputFormat, width, height,
-                            settings.inPlace ? colorLayout : outputLayout, settings.inPlace ? 0u : outputFlags);
+    dispatch.output = ffxDofGetResourceVK(result.image(), settings.outputFormat, width, height,
+                                          settings.inPlace ? colorLayout : outputLayout, outputFlags);
     dispatch.cocScale = settings.cocScale;
     dispatch.cocBias = settings.cocBias;
 

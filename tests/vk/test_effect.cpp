@@ -1,0 +1,221 @@
+// The whole effect on a Vulkan device (lavapipe in CI) through vkrun and the public API, with the
+// validation layer and synchronization validation on.
+//
+// Tolerances (documented in docs/integration-vulkan.md):
+//   16-bit vs 32-bit shaders, same scene:        PSNR >= kHalfPsnr dB, max |diff| <= kHalfMaxAbs
+//   HLSL- vs GLSL-compiled SPIR-V:               PSNR >= kHlslPsnr dB
+//   zero CoC (or cocLimitFactor 0) vs input:     max |diff| <= kIdentityMaxAbs (32-bit formats)
+//   reversed vs standard depth, same scene:      max |diff| <= kReverseMaxAbs
+#include "vk_test_support.h"
+
+using namespace ffxdof;
+using namespace ffxdof::vktest;
+
+namespace {
+
+constexpr double kHalfPsnr = 35.0;
+constexpr double kHalfMaxAbs = 0.5;  // single pixels near bright highlights (values up to 8)
+constexpr double kHlslPsnr = 40.0;
+constexpr double kIdentityMaxAbs = 1e-3;
+constexpr double kReverseMaxAbs = 1e-3;
+
+vkrun::RunResult run(const Scene& scene, const vkrun::RunSettings& settings) {
+    vkrun::Device& device = validatedDevice();
+    vkrun::RunResult result = vkrun::runEffect(device, scene.color, scene.depth, settings);
+    requireNoValidationMessages(device);
+    REQUIRE(result.output.width == scene.color.width);
+    REQUIRE(result.output.height == scene.color.height);
+    REQUIRE(allFinite(result.output));
+    return result;
+}
+
+bool hlslAvailable() {
+    const Scene scene = makeScene(4, 4, 1.0f);
+    vkrun::RunSettings settings = settingsFor(scene);
+    settings.useHlsl = true;
+    try {
+        vkrun::runEffect(validatedDevice(), scene.color, scene.depth, settings);
+        return true;
+    } catch (const vkrun::Error& error) {
+        validatedDevice().clearValidationMessages();
+        if (error.code() == FFX_DOF_ERROR_UNSUPPORTED) return false;
+        throw;
+    }
+}
+
+}  // namespace
+
+TEST_CASE("the effect blurs the out-of-focus regions and keeps the focus band", "[vulkan]") {
+    const Scene scene = makeScene(128, 96, 6.0f);
+    const vkrun::RunResult result = run(scene, settingsFor(scene));
+    // The far checkerboard is smoothed: its local contrast drops well below the input's.
+    const auto contrast = [](const vkrun::HostImage& image, uint32_t y) {
+        double total = 0.0;
+        for (uint32_t x = 1; x < 40; ++x) total += std::abs(image.at(x, y)[1] - image.at(x - 1, y)[1]);
+        return total;
+    };
+    const uint32_t farRow = 90;
+    CHECK(contrast(result.output, farRow) < 0.5 * contrast(scene.color, farRow));
+    // A pixel deep inside the focus band is unchanged.
+    const float* in = scene.color.at(64, 24);
+    const float* out = result.output.at(64, 24);
+    for (int c = 0; c < 3; ++c) CHECK(std::abs(out[c] - in[c]) < 0.05f);
+}
+
+TEST_CASE("every permutation lavapipe can run gives a finite image; 16-bit matches 32-bit", "[vulkan]") {
+    const Scene standard = makeScene(96, 64, 5.0f);
+    const Scene reversed = makeScene(96, 64, 5.0f, true);
+    const bool hlsl = hlslAvailable();
+    const uint32_t flagSets[] = {0, FFX_DOF_REVERSE_DEPTH, FFX_DOF_OUTPUT_PRE_INIT, FFX_DOF_DISABLE_RING_MERGE,
+                                 FFX_DOF_REVERSE_DEPTH | FFX_DOF_OUTPUT_PRE_INIT | FFX_DOF_DISABLE_RING_MERGE};
+    for (uint32_t flags : flagSets) {
+        const Scene& scene = (flags & FFX_DOF_REVERSE_DEPTH) ? reversed : standard;
+        for (bool useHlsl : {false, true}) {
+            if (useHlsl && !hlsl) continue;
+            CAPTURE(flags, useHlsl);
+            vkrun::RunSettings settings = settingsFor(scene);
+            settings.contextFlags = flags;
+            settings.useHlsl = useHlsl;
+            settings.forceFloat32 = true;
+            const vkrun::RunResult full = run(scene, settings);
+            settings.forceFloat32 = false;
+            const vkrun::RunResult half = run(scene, settings);
+            const Difference d = difference(half.output, full.output);
+            CAPTURE(d.maxAbs, d.meanAbs, d.psnr);
+            CHECK(d.psnr >= kHalfPsnr);
+            CHECK(d.maxAbs <= kHalfMaxAbs);
+            if (useHlsl) {
+                settings.useHlsl = false;
+                const Difference vsGlsl = difference(run(scene, settings).output, half.output);
+                CAPTURE(vsGlsl.maxAbs, vsGlsl.psnr);
+                CHECK(vsGlsl.psnr >= kHlslPsnr);
+            }
+        }
+    }
+}
+
+TEST_CASE("resolutions from 1x1 to 4096 wide", "[vulkan]") {
+    const struct { uint32_t width, height; } sizes[] = {{1, 1}, {7, 5}, {641, 479}, {1920, 1080}, {4096, 64}};
+    for (const auto& size : sizes) {
+        CAPTURE(size.width, size.height);
+        const Scene scene = makeScene(size.width, size.height, 4.0f);
+        vkrun::RunSettings settings = settingsFor(scene);
+        settings.quality = size.width * size.height > 100000 ? 1 : 2;
+        settings.colorFormat = settings.outputFormat = VK_FORMAT_R16G16B16A16_SFLOAT;
+        const vkrun::RunResult result = run(scene, settings);
+        if (size.width == 1920) {
+            // Budget for the internal images at 1080p (resource table formats).
+            CHECK(result.internalMemoryBytes > 0);
+            CHECK(result.internalMemoryBytes <= 10u * 1000u * 1000u);
+        }
+    }
+}
+
+TEST_CASE("quality from 1 to the maximum", "[vulkan]") {
+    const Scene scene = makeScene(32, 24, 8.0f);
+    for (uint32_t quality = 1; quality <= FFX_DOF_MAX_QUALITY; quality += (quality < 4 ? 1 : 7)) {
+        CAPTURE(quality);
+        vkrun::RunSettings settings = settingsFor(scene);
+        settings.quality = quality;
+        run(scene, settings);
+    }
+    vkrun::RunSettings settings = settingsFor(scene);
+    settings.quality = FFX_DOF_MAX_QUALITY;
+    run(scene, settings);
+}
+
+TEST_CASE("cocLimitFactor 0 returns the input; a very large limit still works", "[vulkan]") {
+    const Scene scene = makeScene(64, 48, 6.0f);
+    vkrun::RunSettings settings = settingsFor(scene);
+    settings.cocLimitFactor = 0.0f;
+    const Difference d = difference(run(scene, settings).output, scene.color);
+    CAPTURE(d.maxAbs);
+    CHECK(d.maxAbs <= kIdentityMaxAbs);
+
+    settings.cocLimitFactor = 1000.0f;
+    Scene wide = makeScene(64, 48, 200.0f);
+    settings.cocScale = wide.cocScale;
+    settings.cocBias = wide.cocBias;
+    run(wide, settings);
+}
+
+TEST_CASE("zero CoC everywhere returns the input", "[vulkan]") {
+    Scene scene = makeScene(80, 60, 6.0f);
+    scene.cocScale = 0.0f;
+    scene.cocBias = 0.0f;
+    const Difference d = difference(run(scene, settingsFor(scene)).output, scene.color);
+    CAPTURE(d.maxAbs);
+    CHECK(d.maxAbs <= kIdentityMaxAbs);
+}
+
+TEST_CASE("reversed depth gives the same image as standard depth", "[vulkan]") {
+    const Scene standard = makeScene(96, 64, 5.0f);
+    const Scene reversed = makeScene(96, 64, 5.0f, true);
+    const vkrun::RunResult a = run(standard, settingsFor(standard));
+    vkrun::RunSettings settings = settingsFor(reversed);
+    settings.contextFlags = FFX_DOF_REVERSE_DEPTH;
+    const vkrun::RunResult b = run(reversed, settings);
+    const Difference d = difference(a.output, b.output);
+    CAPTURE(d.maxAbs, d.psnr);
+    CHECK(d.maxAbs <= kReverseMaxAbs);
+}
+
+TEST_CASE("in place gives the same image as a separate pre-initialised output", "[vulkan]") {
+    const Scene scene = makeScene(96, 64, 5.0f);
+    vkrun::RunSettings settings = settingsFor(scene);
+    settings.contextFlags = FFX_DOF_OUTPUT_PRE_INIT;
+    const vkrun::RunResult separate = run(scene, settings);
+    settings.inPlace = true;
+    const vkrun::RunResult inPlace = run(scene, settings);
+    CHECK(difference(separate.output, inPlace.output).maxAbs == 0.0);
+}
+
+TEST_CASE("every color and depth format", "[vulkan]") {
+    const Scene scene = makeScene(48, 40, 4.0f);
+    const vkrun::RunResult reference = run(scene, settingsFor(scene));
+    const struct {
+        VkFormat format;
+        double maxAbs;  // quantisation of the format on this scene (8-bit: values clamp to [0, 1])
+    } colors[] = {{VK_FORMAT_R16G16B16A16_SFLOAT, 0.02},
+                  {VK_FORMAT_R32G32B32A32_SFLOAT, 0.0},
+                  {VK_FORMAT_B10G11R11_UFLOAT_PACK32, 0.1},
+                  {VK_FORMAT_R8G8B8A8_UNORM, 8.0},
+                  {VK_FORMAT_R8G8B8A8_SRGB, 8.0}};
+    for (const auto& color : colors) {
+        CAPTURE(vkrun::formatName(color.format));
+        vkrun::RunSettings settings = settingsFor(scene);
+        settings.colorFormat = settings.outputFormat = color.format;
+        const Difference d = difference(run(scene, settings).output, reference.output);
+        CAPTURE(d.maxAbs, d.psnr);
+        CHECK(d.maxAbs <= color.maxAbs);
+        settings.inPlace = true;  // also written in place, through the storage view
+        run(scene, settings);
+    }
+    for (VkFormat depthFormat :
+         {VK_FORMAT_D32_SFLOAT, VK_FORMAT_D24_UNORM_S8_UINT, VK_FORMAT_D16_UNORM, VK_FORMAT_R32_SFLOAT}) {
+        CAPTURE(vkrun::formatName(depthFormat));
+        vkrun::RunSettings settings = settingsFor(scene);
+        settings.depthFormat = depthFormat;
+        const Difference d = difference(run(scene, settings).output, reference.output);
+        CAPTURE(d.maxAbs, d.psnr);
+        // Depth quantisation moves CoC radii by at most 2 R / 2^16 px: far below a visible change.
+        CHECK(d.psnr >= 40.0);
+    }
+}
+
+TEST_CASE("timestamps and memory are reported; the copy pass runs", "[vulkan]") {
+    const Scene scene = makeScene(64, 64, 4.0f);
+    vkrun::RunSettings settings = settingsFor(scene);
+    settings.repeat = 3;
+    settings.measureCopyPass = true;
+    const vkrun::RunResult result = run(scene, settings);
+    double sum = 0.0;
+    for (double ms : result.passMilliseconds) {
+        CHECK(ms >= 0.0);
+        sum += ms;
+    }
+    CHECK(result.totalMilliseconds > 0.0);
+    CHECK(sum == Approx(result.totalMilliseconds).epsilon(0.5));
+    CHECK(result.copyPassMilliseconds >= 0.0);
+    CHECK(result.internalMemoryBytes >= result.aliasableMemoryBytes);
+}

@@ -1,0 +1,266 @@
+// Backend and context lifetime, leaks, and the errors for invalid engine resources, through the
+// public API on a validated device.
+#include "vk_test_support.h"
+
+#include <atomic>
+#include <cstdlib>
+#include <cstring>
+#include <mutex>
+#include <unordered_map>
+
+using namespace ffxdof;
+using namespace ffxdof::vktest;
+
+namespace {
+
+// Allocation callbacks that count live allocations: every object the backend creates goes
+// through them, so a leak shows as a count that does not return to zero.
+struct CountingAllocator {
+    std::mutex mutex;
+    std::unordered_map<void*, size_t> live;
+    size_t total = 0;
+
+    static void* VKAPI_CALL allocate(void* user, size_t size, size_t alignment, VkSystemAllocationScope) {
+        void* p = std::aligned_alloc(alignment, (size + alignment - 1) / alignment * alignment);
+        if (p) {
+            auto* self = static_cast<CountingAllocator*>(user);
+            std::lock_guard<std::mutex> lock(self->mutex);
+            self->live[p] = size;
+            ++self->total;
+        }
+        return p;
+    }
+    static void* VKAPI_CALL reallocate(void* user, void* original, size_t size, size_t alignment,
+                                       VkSystemAllocationScope scope) {
+        if (!original) return allocate(user, size, alignment, scope);
+        if (size == 0) {
+            release(user, original);
+            return nullptr;
+        }
+        auto* self = static_cast<CountingAllocator*>(user);
+        size_t oldSize;
+        {
+            std::lock_guard<std::mutex> lock(self->mutex);
+            oldSize = self->live.at(original);
+        }
+        void* p = allocate(user, size, alignment, scope);
+        if (p) {
+            std::memcpy(p, original, std::min(oldSize, size));
+            release(user, original);
+        }
+        return p;
+    }
+    static void VKAPI_CALL release(void* user, void* memory) {
+        if (!memory) return;
+        auto* self = static_cast<CountingAllocator*>(user);
+        {
+            std::lock_guard<std::mutex> lock(self->mutex);
+            self->live.erase(memory);
+        }
+        std::free(memory);
+    }
+    VkAllocationCallbacks callbacks() {
+        VkAllocationCallbacks result{};
+        result.pUserData = this;
+        result.pfnAllocation = &allocate;
+        result.pfnReallocation = &reallocate;
+        result.pfnFree = &release;
+        return result;
+    }
+    size_t liveCount() {
+        std::lock_guard<std::mutex> lock(mutex);
+        return live.size();
+    }
+};
+
+// The engine side of a raw-API test: images in the layouts an engine would declare.
+struct EngineImages {
+    vkrun::GpuImage color, depth, output;
+    EngineImages(vkrun::Device& device, const Scene& scene, VkFormat colorFormat = VK_FORMAT_R16G16B16A16_SFLOAT)
+        : color(device, scene.color.width, scene.color.height, colorFormat,
+                VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT),
+          depth(device, scene.color.width, scene.color.height, VK_FORMAT_D32_SFLOAT,
+                VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT |
+                    VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT),
+          output(device, scene.color.width, scene.color.height, VK_FORMAT_R16G16B16A16_SFLOAT,
+                 VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT) {
+        color.upload(scene.color, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);
+        depth.upload(scene.depth, VK_IMAGE_LAYOUT_DEPTH_STENCIL_READ_ONLY_OPTIMAL);
+        output.upload(scene.color, VK_IMAGE_LAYOUT_GENERAL);
+    }
+    FfxDofDispatchDescription dispatch(const Scene& scene) const {
+        FfxDofDispatchDescription d{};
+        d.color = ffxDofGetResourceVK(color.image(), color.format(), color.width(), color.height(),
+                                      VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, 0);
+        d.depth = ffxDofGetResourceVK(depth.image(), depth.format(), depth.width(), depth.height(),
+                                      VK_IMAGE_LAYOUT_DEPTH_STENCIL_READ_ONLY_OPTIMAL, 0);
+        d.output = ffxDofGetResourceVK(output.image(), output.format(), output.width(), output.height(),
+                                       VK_IMAGE_LAYOUT_GENERAL, 0);
+        d.cocScale = scene.cocScale;
+        d.cocBias = scene.cocBias;
+        return d;
+    }
+};
+
+FfxDofContextDescription contextDescription(FfxDofBackend backend, uint32_t width, uint32_t height) {
+    FfxDofContextDescription description{};
+    description.quality = 3;
+    description.resolution = {width, height};
+    description.backendInterface = backend;
+    description.cocLimitFactor = 0.05f;
+    return description;
+}
+
+// Records one dispatch, submits it (even on failure, to free the command buffer) and returns its code.
+FfxDofErrorCode dispatchOnce(vkrun::Device& device, FfxDofContext* context, FfxDofDispatchDescription description) {
+    VkCommandBuffer commandBuffer = device.beginCommands();
+    description.commandList = ffxDofGetCommandListVK(commandBuffer);
+    const FfxDofErrorCode code = ffxDofContextDispatch(context, &description);
+    device.endSubmitAndWait(commandBuffer);
+    return code;
+}
+
+}  // namespace
+
+TEST_CASE("200 create/dispatch/destroy cycles leak nothing", "[vulkan]") {
+    vkrun::Device& device = validatedDevice();
+    const Scene scene = makeScene(24, 16, 3.0f);
+    EngineImages images(device, scene);
+    CountingAllocator counter;
+    const VkAllocationCallbacks callbacks = counter.callbacks();
+
+    for (int cycle = 0; cycle < 200; ++cycle) {
+        FfxDofBackendDescriptionVK description = device.backendDescription();
+        description.allocationCallbacks = &callbacks;
+        description.maxFramesInFlight = 2;
+        FfxDofBackend backend = nullptr;
+        REQUIRE(ffxDofBackendCreateVK(&description, &backend) == FFX_DOF_OK);
+        FfxDofContextDescription contextInfo = contextDescription(backend, 24, 16);
+        FfxDofContext context = nullptr;
+        REQUIRE(ffxDofContextCreate(&context, &contextInfo) == FFX_DOF_OK);
+        // Three dispatches wrap the two-slot descriptor ring (views are destroyed and remade).
+        for (int frame = 0; frame < (cycle % 4 == 0 ? 3 : 1); ++frame) {
+            REQUIRE(dispatchOnce(device, &context, images.dispatch(scene)) == FFX_DOF_OK);
+        }
+        REQUIRE(ffxDofBackendDestroy(backend) == FFX_DOF_ERROR_BACKEND_IN_USE);
+        REQUIRE(ffxDofContextDestroy(&context) == FFX_DOF_OK);
+        REQUIRE(context == nullptr);
+        REQUIRE(ffxDofBackendDestroy(backend) == FFX_DOF_OK);
+        REQUIRE(counter.liveCount() == 0);
+    }
+    CHECK(counter.total > 0);  // the callbacks were used at all
+    requireNoValidationMessages(device);
+}
+
+TEST_CASE("invalid engine resources give specific errors", "[vulkan]") {
+    vkrun::Device& device = validatedDevice();
+    const Scene scene = makeScene(32, 16, 3.0f);
+    EngineImages images(device, scene);
+    FfxDofBackendDescriptionVK backendInfo = device.backendDescription();
+    FfxDofBackend backend = nullptr;
+    REQUIRE(ffxDofBackendCreateVK(&backendInfo, &backend) == FFX_DOF_OK);
+    FfxDofContextDescription contextInfo = contextDescription(backend, 32, 16);
+    FfxDofContext context = nullptr;
+    REQUIRE(ffxDofContextCreate(&context, &contextInfo) == FFX_DOF_OK);
+
+    const auto expectError = [&](FfxDofDispatchDescription description, FfxDofErrorCode expected,
+                                 const char* messagePart) {
+        const FfxDofErrorCode code = dispatchOnce(device, &context, description);
+        CAPTURE(ffxDofGetLastErrorMessage());
+        CHECK(code == expected);
+        CHECK(std::string(ffxDofGetLastErrorMessage()).find(messagePart) != std::string::npos);
+    };
+    const FfxDofDispatchDescription valid = images.dispatch(scene);
+
+    SECTION("null image") {
+        FfxDofDispatchDescription d = valid;
+        d.depth.handle = 0;
+        expectError(d, FFX_DOF_ERROR_INVALID_RESOURCE, "depth");
+    }
+    SECTION("wrong size") {
+        FfxDofDispatchDescription d = valid;
+        d.output.width = 31;
+        expectError(d, FFX_DOF_ERROR_INVALID_RESOURCE, "output");
+    }
+    SECTION("unsupported color format") {
+        FfxDofDispatchDescription d = valid;
+        d.color.format = VK_FORMAT_R8_UNORM;
+        expectError(d, FFX_DOF_ERROR_INVALID_RESOURCE, "VK_FORMAT_R8_UNORM");
+    }
+    SECTION("unsupported depth format") {
+        FfxDofDispatchDescription d = valid;
+        d.depth.format = VK_FORMAT_D32_SFLOAT_S8_UINT;
+        expectError(d, FFX_DOF_ERROR_INVALID_RESOURCE, "depth format");
+    }
+    SECTION("sRGB output without a mutable image") {
+        FfxDofDispatchDescription d = valid;
+        d.output.format = VK_FORMAT_R8G8B8A8_SRGB;
+        expectError(d, FFX_DOF_ERROR_INVALID_RESOURCE, "MUTABLE_FORMAT");
+    }
+    SECTION("undefined layout") {
+        FfxDofDispatchDescription d = valid;
+        d.color.state = VK_IMAGE_LAYOUT_UNDEFINED;
+        expectError(d, FFX_DOF_ERROR_INVALID_RESOURCE, "VK_IMAGE_LAYOUT_UNDEFINED");
+    }
+    SECTION("unknown resource flags") {
+        FfxDofDispatchDescription d = valid;
+        d.output.flags = 0x80;
+        expectError(d, FFX_DOF_ERROR_INVALID_RESOURCE, "flags");
+    }
+    SECTION("output is color without PRE_INIT") {
+        FfxDofDispatchDescription d = valid;
+        d.output = d.color;
+        const FfxDofErrorCode code = dispatchOnce(device, &context, d);
+        CHECK(code == FFX_DOF_ERROR_OUTPUT_ALIASES_INPUT);
+    }
+    SECTION("the valid description still works after errors") {
+        CHECK(dispatchOnce(device, &context, valid) == FFX_DOF_OK);
+    }
+
+    REQUIRE(ffxDofContextDestroy(&context) == FFX_DOF_OK);
+    REQUIRE(ffxDofBackendDestroy(backend) == FFX_DOF_OK);
+    requireNoValidationMessages(device);
+}
+
+TEST_CASE("backend creation checks its description", "[vulkan]") {
+    vkrun::Device& device = validatedDevice();
+    FfxDofBackend backend = reinterpret_cast<FfxDofBackend>(uintptr_t(1));
+    CHECK(ffxDofBackendCreateVK(nullptr, &backend) == FFX_DOF_ERROR_INVALID_POINTER);
+    CHECK(backend == nullptr);
+    FfxDofBackendDescriptionVK description = device.backendDescription();
+    CHECK(ffxDofBackendCreateVK(&description, nullptr) == FFX_DOF_ERROR_INVALID_POINTER);
+
+    FfxDofBackendDescriptionVK noDevice = description;
+    noDevice.device = VK_NULL_HANDLE;
+    CHECK(ffxDofBackendCreateVK(&noDevice, &backend) == FFX_DOF_ERROR_INVALID_POINTER);
+    FfxDofBackendDescriptionVK noLoader = description;
+    noLoader.vkGetDeviceProcAddr = nullptr;
+    CHECK(ffxDofBackendCreateVK(&noLoader, &backend) == FFX_DOF_ERROR_INVALID_POINTER);
+    FfxDofBackendDescriptionVK badFlags = description;
+    badFlags.flags = 0x100;
+    CHECK(ffxDofBackendCreateVK(&badFlags, &backend) == FFX_DOF_ERROR_INVALID_FLAGS);
+    FfxDofBackendDescriptionVK tooManyFrames = description;
+    tooManyFrames.maxFramesInFlight = 1000;
+    CHECK(ffxDofBackendCreateVK(&tooManyFrames, &backend) == FFX_DOF_ERROR_INVALID_ARGUMENT);
+    CHECK(backend == nullptr);
+
+    // A context on the engine's pipeline cache works too.
+    VkPipelineCacheCreateInfo cacheInfo{};
+    cacheInfo.sType = VK_STRUCTURE_TYPE_PIPELINE_CACHE_CREATE_INFO;
+    VkPipelineCache cache = VK_NULL_HANDLE;
+    REQUIRE(vkCreatePipelineCache(device.device(), &cacheInfo, nullptr, &cache) == VK_SUCCESS);
+    description.pipelineCache = cache;
+    REQUIRE(ffxDofBackendCreateVK(&description, &backend) == FFX_DOF_OK);
+    FfxDofContextDescription contextInfo = contextDescription(backend, 16, 16);
+    FfxDofContext context = nullptr;
+    REQUIRE(ffxDofContextCreate(&context, &contextInfo) == FFX_DOF_OK);
+    size_t cacheBytes = 0;
+    REQUIRE(vkGetPipelineCacheData(device.device(), cache, &cacheBytes, nullptr) == VK_SUCCESS);
+    CHECK(cacheBytes > 0);
+    CHECK(ffxDofContextSetTimestampQueriesVK(nullptr, VK_NULL_HANDLE, 0) == FFX_DOF_ERROR_INVALID_POINTER);
+    REQUIRE(ffxDofContextDestroy(&context) == FFX_DOF_OK);
+    CHECK(ffxDofContextSetTimestampQueriesVK(&context, VK_NULL_HANDLE, 0) == FFX_DOF_ERROR_INVALID_CONTEXT);
+    REQUIRE(ffxDofBackendDestroy(backend) == FFX_DOF_OK);
+    vkDestroyPipelineCache(device.device(), cache, nullptr);
+    requireNoValidationMessages(device);
+}
