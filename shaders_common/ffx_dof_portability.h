@@ -218,8 +218,9 @@ using glm::sqrt;
 #define FFX_DOF_OUT(type) type&
 #define FFX_DOF_INOUT(type) type&
 #define FFX_DOF_STATIC_CONST static const
-// One workgroup runs at a time on the CPU (see tests/shaders), so group-shared memory is a global.
-#define FFX_DOF_GROUPSHARED static
+// One workgroup runs at a time on the CPU (see tests/shaders), so group-shared memory is a global
+// (an inline variable: one instance however many translation units include the pass).
+#define FFX_DOF_GROUPSHARED inline
 #define FFX_DOF_UNROLL
 #define FFX_DOF_LOOP
 

@@ -1,0 +1,304 @@
+// Unit tests of the pure functions of shaders_common/ffx_dof_common.h through the C++ mapping.
+// Every expectation is computed independently of the function under test (formula, brute force,
+// numerical integration or a standard-library algorithm).
+#include <catch2/catch.hpp>
+
+#include "ffx_dof_common.h"
+
+#include <algorithm>
+#include <cmath>
+#include <random>
+#include <vector>
+
+namespace {
+constexpr float kPi = 3.14159265358979f;
+}
+
+TEST_CASE("CoC from depth is the affine map, clamped to the limit", "[coc]") {
+    std::mt19937 rng(7);
+    std::uniform_real_distribution<float> any(-50.0f, 50.0f);
+    std::uniform_real_distribution<float> depth(0.0f, 1.0f);
+    for (int i = 0; i < 1000; ++i) {
+        float scale = any(rng), bias = any(rng), limit = std::fabs(any(rng)), d = depth(rng);
+        float expected = std::min(std::max(d * scale + bias, -limit), limit);
+        REQUIRE(ffxDofCocFromDepth(d, scale, bias, limit) == Approx(expected).margin(1e-5));
+    }
+    CHECK(ffxDofCocFromDepth(0.5f, 10.0f, 0.0f, 2.0f) == 2.0f);
+    CHECK(ffxDofCocFromDepth(0.5f, -10.0f, 0.0f, 2.0f) == -2.0f);
+}
+
+TEST_CASE("Nearer and farther depth follow the depth convention", "[coc]") {
+    // Standard depth (FFX_DOF_OPTION_REVERSE_DEPTH 0 in this translation unit): smaller is nearer.
+    CHECK(ffxDofNearerDepth(0.2f, 0.7f) == 0.2f);
+    CHECK(ffxDofFartherDepth(0.2f, 0.7f) == 0.7f);
+}
+
+TEST_CASE("Bilateral weight: 1 for equal radii, 0 beyond one pixel of difference", "[downsample]") {
+    CHECK(ffxDofBilateralWeight(3.0f, 3.0f) == 1.0f);
+    CHECK(ffxDofBilateralWeight(3.0f, 3.25f) == Approx(0.75f));
+    CHECK(ffxDofBilateralWeight(3.0f, 2.5f) == Approx(0.5f));
+    CHECK(ffxDofBilateralWeight(3.0f, 4.0f) == 0.0f);
+    CHECK(ffxDofBilateralWeight(-3.0f, 5.0f) == 0.0f);
+}
+
+TEST_CASE("Bilateral reduce averages equal radii and drops outliers", "[downsample]") {
+    FfxFloat32x3 color;
+    float coc;
+    ffxDofBilateralReduce(FfxFloat32x3(1, 0, 0), FfxFloat32x3(0, 1, 0), FfxFloat32x3(0, 0, 1), FfxFloat32x3(1, 1, 1),
+                          2.0f, 2.0f, 2.0f, 2.0f, color, coc);
+    CHECK(color.x == Approx(0.5f));
+    CHECK(color.y == Approx(0.5f));
+    CHECK(color.z == Approx(0.5f));
+    CHECK(coc == Approx(2.0f));
+    // The bottom-right pixel differs by 5 px of radius from the top-left: weight 0.
+    ffxDofBilateralReduce(FfxFloat32x3(1, 1, 1), FfxFloat32x3(1, 1, 1), FfxFloat32x3(1, 1, 1), FfxFloat32x3(9, 9, 9),
+                          -3.0f, -3.0f, -3.0f, 2.0f, color, coc);
+    CHECK(color.x == Approx(1.0f));
+    CHECK(coc == Approx(-3.0f));
+}
+
+TEST_CASE("Ring geometry: counts, circularity, even spacing", "[kernel]") {
+    CHECK(ffxDofRingSampleCount(0) == 1u);
+    CHECK(ffxDofRingSamplePosition(0, 0) == FfxFloat32x2(0.0f, 0.0f));
+    for (uint32_t ring = 1; ring <= 32; ++ring) {
+        uint32_t count = ffxDofRingSampleCount(ring);
+        // About one sample per unit of circumference (2 * pi * ring / count near 1).
+        CHECK(2.0f * kPi * float(ring) / float(count) == Approx(1.047f).epsilon(0.01));
+        FfxFloat32x2 sum(0.0f);
+        std::vector<float> angles;
+        for (uint32_t j = 0; j < count; ++j) {
+            FfxFloat32x2 p = ffxDofRingSamplePosition(ring, j);
+            REQUIRE(std::hypot(p.x, p.y) == Approx(float(ring)).epsilon(1e-5));
+            sum += p;
+            angles.push_back(std::atan2(p.y, p.x));
+        }
+        // Centred and evenly spaced: the positions sum to zero and every angular gap is equal.
+        CHECK(std::hypot(sum.x, sum.y) < 1e-3f * float(ring * count));
+        std::sort(angles.begin(), angles.end());
+        angles.push_back(angles.front() + 2.0f * kPi);
+        for (size_t j = 1; j < angles.size(); ++j)
+            REQUIRE(angles[j] - angles[j - 1] == Approx(2.0f * kPi / float(count)).epsilon(1e-3));
+    }
+    // Odd rings are turned by half a sample relative to even ones.
+    CHECK(std::atan2(ffxDofRingSamplePosition(1, 0).y, ffxDofRingSamplePosition(1, 0).x) ==
+          Approx(kPi / 6.0f));
+    CHECK(ffxDofRingSamplePosition(2, 0).y == Approx(0.0f).margin(1e-6));
+}
+
+TEST_CASE("Ring count follows the radius, capped by quality and the compile-time bound", "[kernel]") {
+    CHECK(ffxDofRingCount(0.0f, 10) == 0u);
+    CHECK(ffxDofRingCount(0.49f, 10) == 0u);
+    CHECK(ffxDofRingCount(0.5f, 10) == 1u);
+    CHECK(ffxDofRingCount(3.2f, 10) == 4u);
+    CHECK(ffxDofRingCount(30.0f, 10) == 10u);
+    CHECK(ffxDofRingCount(30.0f, 0) == 1u);
+    CHECK(ffxDofRingCount(1000.0f, 1000) == uint32_t(FFX_DOF_OPTION_MAX_RINGS));
+}
+
+TEST_CASE("MIP level for a sample spacing", "[kernel]") {
+    CHECK(ffxDofMipForSpacing(0.6f) == 0.0f);
+    CHECK(ffxDofMipForSpacing(1.0f) == 0.0f);
+    CHECK(ffxDofMipForSpacing(1.99f) == 0.0f);
+    CHECK(ffxDofMipForSpacing(2.0f) == 1.0f);
+    CHECK(ffxDofMipForSpacing(5.0f) == 2.0f);
+    CHECK(ffxDofMipForSpacing(100.0f) == float(FFX_DOF_OPTION_MAX_MIP - 1));
+}
+
+TEST_CASE("MIP sizes follow the Vulkan rule", "[tiles]") {
+    CHECK(ffxDofMipSize(FfxUInt32x2(961, 540), 0) == FfxUInt32x2(961, 540));
+    CHECK(ffxDofMipSize(FfxUInt32x2(961, 540), 1) == FfxUInt32x2(480, 270));
+    CHECK(ffxDofMipSize(FfxUInt32x2(5, 1), 3) == FfxUInt32x2(1, 1));
+}
+
+TEST_CASE("Local coordinates cover the 8 x 8 group once", "[tiles]") {
+    std::vector<int> seen(64, 0);
+    for (uint32_t i = 0; i < 64; ++i) {
+        FfxUInt32x2 c = ffxDofLocalCoord(i);
+        REQUIRE(c.x < 8u);
+        REQUIRE(c.y < 8u);
+        seen[c.y * 8 + c.x]++;
+    }
+    CHECK(std::all_of(seen.begin(), seen.end(), [](int n) { return n == 1; }));
+}
+
+TEST_CASE("Tile gap distance is the shortest pixel-centre distance between tiles", "[tiles]") {
+    const int t = FFX_DOF_TILE_SIZE;
+    for (int dy = -4; dy <= 4; ++dy) {
+        for (int dx = -4; dx <= 4; ++dx) {
+            float best = 1e30f;
+            for (int ay = 0; ay < t; ++ay)
+                for (int ax = 0; ax < t; ++ax)
+                    for (int by = 0; by < t; ++by)
+                        for (int bx = 0; bx < t; ++bx)
+                            best = std::min(best, std::hypot(float(dx * t + bx - ax), float(dy * t + by - ay)));
+            REQUIRE(ffxDofTileGapDistance(FfxInt32x2(dx, dy)) == Approx(best));
+        }
+    }
+}
+
+TEST_CASE("Dilation range covers the global radius and margin", "[tiles]") {
+    for (float r = 0.0f; r < 200.0f; r += 0.37f) {
+        int range = ffxDofDilateTileRange(r);
+        // The first tile beyond the range is out of reach of every radius up to r.
+        CHECK_FALSE(ffxDofTileReaches(r, ffxDofTileGapDistance(FfxInt32x2(range + 1, 0))));
+    }
+}
+
+TEST_CASE("Reach and area weight", "[gather]") {
+    CHECK(ffxDofReach(5.0f, 3.0f) == 1.0f);
+    CHECK(ffxDofReach(5.0f, 5.0f) == 0.5f);
+    CHECK(ffxDofReach(5.0f, 5.5f) == 0.0f);
+    CHECK(ffxDofAreaWeight(2.0f) == Approx(0.25f));
+    CHECK(ffxDofAreaWeight(0.1f) == Approx(4.0f));
+}
+
+TEST_CASE("Bucket merge: equal radii add, a nearer covering ring hides the outer rings", "[gather]") {
+    FfxDofBucket outer = ffxDofEmptyBucket();
+    ffxDofBucketAdd(outer, FfxFloat32x3(1, 0, 0), 10.0f, 1.0f, 1.0f);
+    outer.sampleCount = 1.0f;
+    FfxDofBucket inner = ffxDofEmptyBucket();
+    ffxDofBucketAdd(inner, FfxFloat32x3(0, 1, 0), 10.0f, 1.0f, 1.0f);
+    inner.sampleCount = 1.0f;
+    FfxDofBucket merged = ffxDofMergeBuckets(outer, inner, 1.0f);
+    CHECK(merged.weight == Approx(2.0f * ffxDofAreaWeight(10.0f)));
+    CHECK(merged.color.x / merged.weight == Approx(0.5f));
+
+    // Inner ring nearer (radius 4 < 10) and fully reaching: the outer bucket is hidden.
+    FfxDofBucket nearInner = ffxDofEmptyBucket();
+    ffxDofBucketAdd(nearInner, FfxFloat32x3(0, 1, 0), 4.0f, 1.0f, 1.0f);
+    nearInner.sampleCount = 1.0f;
+    merged = ffxDofMergeBuckets(outer, nearInner, 1.0f);
+    CHECK(merged.color.x == Approx(0.0f).margin(1e-6));
+    CHECK(merged.color.y / merged.weight == Approx(1.0f));
+
+    // Half coverage hides half; a farther inner ring hides nothing.
+    nearInner.sampleCount = 2.0f;
+    merged = ffxDofMergeBuckets(outer, nearInner, 1.0f);
+    CHECK(merged.color.x == Approx(0.5f * ffxDofAreaWeight(10.0f)));
+    FfxDofBucket farInner = ffxDofEmptyBucket();
+    ffxDofBucketAdd(farInner, FfxFloat32x3(0, 1, 0), 20.0f, 1.0f, 1.0f);
+    farInner.sampleCount = 1.0f;
+    merged = ffxDofMergeBuckets(outer, farInner, 1.0f);
+    CHECK(merged.color.x == Approx(ffxDofAreaWeight(10.0f)));
+}
+
+TEST_CASE("Near opacity of a uniform near field covering the kernel is 1", "[gather]") {
+    // Every sample of radius R reaches; R^2 * sum(1/R^2) / N = 1.
+    for (uint32_t rings = 1; rings <= 12; ++rings) {
+        float radius = float(rings) * 1.5f;
+        float samples = 0.0f, weight = 0.0f;
+        for (uint32_t r = 0; r <= rings; ++r) {
+            samples += float(ffxDofRingSampleCount(r));
+            weight += float(ffxDofRingSampleCount(r)) * ffxDofAreaWeight(radius);
+        }
+        CHECK(ffxDofNearOpacity(weight, radius, samples) == Approx(1.0f));
+        CHECK(ffxDofNearOpacity(weight * 0.5f, radius, samples) == Approx(0.5f));
+    }
+}
+
+TEST_CASE("Median of nine matches nth_element", "[postfilter]") {
+    std::mt19937 rng(11);
+    std::uniform_int_distribution<int> small(0, 4);  // many ties
+    std::uniform_real_distribution<float> any(-10.0f, 10.0f);
+    for (int trial = 0; trial < 20000; ++trial) {
+        float v[9];
+        for (float& x : v) x = trial % 2 ? any(rng) : float(small(rng));
+        std::vector<float> sorted(v, v + 9);
+        std::nth_element(sorted.begin(), sorted.begin() + 4, sorted.end());
+        REQUIRE(ffxDofMedian9(v[0], v[1], v[2], v[3], v[4], v[5], v[6], v[7], v[8]) == sorted[4]);
+    }
+}
+
+TEST_CASE("Median gain", "[postfilter]") {
+    CHECK(ffxDofMedianGain(2.0f, 1.0f) == Approx(0.5f));
+    CHECK(ffxDofMedianGain(1.0f, 1.5f) == Approx(1.5f));
+    CHECK(ffxDofMedianGain(1.0f, 100.0f) == Approx(FFX_DOF_MEDIAN_MAX_GAIN));
+    CHECK(ffxDofMedianGain(1.0f, 0.0f) == 1.0f);
+    CHECK(ffxDofMedianGain(0.0f, 1.0f) == 1.0f);
+}
+
+TEST_CASE("Cubic weight is flat at both ends", "[postfilter]") {
+    CHECK(ffxDofCubicWeight(0.0f) == 0.0f);
+    CHECK(ffxDofCubicWeight(1.0f) == 1.0f);
+    CHECK(ffxDofCubicWeight(0.5f) == Approx(0.5f));
+    CHECK(ffxDofCubicWeight(-1.0f) == 0.0f);
+    CHECK(ffxDofCubicWeight(2.0f) == 1.0f);
+    CHECK(ffxDofCubicWeight(0.01f) < 0.001f);
+    CHECK(ffxDofCubicWeight(0.99f) > 0.999f);
+    float previous = 0.0f;
+    for (float a = 0.01f; a <= 1.0f; a += 0.01f) {
+        REQUIRE(ffxDofCubicWeight(a) >= previous);
+        previous = ffxDofCubicWeight(a);
+    }
+}
+
+TEST_CASE("Fixed blur weights are the coverage of a 3 px disc", "[postfilter]") {
+    auto coverage = [](int cx, int cy) {
+        const int n = 400;
+        int inside = 0;
+        for (int i = 0; i < n; ++i)
+            for (int j = 0; j < n; ++j) {
+                float x = float(cx) - 0.5f + (float(i) + 0.5f) / n;
+                float y = float(cy) - 0.5f + (float(j) + 0.5f) / n;
+                inside += x * x + y * y <= 2.25f;
+            }
+        return float(inside) / float(n * n);
+    };
+    CHECK(ffxDofFixedBlurWeight(0, 0) == Approx(coverage(0, 0)).margin(0.005));
+    CHECK(ffxDofFixedBlurWeight(1, 0) == Approx(coverage(1, 0)).margin(0.005));
+    CHECK(ffxDofFixedBlurWeight(0, -1) == Approx(coverage(0, -1)).margin(0.005));
+    CHECK(ffxDofFixedBlurWeight(-1, 1) == Approx(coverage(-1, 1)).margin(0.005));
+}
+
+TEST_CASE("Upsample position maps full-res pixel centres into half-res texel space", "[upsample]") {
+    FfxInt32x2 topLeft;
+    FfxFloat32x2 f = ffxDofUpsamplePosition(FfxUInt32x2(0, 1), topLeft);
+    CHECK(topLeft == FfxInt32x2(-1, 0));
+    CHECK(f.x == Approx(0.75f));
+    CHECK(f.y == Approx(0.25f));
+    f = ffxDofUpsamplePosition(FfxUInt32x2(17, 30), topLeft);
+    CHECK(topLeft == FfxInt32x2(8, 14));
+    CHECK(f.x == Approx(0.25f));
+    CHECK(f.y == Approx(0.75f));
+}
+
+TEST_CASE("Upsample CoC weight favours matching radii", "[upsample]") {
+    CHECK(ffxDofUpsampleCocWeight(-30.0f, -30.0f) == 1.0f);
+    CHECK(ffxDofUpsampleCocWeight(-27.0f, -30.0f) == Approx(0.8f));
+    CHECK(ffxDofUpsampleCocWeight(0.0f, -30.0f) == Approx(1e-3f));
+    CHECK(ffxDofUpsampleCocWeight(0.5f, 0.0f) == Approx(0.5f));
+}
+
+TEST_CASE("Layer blend weights", "[composite]") {
+    CHECK(ffxDofFixedBlurBlend(0.4f, 0.0f) == 0.0f);
+    CHECK(ffxDofFixedBlurBlend(1.0f, 0.0f) == Approx(0.5f));
+    CHECK(ffxDofFixedBlurBlend(1.0f, 0.5f) == 0.0f);
+    CHECK(ffxDofFarBlend(1.0f, 1.0f) == 0.0f);
+    CHECK(ffxDofFarBlend(1.5f, 1.0f) == Approx(0.5f));
+    CHECK(ffxDofFarBlend(3.0f, 0.25f) == Approx(0.25f));
+}
+
+TEST_CASE("sRGB encoding", "[composite]") {
+    CHECK(ffxDofLinearToSrgb(0.0f) == 0.0f);
+    CHECK(ffxDofLinearToSrgb(1.0f) == Approx(1.0f));
+    CHECK(ffxDofLinearToSrgb(0.5f) == Approx(0.735357f).epsilon(1e-4));
+    CHECK(ffxDofLinearToSrgb(0.002f) == Approx(0.02584f));
+    // Round trip of every 8-bit code through the standard decode.
+    for (int code = 0; code < 256; ++code) {
+        float s = float(code) / 255.0f;
+        float linear = s <= 0.04045f ? s / 12.92f : std::pow((s + 0.055f) / 1.055f, 2.4f);
+        REQUIRE(std::lround(ffxDofLinearToSrgb(linear) * 255.0f) == code);
+    }
+}
+
+TEST_CASE("Kernel jitter stays sub-pixel and varies", "[kernel]") {
+    FfxFloat32x2 first = ffxDofKernelJitter(FfxUInt32x2(0, 0), 0);
+    bool varies = false;
+    for (uint32_t i = 0; i < 1000; ++i) {
+        FfxFloat32x2 j = ffxDofKernelJitter(FfxUInt32x2(i % 37, i / 37), i % 3);
+        REQUIRE(std::fabs(j.x) <= 0.5f * FFX_DOF_JITTER_AMPLITUDE);
+        REQUIRE(std::fabs(j.y) <= 0.5f * FFX_DOF_JITTER_AMPLITUDE);
+        varies = varies || j != first;
+    }
+    CHECK(varies);
+}

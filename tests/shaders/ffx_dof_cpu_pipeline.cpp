@@ -1,0 +1,195 @@
+// The CPU implementation of the accessors of every pass, and the workgroup runner.
+#include "ffx_dof_cpu_pipeline.h"
+
+#include "ffx_dof_downsample_depth.h"
+#include "ffx_dof_downsample_color.h"
+#include "ffx_dof_dilate.h"
+#include "ffx_dof_blur.h"
+#include "ffx_dof_composite.h"
+
+#include <algorithm>
+#include <atomic>
+#include <condition_variable>
+#include <functional>
+#include <mutex>
+#include <thread>
+
+namespace {
+
+template <typename T>
+struct Image {
+    uint32_t width = 0, height = 0;
+    std::vector<T> texels;
+    void resize(uint32_t w, uint32_t h) {
+        width = w;
+        height = h;
+        texels.assign(size_t(w) * h, T(0));
+    }
+    // Reads out of range are an error in the shaders' logic: they must clamp first.
+    const T& at(int32_t x, int32_t y) const {
+        if (x < 0 || y < 0 || uint32_t(x) >= width || uint32_t(y) >= height) throw std::out_of_range("image read");
+        return texels[size_t(y) * width + uint32_t(x)];
+    }
+    void store(uint32_t x, uint32_t y, const T& value) {
+        if (x >= width || y >= height) throw std::out_of_range("image write");
+        texels[size_t(y) * width + x] = value;
+    }
+};
+
+struct State {
+    FfxDofConstants constants{};
+    const ffxdoftest::Scene* scene = nullptr;
+    Image<glm::vec3> colorMips[FFX_DOF_OPTION_MAX_MIP];
+    Image<float> cocMips[FFX_DOF_OPTION_MAX_MIP];
+    Image<glm::vec2> tiles, dilatedTiles, layerAlpha;
+    Image<glm::vec3> nearColor, farColor;
+    Image<glm::vec4> output;
+    std::atomic<uint32_t> globals{0};
+};
+State* g_state = nullptr;
+
+// A reusable barrier for the invocations of one workgroup.
+class GroupBarrier {
+public:
+    void reset(uint32_t count) {
+        count_ = count;
+        waiting_ = 0;
+    }
+    void arrive() {
+        std::unique_lock<std::mutex> lock(mutex_);
+        uint64_t generation = generation_;
+        if (++waiting_ == count_) {
+            waiting_ = 0;
+            ++generation_;
+            wake_.notify_all();
+        } else {
+            wake_.wait(lock, [&] { return generation != generation_; });
+        }
+    }
+
+private:
+    std::mutex mutex_;
+    std::condition_variable wake_;
+    uint32_t count_ = 0, waiting_ = 0;
+    uint64_t generation_ = 0;
+};
+GroupBarrier g_barrier;
+
+void runGroups(uint32_t groupsX, uint32_t groupsY, const std::function<void(FfxUInt32x2, FfxUInt32)>& pass) {
+    for (uint32_t y = 0; y < groupsY; ++y) {
+        for (uint32_t x = 0; x < groupsX; ++x) {
+            g_barrier.reset(FFX_DOF_GROUP_THREADS);
+            std::vector<std::thread> invocations;
+            for (uint32_t i = 0; i < FFX_DOF_GROUP_THREADS; ++i)
+                invocations.emplace_back([&, i] { pass(FfxUInt32x2(x, y), i); });
+            for (std::thread& t : invocations) t.join();
+        }
+    }
+}
+
+uint32_t ceilDiv(uint32_t a, uint32_t b) { return (a + b - 1) / b; }
+
+}  // namespace
+
+// ---- Accessors -----------------------------------------------------------------------------------
+void ffxDofCpuGroupBarrier() { g_barrier.arrive(); }
+FfxDofConstants ffxDofGetConstants() { return g_state->constants; }
+FfxFloat32 ffxDofLoadInputDepth(FfxUInt32x2 p) {
+    if (p.x >= g_state->scene->width || p.y >= g_state->scene->height) throw std::out_of_range("depth read");
+    return g_state->scene->depth[size_t(p.y) * g_state->scene->width + p.x];
+}
+FfxFloat32x4 ffxDofLoadInputColor(FfxUInt32x2 p) {
+    if (p.x >= g_state->scene->width || p.y >= g_state->scene->height) throw std::out_of_range("color read");
+    return g_state->scene->color[size_t(p.y) * g_state->scene->width + p.x];
+}
+void ffxDofStoreTile(FfxUInt32x2 t, FfxFloat32x2 v) { g_state->tiles.store(t.x, t.y, v); }
+void ffxDofAtomicMaxGlobalRadius(FfxFloat32 r) {
+    uint32_t bits = ffxDofAsUInt(std::max(r, 0.0f));
+    uint32_t current = g_state->globals.load();
+    while (bits > current && !g_state->globals.compare_exchange_weak(current, bits)) {
+    }
+}
+void ffxDofStoreColorMip(FfxUInt32 mip, FfxUInt32x2 t, FfxDofFloat3 c) { g_state->colorMips[mip].store(t.x, t.y, c); }
+void ffxDofStoreCocMip(FfxUInt32 mip, FfxUInt32x2 t, FfxFloat32 c) { g_state->cocMips[mip].store(t.x, t.y, c); }
+FfxFloat32 ffxDofLoadGlobalMaxRadius() { return ffxDofAsFloat(g_state->globals.load()); }
+FfxFloat32x2 ffxDofLoadTile(FfxUInt32x2 t) { return g_state->tiles.at(int32_t(t.x), int32_t(t.y)); }
+void ffxDofStoreDilatedTile(FfxUInt32x2 t, FfxFloat32x2 v) { g_state->dilatedTiles.store(t.x, t.y, v); }
+FfxFloat32x2 ffxDofLoadDilatedTile(FfxUInt32x2 t) { return g_state->dilatedTiles.at(int32_t(t.x), int32_t(t.y)); }
+FfxDofFloat3 ffxDofLoadColorMip(FfxInt32x2 t, FfxUInt32 mip) { return g_state->colorMips[mip].at(t.x, t.y); }
+FfxFloat32 ffxDofLoadCocMip(FfxInt32x2 t, FfxUInt32 mip) { return g_state->cocMips[mip].at(t.x, t.y); }
+void ffxDofStoreNearColor(FfxUInt32x2 t, FfxDofFloat3 c) { g_state->nearColor.store(t.x, t.y, c); }
+void ffxDofStoreFarColor(FfxUInt32x2 t, FfxDofFloat3 c) { g_state->farColor.store(t.x, t.y, c); }
+void ffxDofStoreLayerAlpha(FfxUInt32x2 t, FfxFloat32x2 a) {
+    // LAYER_ALPHA is R8G8 UNORM: the values must already be in [0, 1].
+    if (a.x < 0.0f || a.x > 1.0f || a.y < 0.0f || a.y > 1.0f) throw std::range_error("layer alpha out of range");
+    g_state->layerAlpha.store(t.x, t.y, a);
+}
+FfxDofFloat3 ffxDofLoadNearColor(FfxInt32x2 t) { return g_state->nearColor.at(t.x, t.y); }
+FfxDofFloat3 ffxDofLoadFarColor(FfxInt32x2 t) { return g_state->farColor.at(t.x, t.y); }
+FfxFloat32x2 ffxDofLoadLayerAlpha(FfxInt32x2 t) { return g_state->layerAlpha.at(t.x, t.y); }
+void ffxDofStoreOutput(FfxUInt32x2 p, FfxFloat32x4 c) { g_state->output.store(p.x, p.y, c); }
+void ffxDofResetGlobals() { g_state->globals.store(0); }
+
+namespace ffxdoftest {
+
+std::vector<glm::vec4> runPipeline(const Scene& scene, const Settings& settings, Layers* layers) {
+    State state;
+    g_state = &state;
+    state.scene = &scene;
+    FfxDofConstants& k = state.constants;
+    k.cocScale = settings.cocScale;
+    k.cocBias = settings.cocBias;
+    k.cocLimit = settings.cocLimit;
+    k.maxRings = settings.maxRings;
+    k.fullSize = FfxUInt32x2(scene.width, scene.height);
+    k.halfSize = FfxUInt32x2(ceilDiv(scene.width, 2), ceilDiv(scene.height, 2));
+    k.tileCount = FfxUInt32x2(ceilDiv(k.halfSize.x, FFX_DOF_TILE_SIZE), ceilDiv(k.halfSize.y, FFX_DOF_TILE_SIZE));
+    k.halfTexelSize = 1.0f / FfxFloat32x2(k.halfSize);
+    k.fullTexelSize = 1.0f / FfxFloat32x2(k.fullSize);
+    k.frameIndex = settings.frameIndex;
+    k.outputFlags = 0;
+    for (uint32_t mip = 0; mip < FFX_DOF_OPTION_MAX_MIP; ++mip) {
+        FfxUInt32x2 size = ffxDofMipSize(k.halfSize, mip);
+        state.colorMips[mip].resize(size.x, size.y);
+        state.cocMips[mip].resize(size.x, size.y);
+    }
+    state.tiles.resize(k.tileCount.x, k.tileCount.y);
+    state.dilatedTiles.resize(k.tileCount.x, k.tileCount.y);
+    state.nearColor.resize(k.halfSize.x, k.halfSize.y);
+    state.farColor.resize(k.halfSize.x, k.halfSize.y);
+    state.layerAlpha.resize(k.halfSize.x, k.halfSize.y);
+    state.output.resize(scene.width, scene.height);
+
+    // Group counts from the dispatch geometry of ffx_dof_resources.h.
+    auto groups = [](uint32_t domain, uint32_t extent) { return ceilDiv(domain, extent); };
+    runGroups(groups(scene.width, FFX_DOF_DOWNSAMPLE_DEPTH_GROUP_EXTENT),
+              groups(scene.height, FFX_DOF_DOWNSAMPLE_DEPTH_GROUP_EXTENT), ffxDofDownsampleDepth);
+    float globalMax = ffxDofAsFloat(state.globals.load());
+    runGroups(groups(scene.width, FFX_DOF_DOWNSAMPLE_COLOR_GROUP_EXTENT),
+              groups(scene.height, FFX_DOF_DOWNSAMPLE_COLOR_GROUP_EXTENT), ffxDofDownsampleColor);
+    runGroups(groups(k.tileCount.x, FFX_DOF_DILATE_GROUP_EXTENT), groups(k.tileCount.y, FFX_DOF_DILATE_GROUP_EXTENT),
+              ffxDofDilate);
+    runGroups(groups(k.halfSize.x, FFX_DOF_BLUR_GROUP_EXTENT), groups(k.halfSize.y, FFX_DOF_BLUR_GROUP_EXTENT),
+              ffxDofBlur);
+    runGroups(groups(scene.width, FFX_DOF_COMPOSITE_GROUP_EXTENT),
+              groups(scene.height, FFX_DOF_COMPOSITE_GROUP_EXTENT), ffxDofComposite);
+
+    if (layers) {
+        layers->halfWidth = k.halfSize.x;
+        layers->halfHeight = k.halfSize.y;
+        layers->tilesX = k.tileCount.x;
+        layers->tilesY = k.tileCount.y;
+        layers->tiles = state.tiles.texels;
+        layers->dilatedTiles = state.dilatedTiles.texels;
+        layers->coc0 = state.cocMips[0].texels;
+        layers->nearColor = state.nearColor.texels;
+        layers->farColor = state.farColor.texels;
+        layers->layerAlpha = state.layerAlpha.texels;
+        layers->globalMaxRadius = globalMax;
+        layers->globalsAfterComposite = state.globals.load();
+    }
+    g_state = nullptr;
+    return state.output.texels;
+}
+
+}  // namespace ffxdoftest

@@ -1,0 +1,197 @@
+// Behaviour of the whole effect, run on the CPU over small procedural scenes. Depth is the negated
+// CoC radius (cocScale -1, cocBias 0: standard depth, smaller is nearer, near radii positive) so the
+// scenes state the blur they want.
+#include <catch2/catch.hpp>
+
+#include "ffx_dof_cpu_pipeline.h"
+#include "ffx_dof_resources.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <random>
+
+using ffxdoftest::Layers;
+using ffxdoftest::Scene;
+using ffxdoftest::Settings;
+
+namespace {
+
+const glm::vec4 kBackground(0.1f, 0.2f, 0.6f, 1.0f);
+const glm::vec4 kObject(1.0f, 1.0f, 0.0f, 1.0f);
+
+struct Rect {
+    int x0, y0, x1, y1;  // [x0, x1) x [y0, y1)
+    bool contains(int x, int y) const { return x >= x0 && x < x1 && y >= y0 && y < y1; }
+    // Distance from a pixel centre outside the rectangle to the rectangle's nearest pixel centre.
+    float distance(int x, int y) const {
+        float dx = float(std::max({x0 - x, 0, x - (x1 - 1)}));
+        float dy = float(std::max({y0 - y, 0, y - (y1 - 1)}));
+        return std::hypot(dx, dy);
+    }
+};
+
+Scene makeScene(uint32_t w, uint32_t h, glm::vec4 background, float backgroundCoc) {
+    Scene s;
+    s.width = w;
+    s.height = h;
+    s.color.assign(size_t(w) * h, background);
+    s.depth.assign(size_t(w) * h, -backgroundCoc);
+    return s;
+}
+
+void paint(Scene& s, const Rect& r, float coc, bool checker) {
+    for (int y = r.y0; y < r.y1; ++y)
+        for (int x = r.x0; x < r.x1; ++x) {
+            size_t i = size_t(y) * s.width + size_t(x);
+            s.depth[i] = -coc;
+            s.color[i] = checker && ((x / 2 + y / 2) % 2) ? glm::vec4(0.9f, 0.8f, 0.05f, 1.0f) : kObject;
+        }
+}
+
+bool bitIdentical(const glm::vec4& a, const glm::vec4& b) { return std::memcmp(&a, &b, sizeof a) == 0; }
+
+}  // namespace
+
+TEST_CASE("A sharp object in front of a strongly blurred background: untouched and no leak", "[pipeline]") {
+    // Background blurred by 32 half-res px (64 full-res px), an in-focus checkered object.
+    Scene scene = makeScene(192, 128, kBackground, -32.0f);
+    const Rect object{72, 40, 120, 88};
+    paint(scene, object, 0.0f, true);
+    Settings settings;
+    settings.cocLimit = 40.0f;
+    Layers layers;
+    std::vector<glm::vec4> out = ffxdoftest::runPipeline(scene, settings, &layers);
+
+    size_t changedInside = 0;
+    float worstLeak = 0.0f;
+    for (int y = 0; y < int(scene.height); ++y)
+        for (int x = 0; x < int(scene.width); ++x) {
+            size_t i = size_t(y) * scene.width + size_t(x);
+            if (object.contains(x, y)) {
+                changedInside += !bitIdentical(out[i], scene.color[i]);
+            } else if (object.distance(x, y) >= 2.0f) {
+                // Yellow leaking into the blue background raises red and green.
+                worstLeak = std::max({worstLeak, std::fabs(out[i].x - kBackground.x), std::fabs(out[i].y - kBackground.y),
+                                      std::fabs(out[i].z - kBackground.z)});
+            }
+        }
+    CHECK(changedInside == 0);
+    CHECK(worstLeak < 0.01f);
+    CHECK(layers.globalMaxRadius == Approx(32.0f));
+    CHECK(layers.globalsAfterComposite == 0u);
+}
+
+TEST_CASE("An in-focus scene comes out bit-identical", "[pipeline]") {
+    Scene scene = makeScene(70, 50, kBackground, 0.3f);  // odd half size: partial tiles
+    std::mt19937 rng(3);
+    std::uniform_real_distribution<float> unit(0.0f, 1.0f);
+    for (size_t i = 0; i < scene.color.size(); ++i) {
+        scene.color[i] = glm::vec4(unit(rng), unit(rng), unit(rng), unit(rng));
+        scene.depth[i] = 0.49f - unit(rng) * 0.98f;
+    }
+    std::vector<glm::vec4> out = ffxdoftest::runPipeline(scene, Settings{});
+    size_t changed = 0;
+    for (size_t i = 0; i < out.size(); ++i) changed += !bitIdentical(out[i], scene.color[i]);
+    CHECK(changed == 0);
+}
+
+TEST_CASE("Far-field blur spreads a bright square by about its radius and keeps its energy", "[pipeline]") {
+    const float radius = 12.0f;  // half-res px = 24 full-res px
+    Scene scene = makeScene(160, 128, glm::vec4(0, 0, 0, 1), -radius);
+    const Rect square{76, 60, 84, 68};
+    for (int y = square.y0; y < square.y1; ++y)
+        for (int x = square.x0; x < square.x1; ++x) scene.color[size_t(y) * scene.width + size_t(x)] = glm::vec4(1);
+    std::vector<glm::vec4> out = ffxdoftest::runPipeline(scene, Settings{});
+
+    double energyIn = 0.0, energyOut = 0.0, litInside = 0.0, insideCount = 0.0, outsideMax = 0.0;
+    for (int y = 0; y < int(scene.height); ++y)
+        for (int x = 0; x < int(scene.width); ++x) {
+            size_t i = size_t(y) * scene.width + size_t(x);
+            energyIn += scene.color[i].x;
+            energyOut += out[i].x;
+            float d = square.distance(x, y);
+            if (d > 2.0f && d < 2.0f * radius - 6.0f) {
+                litInside += out[i].x > 1e-3f;
+                insideCount += 1.0;
+            }
+            if (d > 2.0f * radius + 6.0f) outsideMax = std::max(outsideMax, double(out[i].x));
+        }
+    INFO("energy in " << energyIn << ", out " << energyOut);
+    CHECK(energyOut == Approx(energyIn).epsilon(0.25));
+    CHECK(litInside / insideCount > 0.95);
+    CHECK(outsideMax < 1e-3);
+}
+
+TEST_CASE("A near-field object spreads over the in-focus background", "[pipeline]") {
+    Scene scene = makeScene(160, 128, kBackground, 0.0f);
+    const Rect object{60, 44, 100, 84};
+    paint(scene, object, 10.0f, false);
+    Layers layers;
+    std::vector<glm::vec4> out = ffxdoftest::runPipeline(scene, Settings{}, &layers);
+
+    double spreadNear = 0.0, nearCount = 0.0;
+    size_t changedFar = 0;
+    for (int y = 0; y < int(scene.height); ++y)
+        for (int x = 0; x < int(scene.width); ++x) {
+            if (object.contains(x, y)) continue;
+            size_t i = size_t(y) * scene.width + size_t(x);
+            float d = object.distance(x, y);
+            if (d >= 1.0f && d <= 6.0f) {
+                // Yellow over blue: red rises where the blurred foreground covers the background.
+                spreadNear += out[i].x - kBackground.x;
+                nearCount += 1.0;
+            }
+            if (d > 2.0f * 10.0f + 12.0f) changedFar += !bitIdentical(out[i], scene.color[i]);
+        }
+    CHECK(spreadNear / nearCount > 0.1);
+    CHECK(changedFar == 0);
+}
+
+TEST_CASE("Dilation never under-dilates (brute force over tile pairs)", "[pipeline]") {
+    // Random blocks of radii, including large near and far ones.
+    Scene scene = makeScene(256, 192, kBackground, 0.0f);
+    std::mt19937 rng(5);
+    std::uniform_int_distribution<int> px(0, 255), py(0, 191), size(4, 40);
+    std::uniform_real_distribution<float> coc(-30.0f, 30.0f);
+    for (int block = 0; block < 40; ++block) {
+        int x = px(rng), y = py(rng);
+        Rect r{x, y, std::min(x + size(rng), 256), std::min(y + size(rng), 192)};
+        paint(scene, r, coc(rng), false);
+    }
+    Settings settings;
+    settings.maxRings = 4;
+    Layers layers;
+    ffxdoftest::runPipeline(scene, settings, &layers);
+
+    const int t = FFX_DOF_TILE_SIZE;
+    for (int cy = 0; cy < int(layers.tilesY); ++cy)
+        for (int cx = 0; cx < int(layers.tilesX); ++cx) {
+            glm::vec2 dilated = layers.dilatedTiles[size_t(cy) * layers.tilesX + size_t(cx)];
+            for (int ty = 0; ty < int(layers.tilesY); ++ty)
+                for (int tx = 0; tx < int(layers.tilesX); ++tx) {
+                    glm::vec2 tile = layers.tiles[size_t(ty) * layers.tilesX + size_t(tx)];
+                    // Shortest pixel-centre distance between the two tiles, by brute force.
+                    int gapX = std::max(std::abs(tx - cx) * t - (t - 1), 0);
+                    int gapY = std::max(std::abs(ty - cy) * t - (t - 1), 0);
+                    float gap = std::hypot(float(gapX), float(gapY));
+                    // A sample reaches up to radius + 0.5 (ffxDofReach).
+                    if (tile.y > 0.0f && tile.y + 0.5f > gap) REQUIRE(dilated.y >= tile.y);
+                    if (tile.x < 0.0f && -tile.x + 0.5f > gap) REQUIRE(dilated.x <= tile.x);
+                }
+        }
+}
+
+TEST_CASE("Tiles hold the CoC range of their pixels", "[pipeline]") {
+    Scene scene = makeScene(100, 60, kBackground, -3.0f);
+    paint(scene, Rect{20, 10, 21, 11}, 7.5f, false);
+    paint(scene, Rect{40, 40, 42, 41}, -20.0f, false);
+    Layers layers;
+    ffxdoftest::runPipeline(scene, Settings{}, &layers);
+    REQUIRE(layers.tilesX == 7u);  // ceil(ceil(100 / 2) / 8)
+    REQUIRE(layers.tilesY == 4u);
+    CHECK(layers.tiles[0 * 7 + 1] == glm::vec2(-3.0f, 7.5f));   // pixel (20, 10) is in tile (1, 0)
+    CHECK(layers.tiles[2 * 7 + 2] == glm::vec2(-20.0f, -3.0f)); // pixel (40, 40) is in tile (2, 2)
+    CHECK(layers.tiles[3 * 7 + 6] == glm::vec2(-3.0f, -3.0f));
+    CHECK(layers.globalMaxRadius == 20.0f);
+}
