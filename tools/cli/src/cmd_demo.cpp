@@ -3,6 +3,7 @@
 #include "cli_error.h"
 #include "commands.h"
 #include "effect_run.h"
+#include "ffx_dof_metrics.h"
 #include "ffx_dof_reference.h"
 
 #include <cstdio>
@@ -104,6 +105,11 @@ void runDemo(const DemoOptions& options) {
     std::printf("applied depth of field on %s: focus %.2f m, f/%.2f, %.0f mm\n", device->name().c_str(),
                 camera.focusDistance, camera.fstop(), camera.focalLength * 1000.0);
     std::printf("truth convergence (RMS, half vs all lens samples): %.4f\n", truth.convergenceRms);
+    const io::ImageR radius = metrics::cocRadiusMap(camera, pinhole.depth);
+    const metrics::Comparison inputScore = metrics::compareImages(truth.color, pinhole.color, &radius);
+    const metrics::Comparison outputScore = metrics::compareImages(truth.color, output, &radius);
+    std::printf("PSNR against the truth: input %.2f dB, ffx-dof %.2f dB; SSIM: input %.4f, ffx-dof %.4f\n",
+                inputScore.psnr, outputScore.psnr, inputScore.ssim, outputScore.ssim);
     std::printf("wrote:\n");
     for (const std::string& path : written) std::printf("  %s\n", path.c_str());
     std::printf("side-by-side.png is input | ffx-dof | thin-lens truth\n");

@@ -147,7 +147,6 @@ int run(int argc, char** argv) {
     benchCommand->add_flag("--json", bench.json, "Print one JSON object instead of a table");
     addEffectOptions(*benchCommand, bench.effect);
 
-#if FFX_DOF_CLI_HAS_COMPARE
     CompareOptions compare;
     CLI::App* compareCommand = app.add_subcommand("compare", "PSNR and SSIM of a test image against a reference");
     compareCommand->add_option("--ref", compare.referencePath, "Reference EXR")->required();
@@ -158,7 +157,6 @@ int run(int argc, char** argv) {
         compareCommand->add_option("--camera", compare.cameraPath, "Camera JSON of the reference renderer");
     depthOption->needs(cameraOption);
     cameraOption->needs(depthOption);
-#endif
 
     try {
         app.parse(argc, argv);
@@ -193,12 +191,9 @@ int run(int argc, char** argv) {
         runDemo(demo);
     } else if (benchCommand->parsed()) {
         runBench(bench);
-    }
-#if FFX_DOF_CLI_HAS_COMPARE
-    if (compareCommand->parsed()) {
+    } else if (compareCommand->parsed()) {
         runCompare(compare);
     }
-#endif
     return 0;
 }
 
