@@ -88,6 +88,7 @@ TEST_CASE("bad input: one line, non-zero exit, no output", "[cli]") {
         {source + axes + "-I /no/such/include/dir " + outArg, "/no/such/include/dir"},
         {source + axes + "--language cobol " + outArg, "cobol"},
         {"'" + kShaders + "/ffx_dof_test_cycle.glsl' --pass cycle " + outArg, "include cycle"},
+        {"'" + kShaders + "/ffx_dof_test_cycle.glsl' --pass cycle -I '" + kShaders + "' " + outArg, "include cycle"},
     };
     for (const auto& [arguments, expected] : cases) {
         INFO(arguments);

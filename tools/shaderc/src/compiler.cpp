@@ -72,7 +72,8 @@ private:
             const std::string* data = contents.release();
             return new IncludeResult(resolved.string(), data->data(), data->size(), const_cast<std::string*>(data));
         }
-        error_ = "cannot find include file '" + std::string(header) + "'";
+        // glslang retries a failed local include as a system include: keep the first reason.
+        if (error_.empty()) error_ = "cannot find include file '" + std::string(header) + "'";
         return nullptr;
     }
 
