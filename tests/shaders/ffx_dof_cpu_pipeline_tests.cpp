@@ -56,7 +56,8 @@ bool bitIdentical(const glm::vec4& a, const glm::vec4& b) { return std::memcmp(&
 TEST_CASE("A sharp object in front of a strongly blurred background: untouched and no leak", "[pipeline]") {
     // Background blurred by 32 half-res px (64 full-res px), an in-focus checkered object.
     Scene scene = makeScene(192, 128, kBackground, -32.0f);
-    const Rect object{72, 40, 120, 88};
+    // Odd edges: some half-res texels straddle the silhouette.
+    const Rect object{73, 41, 119, 87};
     paint(scene, object, 0.0f, true);
     Settings settings;
     settings.cocLimit = 40.0f;
@@ -70,7 +71,7 @@ TEST_CASE("A sharp object in front of a strongly blurred background: untouched a
             size_t i = size_t(y) * scene.width + size_t(x);
             if (object.contains(x, y)) {
                 changedInside += !bitIdentical(out[i], scene.color[i]);
-            } else if (object.distance(x, y) >= 2.0f) {
+            } else {
                 // Yellow leaking into the blue background raises red and green.
                 worstLeak = std::max({worstLeak, std::fabs(out[i].x - kBackground.x), std::fabs(out[i].y - kBackground.y),
                                       std::fabs(out[i].z - kBackground.z)});
