@@ -80,8 +80,7 @@ TEST_CASE("Ring geometry: counts, circularity, even spacing", "[kernel]") {
             REQUIRE(angles[j] - angles[j - 1] == Approx(2.0f * kPi / float(count)).epsilon(1e-3));
     }
     // Odd rings are turned by half a sample relative to even ones.
-    CHECK(std::atan2(ffxDofRingSamplePosition(1, 0).y, ffxDofRingSamplePosition(1, 0).x) ==
-          Approx(kPi / 6.0f));
+    CHECK(std::atan2(ffxDofRingSamplePosition(1, 0).y, ffxDofRingSamplePosition(1, 0).x) == Approx(kPi / 6.0f));
     CHECK(ffxDofRingSamplePosition(2, 0).y == Approx(0.0f).margin(1e-6));
 }
 

@@ -171,8 +171,8 @@ std::vector<glm::vec4> runPipeline(const Scene& scene, const Settings& settings,
               ffxDofDilate);
     runGroups(groups(k.halfSize.x, FFX_DOF_BLUR_GROUP_EXTENT), groups(k.halfSize.y, FFX_DOF_BLUR_GROUP_EXTENT),
               ffxDofBlur);
-    runGroups(groups(scene.width, FFX_DOF_COMPOSITE_GROUP_EXTENT),
-              groups(scene.height, FFX_DOF_COMPOSITE_GROUP_EXTENT), ffxDofComposite);
+    runGroups(groups(scene.width, FFX_DOF_COMPOSITE_GROUP_EXTENT), groups(scene.height, FFX_DOF_COMPOSITE_GROUP_EXTENT),
+              ffxDofComposite);
 
     if (layers) {
         layers->halfWidth = k.halfSize.x;

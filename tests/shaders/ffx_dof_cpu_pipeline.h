@@ -31,8 +31,8 @@ struct Layers {
     std::vector<float> coc0;              // MIP 0 of COC_MIPS
     std::vector<glm::vec3> nearColor, farColor;
     std::vector<glm::vec2> layerAlpha;
-    float globalMaxRadius = 0.0f;         // GLOBALS after pass 1
-    uint32_t globalsAfterComposite = 1;   // GLOBALS bits after pass 5 (must be 0)
+    float globalMaxRadius = 0.0f;        // GLOBALS after pass 1
+    uint32_t globalsAfterComposite = 1;  // GLOBALS bits after pass 5 (must be 0)
 };
 
 std::vector<glm::vec4> runPipeline(const Scene& scene, const Settings& settings, Layers* layers = nullptr);

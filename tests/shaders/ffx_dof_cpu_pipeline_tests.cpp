@@ -73,8 +73,8 @@ TEST_CASE("A sharp object in front of a strongly blurred background: untouched a
                 changedInside += !bitIdentical(out[i], scene.color[i]);
             } else {
                 // Yellow leaking into the blue background raises red and green.
-                worstLeak = std::max({worstLeak, std::fabs(out[i].x - kBackground.x), std::fabs(out[i].y - kBackground.y),
-                                      std::fabs(out[i].z - kBackground.z)});
+                worstLeak = std::max({worstLeak, std::fabs(out[i].x - kBackground.x),
+                                      std::fabs(out[i].y - kBackground.y), std::fabs(out[i].z - kBackground.z)});
             }
         }
     CHECK(changedInside == 0);
@@ -191,8 +191,8 @@ TEST_CASE("Tiles hold the CoC range of their pixels", "[pipeline]") {
     ffxdoftest::runPipeline(scene, Settings{}, &layers);
     REQUIRE(layers.tilesX == 7u);  // ceil(ceil(100 / 2) / 8)
     REQUIRE(layers.tilesY == 4u);
-    CHECK(layers.tiles[0 * 7 + 1] == glm::vec2(-3.0f, 7.5f));   // pixel (20, 10) is in tile (1, 0)
-    CHECK(layers.tiles[2 * 7 + 2] == glm::vec2(-20.0f, -3.0f)); // pixel (40, 40) is in tile (2, 2)
+    CHECK(layers.tiles[0 * 7 + 1] == glm::vec2(-3.0f, 7.5f));    // pixel (20, 10) is in tile (1, 0)
+    CHECK(layers.tiles[2 * 7 + 2] == glm::vec2(-20.0f, -3.0f));  // pixel (40, 40) is in tile (2, 2)
     CHECK(layers.tiles[3 * 7 + 6] == glm::vec2(-3.0f, -3.0f));
     CHECK(layers.globalMaxRadius == 20.0f);
 }
