@@ -92,8 +92,8 @@ TEST_CASE("CoC regions on a synthetic radius map", "[metrics]") {
     for (uint32_t y = 0; y < 12; ++y) {
         for (uint32_t x = 0; x < 50; ++x) radius.at(x, y) = x < 20 ? 0.0f : (y < 4 ? 3.0f : -5.0f);
     }
-    radius.at(0, 0) = 0.99f;    // still in focus
-    radius.at(1, 0) = -0.99f;   // still in focus
+    radius.at(0, 0) = 0.99f;   // still in focus
+    radius.at(1, 0) = -0.99f;  // still in focus
     const metrics::RegionMasks masks = metrics::classifyRegions(radius);
     CHECK(metrics::countPixels(masks.inFocus) == 20 * 12);
     CHECK(metrics::countPixels(masks.nearField) == 30 * 4);
@@ -109,9 +109,9 @@ TEST_CASE("CoC regions on a synthetic radius map", "[metrics]") {
     for (float& r : spot.pixels) r = -4.0f;
     spot.at(20, 20) = 0.0f;
     const metrics::RegionMasks spotMasks = metrics::classifyRegions(spot, 8.0);
-    CHECK(spotMasks.haloBand[size_t(20) * 41 + 28] == 1);      // (8, 0)
-    CHECK(spotMasks.haloBand[size_t(26) * 41 + 26] == 0);      // (6, 6): 8.49 px
-    CHECK(spotMasks.haloBand[size_t(25) * 41 + 26] == 1);      // (6, 5): 7.81 px
+    CHECK(spotMasks.haloBand[size_t(20) * 41 + 28] == 1);  // (8, 0)
+    CHECK(spotMasks.haloBand[size_t(26) * 41 + 26] == 0);  // (6, 6): 8.49 px
+    CHECK(spotMasks.haloBand[size_t(25) * 41 + 26] == 1);  // (6, 5): 7.81 px
     size_t expected = 0;
     for (int dy = -8; dy <= 8; ++dy) {
         for (int dx = -8; dx <= 8; ++dx) expected += (dx || dy) && dx * dx + dy * dy <= 64 ? 1 : 0;

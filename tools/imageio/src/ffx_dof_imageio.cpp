@@ -212,9 +212,9 @@ void writeExrChannels(const std::string& path, uint32_t width, uint32_t height, 
             }
             Imf::FrameBuffer frameBuffer;
             for (size_t i = 0; i < channelCount; ++i) {
-                frameBuffer.insert(names[i], Imf::Slice(pixelType, const_cast<char*>(base + i * elementSize),
-                                                        elementSize * channelCount,
-                                                        elementSize * channelCount * width));
+                frameBuffer.insert(names[i],
+                                   Imf::Slice(pixelType, const_cast<char*>(base + i * elementSize),
+                                              elementSize * channelCount, elementSize * channelCount * width));
             }
             Imf::StdOFStream exrStream(stream, temp.path().c_str());
             Imf::OutputFile output(exrStream, header);
@@ -261,8 +261,8 @@ ImageRGBA readExrColor(const std::string& path, const std::string& layerPrefix) 
             } else if (std::strcmp(channel, "A") == 0) {
                 names.emplace_back();
             } else {
-                fail(path, "colour channel " + name + " is missing (need R, G and B); channels present: " +
-                               joinNames(channelNames(file)));
+                fail(path, "colour channel " + name +
+                               " is missing (need R, G and B); channels present: " + joinNames(channelNames(file)));
             }
         }
         ImageRGBA image;
@@ -280,8 +280,8 @@ ImageR readExrChannel(const std::string& path, const std::string& channelName) {
         ChannelLocation location;
         if (channelName.empty()) {
             if (names.size() != 1) {
-                fail(path, "expected a single-channel file but it has " + std::to_string(names.size()) +
-                               " channels (" + joinNames(names) + "); name the channel to read");
+                fail(path, "expected a single-channel file but it has " + std::to_string(names.size()) + " channels (" +
+                               joinNames(names) + "); name the channel to read");
             }
             location = {0, names.front()};
         } else {
@@ -291,8 +291,7 @@ ImageR readExrChannel(const std::string& path, const std::string& channelName) {
             }
         }
         ImageR image;
-        readPartChannels(path, file, location.part, {location.name}, 1, 0.0f, image.width, image.height,
-                         image.pixels);
+        readPartChannels(path, file, location.part, {location.name}, 1, 0.0f, image.width, image.height, image.pixels);
         return image;
     });
 }

@@ -70,9 +70,9 @@ std::string formatComparison(const Comparison& comparison);
 // A single bright disc on a known background (image minus background; no background means black).
 struct BokehMeasurement {
     double centerX = 0.0, centerY = 0.0;  // luminance centroid, pixels (pixel centres at +0.5)
-    double radius = 0.0;  // sqrt(area / pi) of the pixels brighter than half the disc's inner level
-    double flatness = 0.0;  // standard deviation / mean of the luminance within 0.7 radius
-    double energy = 0.0;  // sum of luminance over the image
+    double radius = 0.0;                  // sqrt(area / pi) of the pixels brighter than half the disc's inner level
+    double flatness = 0.0;                // standard deviation / mean of the luminance within 0.7 radius
+    double energy = 0.0;                  // sum of luminance over the image
 };
 BokehMeasurement measureBokeh(const io::ImageRGBA& image, const io::ImageRGBA* background = nullptr);
 

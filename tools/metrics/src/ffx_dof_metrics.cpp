@@ -17,8 +17,7 @@ double clamp01(double value) { return std::clamp(value, 0.0, 1.0); }
 void checkSameSize(uint32_t w0, uint32_t h0, uint32_t w1, uint32_t h1, const char* what) {
     if (w0 != w1 || h0 != h1) {
         throw std::invalid_argument(std::string(what) + ": sizes differ (" + std::to_string(w0) + "x" +
-                                    std::to_string(h0) + " and " + std::to_string(w1) + "x" + std::to_string(h1) +
-                                    ")");
+                                    std::to_string(h0) + " and " + std::to_string(w1) + "x" + std::to_string(h1) + ")");
     }
 }
 
@@ -105,7 +104,8 @@ double maxAbsDifference(const io::ImageRGBA& reference, const io::ImageRGBA& tes
     for (size_t i = 0; i < size_t(reference.width) * reference.height; ++i) {
         if (mask && !(*mask)[i]) continue;
         for (int c = 0; c < 3; ++c) {
-            largest = std::max(largest, std::abs(clamp01(reference.pixels[i * 4 + c]) - clamp01(test.pixels[i * 4 + c])));
+            largest =
+                std::max(largest, std::abs(clamp01(reference.pixels[i * 4 + c]) - clamp01(test.pixels[i * 4 + c])));
         }
     }
     return largest;

@@ -149,8 +149,8 @@ struct RenderSettings {
 };
 
 struct PinholeImages {
-    io::ImageRGBA color;   // 4x4 stratified sub-pixel samples, box filter
-    io::ImageR depth;      // linear view depth Z of the pixel-centre ray, metres
+    io::ImageRGBA color;             // 4x4 stratified sub-pixel samples, box filter
+    io::ImageR depth;                // linear view depth Z of the pixel-centre ray, metres
     io::ImageR deviceDepth;          // standard projection
     io::ImageR deviceDepthReversed;  // reversed projection
 };

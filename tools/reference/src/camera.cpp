@@ -93,8 +93,9 @@ nlohmann::json cameraToJson(const Camera& camera) {
         {"pixelsPerSensorUnit", camera.pixelsPerSensorUnit()},
         {"projection", projectionToJson(camera.projection())},
         {"projectionReversed", projectionToJson(camera.reversedProjection())},
-        {"units", "metres; view space looks down +Z; CoC radius (sensor units) = "
-                  "apertureRadius * focalLength * |focusDistance - Z| / (Z * (focusDistance - focalLength))"},
+        {"units",
+         "metres; view space looks down +Z; CoC radius (sensor units) = "
+         "apertureRadius * focalLength * |focusDistance - Z| / (Z * (focusDistance - focalLength))"},
     };
 }
 

@@ -41,7 +41,8 @@ bool intersectSphere(const Primitive& sphere, const Ray& ray, double tMin, Hit& 
     const glm::dvec3 normal = (ray.origin + t * ray.direction - sphere.center) / sphere.radius;
     hit.t = t;
     hit.primitive = &sphere;
-    hit.uv = {std::atan2(normal.z, normal.x) * sphere.radius, std::asin(std::clamp(normal.y, -1.0, 1.0)) * sphere.radius};
+    hit.uv = {std::atan2(normal.z, normal.x) * sphere.radius,
+              std::asin(std::clamp(normal.y, -1.0, 1.0)) * sphere.radius};
     return true;
 }
 
@@ -101,9 +102,15 @@ Hit traceRay(const Scene& scene, const Ray& ray) {
     const double tMin = 1e-9;
     for (const Primitive& primitive : scene.primitives) {
         switch (primitive.kind) {
-            case Primitive::Kind::Sphere: intersectSphere(primitive, ray, tMin, hit); break;
-            case Primitive::Kind::Quad: intersectQuad(primitive, ray, tMin, hit); break;
-            case Primitive::Kind::Box: intersectBox(primitive, ray, tMin, hit); break;
+            case Primitive::Kind::Sphere:
+                intersectSphere(primitive, ray, tMin, hit);
+                break;
+            case Primitive::Kind::Quad:
+                intersectQuad(primitive, ray, tMin, hit);
+                break;
+            case Primitive::Kind::Box:
+                intersectBox(primitive, ray, tMin, hit);
+                break;
         }
     }
     return hit;
@@ -121,7 +128,8 @@ uint32_t hashInteger(uint32_t value) {
 }
 
 double hashUnit(uint32_t x, uint32_t y, uint32_t seed, uint32_t dimension) {
-    const uint32_t h = hashInteger(x * 0x9e3779b9U ^ hashInteger(y * 0x85ebca6bU ^ hashInteger(seed * 31U + dimension)));
+    const uint32_t h =
+        hashInteger(x * 0x9e3779b9U ^ hashInteger(y * 0x85ebca6bU ^ hashInteger(seed * 31U + dimension)));
     return (h >> 8) * (1.0 / 16777216.0);
 }
 
@@ -200,7 +208,9 @@ struct CameraFrame {
         const double sensorY = (0.5 - py / height) * sensorHeight;
         return {sensorX / imageDistance, sensorY / imageDistance, 1.0};
     }
-    glm::dvec3 toWorldDirection(const glm::dvec3& view) const { return view.x * right + view.y * up + view.z * forward; }
+    glm::dvec3 toWorldDirection(const glm::dvec3& view) const {
+        return view.x * right + view.y * up + view.z * forward;
+    }
     glm::dvec3 toWorldPoint(const glm::dvec3& view) const { return position + toWorldDirection(view); }
     glm::dvec3 toView(const glm::dvec3& world) const {
         const glm::dvec3 d = world - position;
@@ -307,8 +317,7 @@ ThinLensImage renderThinLens(const Scene& scene, const Camera& camera, const Ren
     for (const Primitive& primitive : scene.primitives) {
         if (!primitive.emitter) continue;
         EmitterView emitter{&primitive, frame.toView(primitive.center),
-                            glm::dvec3(primitive.texture.evaluate({0.0, 0.0})) * double(primitive.emission), 0.0,
-                            0.0};
+                            glm::dvec3(primitive.texture.evaluate({0.0, 0.0})) * double(primitive.emission), 0.0, 0.0};
         if (emitter.center.z <= 0.0) continue;  // behind the lens
         const double defocus = std::abs(focus - emitter.center.z);
         // The line from lens point L to focus point P crosses depth Z at L (1 - Z/F) + P Z/F, so it
@@ -333,7 +342,8 @@ ThinLensImage renderThinLens(const Scene& scene, const Camera& camera, const Ren
                 const SamplePoint s = samplePoint(i, rotation);
                 const glm::dvec3 pinhole = frame.pinholeDirection(x + s.pixelX, y + s.pixelY);
                 const glm::dvec2 lens = aperture * concentricDisc(s.lensU, s.lensV);
-                const glm::dvec3 radiance = lensSampleRadiance(scene, traceRay(scene, frame.lensRay(pinhole, lens.x, lens.y)));
+                const glm::dvec3 radiance =
+                    lensSampleRadiance(scene, traceRay(scene, frame.lensRay(pinhole, lens.x, lens.y)));
                 sum += radiance;
                 if (i < halfCount) sumHalf += radiance;
             }
@@ -344,8 +354,8 @@ ThinLensImage renderThinLens(const Scene& scene, const Camera& camera, const Ren
                 const double z = emitter.center.z;
                 const bool sampleFootprint = emitter.footprintRadius < aperture;
                 if (std::isfinite(emitter.footprintMotion)) {
-                    const glm::dvec2 footprintCenter = (glm::dvec2(emitter.center) * focus -
-                                                        glm::dvec2(centerPinhole) * focus * z) / (focus - z);
+                    const glm::dvec2 footprintCenter =
+                        (glm::dvec2(emitter.center) * focus - glm::dvec2(centerPinhole) * focus * z) / (focus - z);
                     const double margin = 0.7072 * focusPixelPitch * emitter.footprintMotion;
                     if (glm::length(footprintCenter) > emitter.footprintRadius + aperture + margin) continue;
                 }

@@ -44,8 +44,8 @@ Texture stripes(glm::vec3 a, glm::vec3 b, float size) { return {Texture::Kind::S
 // Aperture radius that gives a CoC of radiusPixels (full-resolution pixels) at view depth Z.
 void setApertureForBlur(Camera& camera, double viewDepth, double radiusPixels) {
     const double f = camera.focalLength, focus = camera.focusDistance;
-    camera.apertureRadius = radiusPixels / camera.pixelsPerSensorUnit() * viewDepth * (focus - f) /
-                            (f * std::abs(focus - viewDepth));
+    camera.apertureRadius =
+        radiusPixels / camera.pixelsPerSensorUnit() * viewDepth * (focus - f) / (f * std::abs(focus - viewDepth));
 }
 
 // A camera at the origin looking down +Z with a 36 mm wide sensor.
@@ -69,8 +69,10 @@ double emitterRadiusForPixels(const Camera& camera, double viewDepth, double pix
 const glm::dvec3 kRight{1, 0, 0}, kUp{0, 1, 0}, kForward{0, 0, 1};
 
 SceneSetup nearObject(uint32_t width, uint32_t height) {
-    SceneSetup setup{"near-object", "a near sphere, strongly blurred, over a sharp midground of boxes at the focus",
-                     {}, baseCamera(width, height, 0.035, 4.0)};
+    SceneSetup setup{"near-object",
+                     "a near sphere, strongly blurred, over a sharp midground of boxes at the focus",
+                     {},
+                     baseCamera(width, height, 0.035, 4.0)};
     Scene& scene = setup.scene;
     scene.background = {0.55f, 0.65f, 0.8f};
     scene.addQuad({0, -1, 10}, kRight * 20.0, kForward * 10.0, checker({0.3f, 0.3f, 0.32f}, {0.6f, 0.58f, 0.5f}, 0.5f));
@@ -84,7 +86,9 @@ SceneSetup nearObject(uint32_t width, uint32_t height) {
 }
 
 SceneSetup farHighlights(uint32_t width, uint32_t height) {
-    SceneSetup setup{"far-highlights", "bright point lights far behind a subject in focus at 2 m", {},
+    SceneSetup setup{"far-highlights",
+                     "bright point lights far behind a subject in focus at 2 m",
+                     {},
                      baseCamera(width, height, 0.05, 2.0)};
     Camera& camera = setup.camera;
     Scene& scene = setup.scene;
@@ -104,8 +108,10 @@ SceneSetup farHighlights(uint32_t width, uint32_t height) {
 }
 
 SceneSetup fence(uint32_t width, uint32_t height) {
-    SceneSetup setup{"fence", "thin fence posts close to the camera in front of a sharp brick wall (partial occlusion)",
-                     {}, baseCamera(width, height, 0.035, 3.0)};
+    SceneSetup setup{"fence",
+                     "thin fence posts close to the camera in front of a sharp brick wall (partial occlusion)",
+                     {},
+                     baseCamera(width, height, 0.035, 3.0)};
     Scene& scene = setup.scene;
     scene.background = {0.5f, 0.6f, 0.75f};
     scene.addQuad({0, 0, 3.0}, kRight * 6.0, kUp * 4.0, bricks({0.6f, 0.3f, 0.2f}, {0.85f, 0.85f, 0.8f}, 0.25f));
@@ -118,7 +124,8 @@ SceneSetup fence(uint32_t width, uint32_t height) {
 
 SceneSetup busyBackground(uint32_t width, uint32_t height) {
     SceneSetup setup{"busy-background",
-                     "a sharp object at 2 m in front of a busy background blurred by at least 40 pixels", {},
+                     "a sharp object at 2 m in front of a busy background blurred by at least 40 pixels",
+                     {},
                      baseCamera(width, height, 0.05, 2.0)};
     Scene& scene = setup.scene;
     scene.addQuad({0, 0, 12}, kRight * 12.0, kUp * 8.0, noise({0.05f, 0.1f, 0.3f}, {1.0f, 0.9f, 0.4f}, 0.6f));
@@ -129,14 +136,17 @@ SceneSetup busyBackground(uint32_t width, uint32_t height) {
 }
 
 SceneSetup floorScene(uint32_t width, uint32_t height) {
-    SceneSetup setup{"floor", "a checker floor receding from 0.6 m to 60 m, focus at 4 m", {},
+    SceneSetup setup{"floor",
+                     "a checker floor receding from 0.6 m to 60 m, focus at 4 m",
+                     {},
                      baseCamera(width, height, 0.035, 4.0)};
     Camera& camera = setup.camera;
     camera.position = {0.0, 1.0, 0.0};
     camera.target = {0.0, 0.55, 4.0};
     Scene& scene = setup.scene;
     scene.background = {0.6f, 0.7f, 0.9f};
-    scene.addQuad({0, 0, 30}, kRight * 30.0, kForward * 30.0, checker({0.15f, 0.15f, 0.15f}, {0.85f, 0.8f, 0.7f}, 0.5f));
+    scene.addQuad({0, 0, 30}, kRight * 30.0, kForward * 30.0,
+                  checker({0.15f, 0.15f, 0.15f}, {0.85f, 0.8f, 0.7f}, 0.5f));
     scene.addSphere({-0.8, 0.3, 2.0}, 0.3, noise({0.2f, 0.3f, 0.8f}, {0.9f, 0.9f, 1.0f}, 0.05f));
     scene.addSphere({0.6, 0.4, 4.5}, 0.4, checker({0.9f, 0.3f, 0.1f}, {1.0f, 0.9f, 0.6f}, 0.1f));
     scene.addSphere({-1.5, 0.8, 12.0}, 0.8, stripes({0.3f, 0.7f, 0.3f}, {0.9f, 0.9f, 0.6f}, 0.2f));
@@ -145,7 +155,9 @@ SceneSetup floorScene(uint32_t width, uint32_t height) {
 }
 
 SceneSetup singlePoint(uint32_t width, uint32_t height) {
-    SceneSetup setup{"point", "one bright point far behind the focus on black: a single bokeh disc", {},
+    SceneSetup setup{"point",
+                     "one bright point far behind the focus on black: a single bokeh disc",
+                     {},
                      baseCamera(width, height, 0.05, 3.0)};
     Camera& camera = setup.camera;
     const double z = 20.0;
@@ -161,8 +173,12 @@ struct SceneEntry {
 
 const std::vector<SceneEntry>& sceneCatalog() {
     static const std::vector<SceneEntry> catalog = {
-        {"near-object", nearObject}, {"far-highlights", farHighlights}, {"fence", fence},
-        {"busy-background", busyBackground}, {"floor", floorScene},      {"point", singlePoint},
+        {"near-object", nearObject},
+        {"far-highlights", farHighlights},
+        {"fence", fence},
+        {"busy-background", busyBackground},
+        {"floor", floorScene},
+        {"point", singlePoint},
     };
     return catalog;
 }
@@ -172,13 +188,16 @@ const std::vector<SceneEntry>& sceneCatalog() {
 glm::vec3 Texture::evaluate(glm::dvec2 uv) const {
     const double u = uv.x / scale, v = uv.y / scale;
     switch (kind) {
-        case Kind::Solid: return colorA;
-        case Kind::Checker: return (parity(u) ^ parity(v)) ? colorB : colorA;
-        case Kind::Stripes: return parity(u) ? colorB : colorA;
+        case Kind::Solid:
+            return colorA;
+        case Kind::Checker:
+            return (parity(u) ^ parity(v)) ? colorB : colorA;
+        case Kind::Stripes:
+            return parity(u) ? colorB : colorA;
         case Kind::Noise: {
             // Three octaves of value noise with a contrast boost: a busy, high-frequency pattern.
-            const float n = 0.55f * valueNoise(u, v) + 0.3f * valueNoise(2.7 * u, 2.7 * v) +
-                            0.15f * valueNoise(7.1 * u, 7.1 * v);
+            const float n =
+                0.55f * valueNoise(u, v) + 0.3f * valueNoise(2.7 * u, 2.7 * v) + 0.15f * valueNoise(7.1 * u, 7.1 * v);
             const float t = glm::clamp((n - 0.5f) * 2.2f + 0.5f, 0.0f, 1.0f);
             return glm::mix(colorA, colorB, t);
         }

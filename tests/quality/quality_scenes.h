@@ -1,0 +1,64 @@
+// The quality gates of ffx-dof, shared by the Vulkan tests (test_quality.cpp) and the generator of
+// docs/quality.md (quality_report.cpp), so the documented figures are the gated ones.
+#pragma once
+
+#include "ffx_dof_metrics.h"
+#include "ffx_dof_reference.h"
+#include "ffx_dof_vkrun.h"
+
+#include <string>
+#include <vector>
+
+namespace ffxdof::quality {
+
+// Resolution and lens samples of every gate (and of the pictures in docs/quality.md).
+constexpr uint32_t kWidth = 320;
+constexpr uint32_t kHeight = 180;
+constexpr uint32_t kLensSamples = 256;
+constexpr uint32_t kEffectQuality = 10;
+
+struct SceneGate {
+    std::string scene;
+    // PSNR(ours, truth) must beat PSNR(pinhole input, truth) by at least this many dB.
+    double psnrMarginDb;
+    // Why this margin: written into docs/quality.md next to the figures.
+    std::string rationale;
+};
+const std::vector<SceneGate>& sceneGates();
+
+// The reference renders of one scene.
+struct SceneRender {
+    ref::SceneSetup setup;
+    ref::PinholeImages pinhole;
+    io::ImageRGBA truth;
+    double convergenceRms = 0.0;
+    io::ImageR radius;  // signed CoC radius, full-resolution pixels (positive near)
+};
+SceneRender renderScene(const std::string& scene, uint32_t width = kWidth, uint32_t height = kHeight,
+                        uint32_t lensSamples = kLensSamples);
+
+// A plain circular gather: every pixel averages the input over a disc of its own CoC radius, with no
+// regard for depth order (sharp foreground bleeds into blurred background: the halo to beat).
+io::ImageRGBA circularGatherBaseline(const io::ImageRGBA& color, const io::ImageR& radiusPixels);
+
+// In-focus pixels (|radius| < 1) farther than the largest near-field radius from every near-field
+// pixel: the truth shows them unchanged, so ffx-dof must leave them within 1/255 of the input. (In-focus
+// pixels that a blurred near object may cover are excluded: there the truth itself changes.)
+metrics::Mask undisturbedInFocusMask(const io::ImageR& radiusPixels);
+
+struct GateResult {
+    io::ImageRGBA ours, baseline;
+    metrics::Comparison input, effect, gather;  // each against the truth, with regions
+    double inFocusMaxDifference = 0.0;          // |ours - input| over undisturbedInFocusMask, clamped
+    size_t inFocusPixels = 0;
+    float cocScale = 0.0f, cocBias = 0.0f, cocLimitFactor = 0.0f;
+
+    bool psnrGate(double marginDb) const { return effect.psnr >= input.psnr + marginDb; }
+    bool inFocusGate() const { return inFocusMaxDifference <= 1.0 / 255.0; }
+    bool haloGate() const { return !(effect.haloBand.psnr < gather.haloBand.psnr); }  // NaN (empty) passes
+};
+// Runs ffx-dof on the scene's pinhole colour and standard device depth, with cocScale/cocBias from
+// ffxDofCalculateCocScale/Bias and a cocLimitFactor that covers the scene's largest radius.
+GateResult runGate(vkrun::Device& device, const SceneRender& render);
+
+}  // namespace ffxdof::quality
