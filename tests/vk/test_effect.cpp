@@ -70,7 +70,7 @@ TEST_CASE("the effect blurs the out-of-focus regions and keeps the focus band", 
     for (int c = 0; c < 3; ++c) CHECK(std::abs(out[c] - in[c]) < 0.05f);
 }
 
-TEST_CASE("every permutation lavapipe can run gives a finite image; 16-bit matches 32-bit", "[vulkan]") {
+TEST_CASE("every permutation lavapipe can run gives a finite image, and 16-bit matches 32-bit", "[vulkan]") {
     const Scene standard = makeScene(96, 64, 5.0f);
     const Scene reversed = makeScene(96, 64, 5.0f, true);
     const bool hlsl = hlslAvailable();
@@ -132,7 +132,7 @@ TEST_CASE("quality from 1 to the maximum", "[vulkan]") {
     run(scene, settings);
 }
 
-TEST_CASE("cocLimitFactor 0 returns the input; a very large limit still works", "[vulkan]") {
+TEST_CASE("cocLimitFactor 0 returns the input, and a very large limit still works", "[vulkan]") {
     const Scene scene = makeScene(64, 48, 6.0f);
     vkrun::RunSettings settings = settingsFor(scene);
     settings.cocLimitFactor = 0.0f;
@@ -211,7 +211,7 @@ TEST_CASE("every color and depth format", "[vulkan]") {
     }
 }
 
-TEST_CASE("timestamps and memory are reported; the copy pass runs", "[vulkan]") {
+TEST_CASE("timestamps and memory are reported, and the copy pass runs", "[vulkan]") {
     const Scene scene = makeScene(64, 64, 4.0f);
     vkrun::RunSettings settings = settingsFor(scene);
     settings.repeat = 3;
