@@ -130,10 +130,15 @@ void writeScene(const TempFolder& folder) {
 // the CoC limit) in the near band and 2.4 in the far band.
 using Options = std::map<std::string, std::string>;
 std::string applyArguments(const TempFolder& folder, const Options& overrides = {}) {
-    Options options = {{"--color", folder / "color.exr"}, {"--depth", folder / "depth.exr"},
-                       {"--out", folder / "out.exr"},     {"--focus", "4"},
-                       {"--focal-length", "50"},          {"--fstop", "1.4"},
-                       {"--sensor-width", "4"},           {"--coc-limit", "0.3"}};
+    Options options = {{"--color", folder / "color.exr"},
+                       {"--depth", folder / "depth.exr"},
+                       {"--out", folder / "out.exr"},
+                       {"--focus", "4"},
+                       {"--focal-length", "50"},
+                       {"--fstop", "1.4"},
+                       {"--sensor-width", "4"},
+                       {"--coc-limit", "0.3"},
+                       {"--validate", ""}};
     for (const auto& [name, value] : overrides) options[name] = value;
     std::string arguments = "apply";
     for (const auto& [name, value] : options) {
@@ -275,14 +280,21 @@ TEST_CASE("apply: linear, device and reversed depth give the same image", "[vulk
     ffxdof::io::writeExr(folder / "device.exr", makeDepth(standardDepth), ffxdof::io::ExrPixelType::Float);
     ffxdof::io::writeExr(folder / "reversed.exr", makeDepth([&](double z) { return 1.0 - standardDepth(z); }),
                          ffxdof::io::ExrPixelType::Float);
-    for (const char* variant : {"device", "reversed"}) {
+    std::ostringstream matrix;
+    matrix.precision(17);
+    matrix << "1,0,0,0,0,1,0,0,0,0," << f / (f - n) << "," << -n * f / (f - n) << ",0,0,1,0";
+    for (const std::string variant : {"device", "reversed", "proj"}) {
         INFO(variant);
         Options options = {{"--depth-kind", "device"},
-                           {"--near", "0.1"},
-                           {"--far", "100"},
-                           {"--depth", folder / (std::string(variant) + ".exr")},
+                           {"--depth", folder / (variant == "reversed" ? "reversed.exr" : "device.exr")},
                            {"--out", folder / "dev.exr"}};
-        if (std::string(variant) == "reversed") options["--reverse-depth"] = "";
+        if (variant == "proj") {
+            options["--proj"] = matrix.str();
+        } else {
+            options["--near"] = "0.1";
+            options["--far"] = "100";
+        }
+        if (variant == "reversed") options["--reverse-depth"] = "";
         const ProgramResult device = runProgram(applyArguments(folder, options));
         INFO(device.err);
         REQUIRE(device.exitCode == 0);
@@ -291,10 +303,11 @@ TEST_CASE("apply: linear, device and reversed depth give the same image", "[vulk
     }
 }
 
-TEST_CASE("apply: PNG output, write errors, existing output kept on failure", "[vulkan]") {
+TEST_CASE("apply: PNG output, named depth channel, write errors, existing output kept on failure", "[vulkan]") {
     TempFolder folder;
     writeScene(folder);
-    const ProgramResult png = runProgram(applyArguments(folder, {{"--out", folder / "out.png"}}));
+    const ProgramResult png =
+        runProgram(applyArguments(folder, {{"--out", folder / "out.png"}, {"--depth-channel", "Z"}}));
     INFO(png.err);
     REQUIRE(png.exitCode == 0);
     CHECK(readText(folder.path() / "out.png").substr(1, 3) == "PNG");
@@ -326,7 +339,7 @@ TEST_CASE("device selection errors", "[vulkan]") {
 }
 
 TEST_CASE("bench --json", "[vulkan]") {
-    const ProgramResult bench = runProgram("bench --width 80 --height 48 --repeat 3 --json");
+    const ProgramResult bench = runProgram("bench --width 80 --height 48 --repeat 3 --json --validate");
     INFO(bench.err);
     REQUIRE(bench.exitCode == 0);
     const nlohmann::json json = nlohmann::json::parse(bench.out);
@@ -347,7 +360,7 @@ TEST_CASE("bench --json", "[vulkan]") {
 TEST_CASE("demo writes every image", "[vulkan]") {
     TempFolder folder;
     const ProgramResult demo =
-        runProgram("demo --out " + quote(folder / "demo") + " --width 48 --height 32 --lens-samples 4");
+        runProgram("demo --out " + quote(folder / "demo") + " --width 48 --height 32 --lens-samples 4 --validate");
     INFO(demo.err);
     REQUIRE(demo.exitCode == 0);
     for (const char* name : {"input.exr", "input.png", "depth.exr", "output.exr", "output.png", "truth.exr",

@@ -70,7 +70,7 @@ void runApply(const ApplyOptions& options) {
     }
     const double radiusLimit = options.effect.cocLimit * color.height * 0.5;
 
-    std::unique_ptr<vkrun::Device> device = openDevice(options.effect.device);
+    std::unique_ptr<vkrun::Device> device = openDevice(options.effect);
     const vkrun::RunResult result =
         runEffectOrThrow(*device, toHostImage(color), toHostImage(depth.width, depth.height, effectDepth.deviceDepth),
                          makeRunSettings(options.effect, coc, effectDepth.projection.reversed));

@@ -48,7 +48,7 @@ void runBench(const BenchOptions& options) {
     const EffectDepth depth = linearToEffectDepth(pinhole.depth, "bench scene depth");
     const CocParameters coc = computeCocParameters(lens, depth.projection, options.width);
 
-    std::unique_ptr<vkrun::Device> device = openDevice(options.effect.device);
+    std::unique_ptr<vkrun::Device> device = openDevice(options.effect);
     vkrun::RunSettings settings = makeRunSettings(options.effect, coc, depth.projection.reversed);
     // What an engine would typically bind: half-float color and output.
     settings.colorFormat = VK_FORMAT_R16G16B16A16_SFLOAT;

@@ -60,7 +60,7 @@ void runDemo(const DemoOptions& options) {
     }
 
     // The device is opened before the (slow) rendering so that a machine without Vulkan fails at once.
-    std::unique_ptr<vkrun::Device> device = openDevice(options.effect.device);
+    std::unique_ptr<vkrun::Device> device = openDevice(options.effect);
 
     std::printf("rendering scene \"%s\" (%s), %ux%u, %u lens samples per pixel...\n", setup.name.c_str(),
                 setup.description.c_str(), options.width, options.height, options.lensSamples);

@@ -18,6 +18,7 @@ struct EffectOptions {
     double cocLimit = 0.05;    // FfxDofContextDescription::cocLimitFactor, finite, >= 0
     bool noRingMerge = false;  // FFX_DOF_DISABLE_RING_MERGE
     int device = -1;           // Vulkan physical device index; -1 = the first
+    bool validate = false;     // Khronos validation layer on; any message fails the command
 };
 
 // Throws CliError(InvalidValue) for a quality or CoC limit the effect does not accept.

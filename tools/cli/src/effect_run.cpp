@@ -2,14 +2,17 @@
 
 #include "cli_error.h"
 
+#include <algorithm>
 #include <string>
 #include <vector>
 
 namespace ffxdof::cli {
 
-std::unique_ptr<vkrun::Device> openDevice(int physicalDeviceIndex) {
+std::unique_ptr<vkrun::Device> openDevice(const EffectOptions& effect) {
+    const int physicalDeviceIndex = effect.device;
     vkrun::DeviceOptions options;
     options.physicalDeviceIndex = physicalDeviceIndex;
+    options.validation = effect.validate;
     try {
         return std::make_unique<vkrun::Device>(options);
     } catch (const vkrun::Error& error) {
@@ -49,11 +52,21 @@ vkrun::RunSettings makeRunSettings(const EffectOptions& effect, const CocParamet
 
 vkrun::RunResult runEffectOrThrow(vkrun::Device& device, const vkrun::HostImage& color, const vkrun::HostImage& depth,
                                   const vkrun::RunSettings& settings) {
+    vkrun::RunResult result;
     try {
-        return vkrun::runEffect(device, color, depth, settings);
+        result = vkrun::runEffect(device, color, depth, settings);
     } catch (const vkrun::Error& error) {
         throw CliError(ExitCode::Device, std::string("running the effect failed: ") + error.what());
     }
+    // Always empty unless the device was opened with --validate.
+    const std::vector<std::string> messages = device.validationMessages();
+    if (!messages.empty()) {
+        std::string first = messages.front();
+        std::replace(first.begin(), first.end(), '\n', ' ');
+        throw CliError(ExitCode::Device, "the validation layer reported " + std::to_string(messages.size()) +
+                                             " message(s); the first: " + first);
+    }
+    return result;
 }
 
 vkrun::HostImage toHostImage(const io::ImageRGBA& image) {

@@ -10,14 +10,15 @@
 
 namespace ffxdof::cli {
 
-// Opens the Vulkan device chosen with --device; throws CliError(Device) naming the devices there are.
-std::unique_ptr<vkrun::Device> openDevice(int physicalDeviceIndex);
+// Opens the Vulkan device chosen with --device (with the validation layer for --validate); throws
+// CliError(Device) naming the devices there are.
+std::unique_ptr<vkrun::Device> openDevice(const EffectOptions& effect);
 
 // The harness settings for one run: 32-bit float color and output (EXR values are kept as they are),
 // D32_SFLOAT depth, and the effect options.
 vkrun::RunSettings makeRunSettings(const EffectOptions& effect, const CocParameters& coc, bool reversedDepth);
 
-// Runs the effect; harness failures become CliError(Device).
+// Runs the effect; harness failures, and with --validate any validation message, become CliError(Device).
 vkrun::RunResult runEffectOrThrow(vkrun::Device& device, const vkrun::HostImage& color, const vkrun::HostImage& depth,
                                   const vkrun::RunSettings& settings);
 

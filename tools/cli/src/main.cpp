@@ -33,6 +33,8 @@ void addEffectOptions(CLI::App& command, EffectOptions& effect) {
         ->capture_default_str();
     command.add_flag("--no-ring-merge", effect.noRingMerge, "Never gather inner rings from coarser MIP levels");
     command.add_option("--device", effect.device, "Vulkan physical device index (default: the first)");
+    command.add_flag("--validate", effect.validate,
+                     "Run with the Khronos validation layer (synchronization included); any message is an error");
 }
 
 struct ApplyArguments {
