@@ -194,6 +194,11 @@ CompiledShader compilePermutation(const CompileOptions& options, const std::vect
         // (-enable-16bit-types), registers mapped to bindings with per-class shifts.
         messages = static_cast<EShMessages>(messages | EShMsgReadHlsl | EShMsgHlslOffsets | EShMsgHlslEnable16BitTypes);
         shader.setHlslIoMapping(true);
+        // RWTexture2D<float3> would otherwise be declared Rgba32f and written with 3 components
+        // (VUID-RuntimeSpirv-OpImageWrite-07112): glslang 12 has no [[vk::image_format]], so storage
+        // images are typeless (Unknown format) as with dxc's default; the device needs
+        // shaderStorageImageWriteWithoutFormat, which the Vulkan backend requires anyway.
+        shader.setNoStorageFormat(true);
         shader.setShiftBinding(glslang::EResTexture, options.hlslShifts.texture);
         shader.setShiftBinding(glslang::EResUav, options.hlslShifts.uav);
         shader.setShiftBinding(glslang::EResSampler, options.hlslShifts.sampler);
