@@ -255,6 +255,33 @@ TEST_CASE("invalid values", "[cli]") {
                  "1 value is 0 or negative in the linear depth");
 }
 
+TEST_CASE("compare", "[cli]") {
+    TempFolder folder;
+    writeScene(folder);
+    ImageRGBA darker = makeColor();
+    for (float& value : darker.pixels) value *= 0.9f;
+    ffxdof::io::writeExr(folder / "darker.exr", darker, ffxdof::io::ExrPixelType::Float);
+
+    const ProgramResult same =
+        runProgram("compare --ref " + quote(folder / "color.exr") + " --test " + quote(folder / "color.exr"));
+    CHECK(same.exitCode == 0);
+    CHECK_THAT(same.out, Catch::Contains("psnr inf") && Catch::Contains("ssim 1.0000"));
+    const ProgramResult different =
+        runProgram("compare --ref " + quote(folder / "color.exr") + " --test " + quote(folder / "darker.exr"));
+    CHECK(different.exitCode == 0);
+    CHECK_THAT(different.out, Catch::Contains("psnr ") && !Catch::Contains("psnr inf"));
+
+    requireError(runProgram("compare --ref " + quote(folder / "color.exr") + " --test " + quote(folder / "none.exr")),
+                 2, "none.exr");
+    ImageRGBA narrow(kWidth - 2, kHeight);
+    ffxdof::io::writeExr(folder / "narrow.exr", narrow);
+    requireError(runProgram("compare --ref " + quote(folder / "color.exr") + " --test " + quote(folder / "narrow.exr")),
+                 3, "94x64 but the reference is 96x64");
+    requireError(runProgram("compare --ref " + quote(folder / "color.exr") + " --test " + quote(folder / "color.exr") +
+                            " --depth " + quote(folder / "depth.exr")),
+                 1, "--camera");
+}
+
 TEST_CASE("apply: linear, device and reversed depth give the same image", "[vulkan]") {
     TempFolder folder;
     writeScene(folder);
@@ -369,6 +396,16 @@ TEST_CASE("demo writes every image", "[vulkan]") {
         CHECK(fs::is_regular_file(folder.path() / "demo" / name));
         CHECK_THAT(demo.out, Catch::Contains(name));
     }
+    // compare with the demo's depth and camera reports every region.
+    const std::string demoFolder = folder / "demo";
+    const ProgramResult regions = runProgram(
+        "compare --ref " + quote(demoFolder + "/truth.exr") + " --test " + quote(demoFolder + "/output.exr") +
+        " --depth " + quote(demoFolder + "/depth.exr") + " --camera " + quote(demoFolder + "/camera.json"));
+    INFO(regions.err);
+    CHECK(regions.exitCode == 0);
+    CHECK_THAT(regions.out, Catch::Contains("in-focus") && Catch::Contains("near-field") &&
+                                Catch::Contains("far-field") && Catch::Contains("halo-band"));
+
     requireError(runProgram("demo --out " + quote(folder / "demo/input.png") + " --width 8 --height 8"), 5,
                  "input.png");
     requireError(runProgram("demo --scene nowhere"), 3, "nowhere");
