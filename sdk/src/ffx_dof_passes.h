@@ -34,4 +34,53 @@ struct PermutationOptions {
 // Number of MIP levels of COLOR_MIPS / COC_MIPS the SDK allocates (FFX_DOF_OPTION_MAX_MIP).
 constexpr uint32_t kMipCount = 4;
 
+// The internal images, API-neutral: the one table both backends create from (each maps the format
+// to its API's enum). Names, formats and slots follow shaders_common/ffx_dof_resources.h.
+enum class InternalFormat : uint32_t { R11G11B10Float, R16Float, R16G16Float, R8G8Unorm };
+
+enum class ImageExtent : uint32_t {
+    Half,   // ceil(W / 2) x ceil(H / 2)
+    Tiles,  // ceil(half / FFX_DOF_TILE_SIZE)
+};
+
+struct InternalImageSpec {
+    const char* name;
+    InternalFormat format;
+    ImageExtent extent;
+    bool mipChain;         // kMipCount levels (fewer where the half-resolution image is too small)
+    uint32_t sampledSlot;  // FFX_DOF_SRV_*: all levels, sampled
+    uint32_t storageSlot;  // FFX_DOF_UAV_*: level 0; a mip chain has one consecutive slot per level
+};
+
+constexpr InternalImageSpec kInternalImages[] = {
+    {"COLOR_MIPS", InternalFormat::R11G11B10Float, ImageExtent::Half, true, FFX_DOF_SRV_COLOR_MIPS,
+     FFX_DOF_UAV_COLOR_MIP0},
+    {"COC_MIPS", InternalFormat::R16Float, ImageExtent::Half, true, FFX_DOF_SRV_COC_MIPS, FFX_DOF_UAV_COC_MIP0},
+    {"TILES", InternalFormat::R16G16Float, ImageExtent::Tiles, false, FFX_DOF_SRV_TILES, FFX_DOF_UAV_TILES},
+    {"DILATED_TILES", InternalFormat::R16G16Float, ImageExtent::Tiles, false, FFX_DOF_SRV_DILATED_TILES,
+     FFX_DOF_UAV_DILATED_TILES},
+    {"NEAR_COLOR", InternalFormat::R11G11B10Float, ImageExtent::Half, false, FFX_DOF_SRV_NEAR_COLOR,
+     FFX_DOF_UAV_NEAR_COLOR},
+    {"FAR_COLOR", InternalFormat::R11G11B10Float, ImageExtent::Half, false, FFX_DOF_SRV_FAR_COLOR,
+     FFX_DOF_UAV_FAR_COLOR},
+    {"LAYER_ALPHA", InternalFormat::R8G8Unorm, ImageExtent::Half, false, FFX_DOF_SRV_LAYER_ALPHA,
+     FFX_DOF_UAV_LAYER_ALPHA},
+};
+constexpr uint32_t kInternalImageCount = sizeof(kInternalImages) / sizeof(kInternalImages[0]);
+
+// The GLOBALS storage buffer (FFX_DOF_UAV_BUFFER_GLOBALS): four 32-bit words.
+constexpr uint32_t kGlobalsWordCount = 4;
+constexpr uint32_t kGlobalsBufferBytes = kGlobalsWordCount * 4;
+
+// Levels of an image of this size: kMipCount for a mip chain, clamped to the full chain of a
+// small image (a 4x3 half-resolution image has 3 levels).
+inline uint32_t mipLevelsFor(const InternalImageSpec& spec, uint32_t width, uint32_t height) {
+    if (!spec.mipChain) return 1;
+    uint32_t levels = 1;
+    for (uint32_t largest = width > height ? width : height; largest > 1 && levels < kMipCount; largest /= 2) {
+        ++levels;
+    }
+    return levels;
+}
+
 }  // namespace ffxdof

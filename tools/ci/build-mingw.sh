@@ -8,7 +8,7 @@
 set -euo pipefail
 
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)"
-build="${1:-$root/build/mingw}"
+build="$(realpath -m "${1:-$root/build/mingw}")"
 jobs="${FFX_DOF_JOBS:-2}"
 
 for tool in x86_64-w64-mingw32-g++-posix cmake ninja; do

@@ -10,53 +10,27 @@
 namespace ffxdof::dx12 {
 namespace {
 
-// The internal images: names, formats and slots follow shaders_common/ffx_dof_resources.h, which
-// is the source of truth (B10G11R11 there is DXGI's R11G11B10_FLOAT: same bits, other naming).
-enum class ImageExtent : uint32_t {
-    Half,   // ceil(W / 2) x ceil(H / 2)
-    Tiles,  // ceil(half / FFX_DOF_TILE_SIZE)
-};
-
-struct InternalImageSpec {
-    const char* name;
-    DXGI_FORMAT format;
-    ImageExtent extent;
-    bool mipChain;     // kMipCount levels (fewer where the image is too small for them)
-    uint32_t srvSlot;  // FFX_DOF_SRV_*: every level
-    uint32_t uavSlot;  // FFX_DOF_UAV_*: level 0; a chain has one consecutive slot per level
-};
-
-constexpr InternalImageSpec kInternalImages[] = {
-    {"COLOR_MIPS", DXGI_FORMAT_R11G11B10_FLOAT, ImageExtent::Half, true, FFX_DOF_SRV_COLOR_MIPS,
-     FFX_DOF_UAV_COLOR_MIP0},
-    {"COC_MIPS", DXGI_FORMAT_R16_FLOAT, ImageExtent::Half, true, FFX_DOF_SRV_COC_MIPS, FFX_DOF_UAV_COC_MIP0},
-    {"TILES", DXGI_FORMAT_R16G16_FLOAT, ImageExtent::Tiles, false, FFX_DOF_SRV_TILES, FFX_DOF_UAV_TILES},
-    {"DILATED_TILES", DXGI_FORMAT_R16G16_FLOAT, ImageExtent::Tiles, false, FFX_DOF_SRV_DILATED_TILES,
-     FFX_DOF_UAV_DILATED_TILES},
-    {"NEAR_COLOR", DXGI_FORMAT_R11G11B10_FLOAT, ImageExtent::Half, false, FFX_DOF_SRV_NEAR_COLOR,
-     FFX_DOF_UAV_NEAR_COLOR},
-    {"FAR_COLOR", DXGI_FORMAT_R11G11B10_FLOAT, ImageExtent::Half, false, FFX_DOF_SRV_FAR_COLOR, FFX_DOF_UAV_FAR_COLOR},
-    {"LAYER_ALPHA", DXGI_FORMAT_R8G8_UNORM, ImageExtent::Half, false, FFX_DOF_SRV_LAYER_ALPHA, FFX_DOF_UAV_LAYER_ALPHA},
-};
-constexpr uint32_t kInternalImageCount = sizeof(kInternalImages) / sizeof(kInternalImages[0]);
+// DXGI formats of the internal images; the images themselves are listed once, API-neutral, in
+// sdk/src/ffx_dof_passes.h (kInternalImages). B10G11R11 there is DXGI's R11G11B10_FLOAT: same bits.
+constexpr DXGI_FORMAT toDxgiFormat(InternalFormat format) {
+    switch (format) {
+        case InternalFormat::R11G11B10Float: return DXGI_FORMAT_R11G11B10_FLOAT;
+        case InternalFormat::R16Float: return DXGI_FORMAT_R16_FLOAT;
+        case InternalFormat::R16G16Float: return DXGI_FORMAT_R16G16_FLOAT;
+        case InternalFormat::R8G8Unorm: return DXGI_FORMAT_R8G8_UNORM;
+    }
+    return DXGI_FORMAT_UNKNOWN;
+}
 
 // GLOBALS (FFX_DOF_UAV_BUFFER_GLOBALS): RWStructuredBuffer<uint> in HLSL, so a structured UAV.
 constexpr UINT kGlobalsElementBytes = 4;
-constexpr UINT kGlobalsElementCount = 4;
+constexpr UINT kGlobalsElementCount = kGlobalsWordCount;
 
 constexpr D3D12_RESOURCE_STATES kReadState = D3D12_RESOURCE_STATE_NON_PIXEL_SHADER_RESOURCE;
 constexpr D3D12_RESOURCE_STATES kWriteState = D3D12_RESOURCE_STATE_UNORDERED_ACCESS;
 
 uint32_t divideRoundingUp(uint32_t value, uint32_t divisor) { return (value + divisor - 1) / divisor; }
 
-uint32_t mipLevelsFor(const InternalImageSpec& spec, uint32_t width, uint32_t height) {
-    if (!spec.mipChain) return 1;
-    uint32_t levels = 1;
-    for (uint32_t largest = width > height ? width : height; largest > 1 && levels < kMipCount; largest /= 2) {
-        ++levels;
-    }
-    return levels;
-}
 
 // Subresources whose states a dispatch follows: every level of every internal image, plus color,
 // depth and output (whole resources; output shares color's entry when in place).
@@ -312,11 +286,11 @@ void Context::trackInternalImages(StateTracker* tracker, SlotTargets* slots) con
     for (uint32_t i = 0; i < kInternalImageCount; ++i) {
         const InternalImageSpec& spec = kInternalImages[i];
         const InternalImage& image = images_[i];
-        slots->srv[spec.srvSlot].count = static_cast<uint8_t>(image.mipLevels);
+        slots->srv[spec.sampledSlot].count = static_cast<uint8_t>(image.mipLevels);
         for (uint32_t mip = 0; mip < image.mipLevels; ++mip) {
             const uint8_t entry = tracker->track(image.resource.Get(), mip, image.rest, image.rest);
-            if (mip == 0) slots->srv[spec.srvSlot].first = entry;
-            slots->uavImage[spec.uavSlot + mip] = entry;
+            if (mip == 0) slots->srv[spec.sampledSlot].first = entry;
+            slots->uavImage[spec.storageSlot + mip] = entry;
         }
     }
 }
@@ -334,7 +308,7 @@ void Context::chooseRestStates() {
         tracker.flush(nullptr);
     }
     for (uint32_t i = 0; i < kInternalImageCount; ++i) {
-        images_[i].rest = tracker.entry(slots.srv[kInternalImages[i].srvSlot].first).state;
+        images_[i].rest = tracker.entry(slots.srv[kInternalImages[i].sampledSlot].first).state;
     }
 }
 
@@ -350,7 +324,7 @@ FfxDofErrorCode Context::createResources() {
         desc.Height = image.height;
         desc.DepthOrArraySize = 1;
         desc.MipLevels = static_cast<UINT16>(image.mipLevels);
-        desc.Format = kInternalImages[i].format;
+        desc.Format = toDxgiFormat(kInternalImages[i].format);
         desc.SampleDesc.Count = 1;
         desc.Layout = D3D12_TEXTURE_LAYOUT_UNKNOWN;
         desc.Flags = D3D12_RESOURCE_FLAG_ALLOW_UNORDERED_ACCESS;
@@ -427,11 +401,11 @@ FfxDofErrorCode Context::createDescriptorHeap() {
         for (uint32_t i = 0; i < kInternalImageCount; ++i) {
             const InternalImageSpec& spec = kInternalImages[i];
             ID3D12Resource* resource = images_[i].resource.Get();
-            writeSrv(resource, spec.format, images_[i].mipLevels, cpuDescriptor(slot, kSrvTableOffset + spec.srvSlot));
+            writeSrv(resource, toDxgiFormat(spec.format), images_[i].mipLevels, cpuDescriptor(slot, kSrvTableOffset + spec.sampledSlot));
             const uint32_t levels = spec.mipChain ? kMipCount : 1;
             for (uint32_t mip = 0; mip < levels; ++mip) {
-                writeUav(mip < images_[i].mipLevels ? resource : nullptr, spec.format, mip,
-                         cpuDescriptor(slot, kUavImageTableOffset + spec.uavSlot + mip));
+                writeUav(mip < images_[i].mipLevels ? resource : nullptr, toDxgiFormat(spec.format), mip,
+                         cpuDescriptor(slot, kUavImageTableOffset + spec.storageSlot + mip));
             }
         }
         D3D12_UNORDERED_ACCESS_VIEW_DESC globals{};

@@ -325,9 +325,9 @@ FfxDofErrorCode ContextVK::createImages() {
         InternalImage& image = images_[i];
         constexpr VkFormatFeatureFlags kNeeded =
             VK_FORMAT_FEATURE_SAMPLED_IMAGE_BIT | VK_FORMAT_FEATURE_STORAGE_IMAGE_BIT;
-        if ((backend_.optimalFeatures(spec.format) & kNeeded) != kNeeded) {
+        if ((backend_.optimalFeatures(toVkFormat(spec.format)) & kNeeded) != kNeeded) {
             return fail(FFX_DOF_ERROR_UNSUPPORTED, "the device cannot sample and store %s, the format of %s",
-                        formatName(spec.format).c_str(), spec.name);
+                        formatName(toVkFormat(spec.format)).c_str(), spec.name);
         }
         image.width = spec.extent == ImageExtent::Half ? halfWidth : tilesWidth;
         image.height = spec.extent == ImageExtent::Half ? halfHeight : tilesHeight;
@@ -335,7 +335,7 @@ FfxDofErrorCode ContextVK::createImages() {
 
         auto info = makeInfo<VkImageCreateInfo>(VK_STRUCTURE_TYPE_IMAGE_CREATE_INFO);
         info.imageType = VK_IMAGE_TYPE_2D;
-        info.format = spec.format;
+        info.format = toVkFormat(spec.format);
         info.extent = {image.width, image.height, 1};
         info.mipLevels = image.mipLevels;
         info.arrayLayers = 1;
@@ -376,7 +376,7 @@ FfxDofErrorCode ContextVK::createImages() {
         auto view = makeInfo<VkImageViewCreateInfo>(VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO);
         view.image = image.image;
         view.viewType = VK_IMAGE_VIEW_TYPE_2D;
-        view.format = kInternalImages[i].format;
+        view.format = toVkFormat(kInternalImages[i].format);
         view.subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, 0, image.mipLevels, 0, 1};
         FFX_DOF_VK_CHECK(fn.vkCreateImageView(device, &view, allocator, &image.allLevels), "vkCreateImageView");
         for (uint32_t level = 0; level < image.mipLevels; ++level) {
