@@ -187,10 +187,11 @@ TEST_CASE("depth images: bad values are counted and located", "[inputs]") {
     depth.at(3, 2) = 3.0f;
     depth.at(4, 3) = 3.0f;
     depth.at(1, 0) = 0.0f;
-    requireCliError([&] { checkLinearDepth(depth, "d.exr"); }, ExitCode::InvalidValue,
-                    "1 value is 0 or negative in the linear depth (view distance in metres");
+    requireCliError(
+        [&] { checkLinearDepth(depth, "d.exr"); }, ExitCode::InvalidValue,
+        "1 value is 0 or negative in the linear depth (first at x=1, y=0: 0); linear depth is the view distance");
     requireCliError([&] { checkDeviceDepth(depth, "d.exr"); }, ExitCode::InvalidValue,
-                    "19 values are outside [0, 1] in the device depth (use --depth-kind linear");
+                    "19 values are outside [0, 1] in the device depth (first at x=0, y=0: 3); use --depth-kind linear");
 }
 
 TEST_CASE("linear depth is converted into (0, 1]", "[inputs]") {

@@ -32,14 +32,15 @@ BadValues findBad(const std::vector<float>& values, size_t valuesPerPixel, IsBad
     return bad;
 }
 
-void throwIfBad(const BadValues& bad, uint32_t width, const std::string& path, const std::string& what) {
+void throwIfBad(const BadValues& bad, uint32_t width, const std::string& path, const std::string& what,
+                const std::string& hint = "") {
     if (bad.count == 0) {
         return;
     }
     std::ostringstream message;
     message << path << ": " << bad.count << (bad.count == 1 ? " value is " : " values are ") << what
             << " (first at x=" << bad.firstIndex % width << ", y=" << bad.firstIndex / width << ": " << bad.firstValue
-            << ")";
+            << ")" << (hint.empty() ? "" : "; ") << hint;
     throw CliError(ExitCode::InvalidValue, message.str());
 }
 
@@ -70,7 +71,8 @@ double checkLinearDepth(const io::ImageR& depth, const std::string& path) {
     throwIfBad(findBad(depth.pixels, 1, [](float v) { return !std::isfinite(v); }), depth.width, path,
                "not finite in the depth");
     throwIfBad(findBad(depth.pixels, 1, [](float v) { return v <= 0.0f; }), depth.width, path,
-               "0 or negative in the linear depth (view distance in metres; use --depth-kind device for z-buffers)");
+               "0 or negative in the linear depth",
+               "linear depth is the view distance in metres; use --depth-kind device for z-buffers");
     double nearest = INFINITY;
     for (float z : depth.pixels) {
         nearest = std::fmin(nearest, double(z));
@@ -82,7 +84,7 @@ void checkDeviceDepth(const io::ImageR& depth, const std::string& path) {
     throwIfBad(findBad(depth.pixels, 1, [](float v) { return !std::isfinite(v); }), depth.width, path,
                "not finite in the depth");
     throwIfBad(findBad(depth.pixels, 1, [](float v) { return v < 0.0f || v > 1.0f; }), depth.width, path,
-               "outside [0, 1] in the device depth (use --depth-kind linear for distances)");
+               "outside [0, 1] in the device depth", "use --depth-kind linear for distances in metres");
 }
 
 EffectDepth linearToEffectDepth(const io::ImageR& depth, const std::string& path) {

@@ -21,6 +21,9 @@
 
 namespace ffxdof::cli {
 
+// The f-number when neither --fstop nor --aperture-radius is given.
+constexpr double kDefaultFNumber = 2.8;
+
 // A thin lens as given on the command line.
 struct LensSettings {
     double focusMetres = 0.0;                    // distance of the plane in focus, metres, > focal length

@@ -75,7 +75,8 @@ CLI::App* addApply(CLI::App& app, ApplyArguments& args) {
     apply->add_option("--focus", o.lens.focusMetres, "Distance in focus, metres")->required();
     apply->add_option("--focal-length", o.lens.focalLengthMm, "Focal length, millimetres")->capture_default_str();
     apply->add_option("--sensor-width", o.lens.sensorWidthMm, "Sensor width, millimetres")->capture_default_str();
-    args.fstopOption = apply->add_option("--fstop", args.fNumber, "f-number (default 2.8)");
+    args.fstopOption = apply->add_option("--fstop", args.fNumber,
+                                         "f-number (default " + CLI::detail::to_string(kDefaultFNumber) + ")");
     args.apertureOption = apply->add_option("--aperture-radius", args.apertureRadius, "Aperture radius, metres");
     args.fstopOption->excludes(args.apertureOption);
     addEffectOptions(*apply, o.effect);
@@ -112,7 +113,7 @@ ApplyOptions finishApply(ApplyArguments& args) {
     } else if (args.apertureOption->count() > 0) {
         o.lens.apertureRadiusMetres = args.apertureRadius;
     } else {
-        o.lens.fNumber = 2.8;
+        o.lens.fNumber = kDefaultFNumber;
     }
     return o;
 }
