@@ -1,0 +1,128 @@
+// With FFX_DOF_VK_USE_HLSL_SHADERS the backend must create its pipelines from the HLSL-compiled
+// blobs, and from the permutation the context's options call for. The test hands the backend a
+// vkGetDeviceProcAddr that wraps vkCreateShaderModule, records the SPIR-V of every module the
+// context creates, and compares it word for word with the blob the embedded tables give for the
+// expected key. Without this check, a backend that ignored the flag would make the HLSL-vs-GLSL
+// comparison pass trivially (GLSL against itself).
+#include "hlsl_test_support.h"
+
+#include "ffx_dof_vk_shaders_glsl.h"
+#include "ffx_dof_vk_shaders_hlsl.h"
+
+#include <cstring>
+#include <vector>
+
+using namespace ffxdof;
+using namespace ffxdof::hlsltest;
+
+namespace {
+
+// The wrapper is a plain function pointer, so what it records lives at namespace scope (one test
+// thread; cleared before each context).
+std::vector<std::vector<uint32_t>> recordedModules;
+PFN_vkCreateShaderModule realCreateShaderModule = nullptr;
+
+VKAPI_ATTR VkResult VKAPI_CALL recordingCreateShaderModule(VkDevice device, const VkShaderModuleCreateInfo* info,
+                                                           const VkAllocationCallbacks* allocator,
+                                                           VkShaderModule* module) {
+    const uint32_t* words = info->pCode;
+    recordedModules.emplace_back(words, words + info->codeSize / sizeof(uint32_t));
+    return realCreateShaderModule(device, info, allocator, module);
+}
+
+VKAPI_ATTR PFN_vkVoidFunction VKAPI_CALL recordingGetDeviceProcAddr(VkDevice device, const char* name) {
+    if (std::strcmp(name, "vkCreateShaderModule") == 0) {
+        realCreateShaderModule = reinterpret_cast<PFN_vkCreateShaderModule>(vkGetDeviceProcAddr(device, name));
+        return reinterpret_cast<PFN_vkVoidFunction>(&recordingCreateShaderModule);
+    }
+    return vkGetDeviceProcAddr(device, name);
+}
+
+struct Options {
+    bool hlsl, half, reversedDepth, ringMerge, inPlace;
+};
+
+const shaders::PassTable* tableFor(bool hlsl, const char* pass) {
+    return hlsl ? shaders::hlsl::findPassTable(pass) : shaders::glsl::findPassTable(pass);
+}
+
+// The blob the options call for: each axis the table has gets the options' value.
+const shaders::Blob& expectedBlob(const shaders::PassTable& table, const Options& options) {
+    std::vector<shaders::Define> key;
+    for (uint32_t a = 0; a < table.axisCount; ++a) {
+        const std::string macro = table.axes[a].macro;
+        uint32_t value = 0;
+        if (macro == "FFX_HALF")
+            value = options.half;
+        else if (macro == "FFX_DOF_OPTION_REVERSE_DEPTH")
+            value = options.reversedDepth;
+        else if (macro == "FFX_DOF_OPTION_MAX_RING_MERGE_LOG")
+            value = options.ringMerge;
+        else if (macro == "FFX_DOF_OPTION_COMBINE_IN_PLACE")
+            value = options.inPlace;
+        else if (macro != "FFX_DOF_OPTION_WAVE64")
+            FAIL("axis " << macro << " is unknown to this test");
+        key.emplace_back(macro, value);
+    }
+    std::string error;
+    const shaders::Blob* blob = shaders::findPermutation(table, key, &error);
+    INFO(error);
+    REQUIRE(blob != nullptr);
+    return *blob;
+}
+
+bool sameWords(const std::vector<uint32_t>& words, const shaders::Blob& blob) {
+    return words.size() == blob.wordCount && std::memcmp(words.data(), blob.words, blob.wordCount * 4) == 0;
+}
+
+}  // namespace
+
+TEST_CASE("the backend creates its pipelines from the blobs of the chosen language and permutation", "[vulkan][hlsl]") {
+    vkrun::Device& device = validatedDevice();
+    REQUIRE(device.features().shaderFloat16);
+    REQUIRE(device.features().storageBuffer16BitAccess);
+    for (uint32_t bits = 0; bits < 32; ++bits) {
+        const Options options{(bits & 1) != 0, (bits & 2) != 0, (bits & 4) != 0, (bits & 8) != 0, (bits & 16) != 0};
+        CAPTURE(options.hlsl, options.half, options.reversedDepth, options.ringMerge, options.inPlace);
+        uint32_t backendFlags = FFX_DOF_VK_DISABLE_WAVE64;
+        if (options.hlsl) backendFlags |= FFX_DOF_VK_USE_HLSL_SHADERS;
+        if (!options.half) backendFlags |= FFX_DOF_VK_DISABLE_FLOAT16;
+        FfxDofBackendDescriptionVK description = device.backendDescription(backendFlags);
+        description.vkGetDeviceProcAddr = &recordingGetDeviceProcAddr;
+        FfxDofBackend backend = nullptr;
+        REQUIRE(ffxDofBackendCreateVK(&description, &backend) == FFX_DOF_OK);
+
+        FfxDofContextDescription contextInfo{};
+        contextInfo.quality = 4;
+        contextInfo.resolution = {67, 41};
+        contextInfo.cocLimitFactor = 0.05f;
+        contextInfo.flags = contextFlags(options.reversedDepth, options.ringMerge) |
+                            (options.inPlace ? uint32_t(FFX_DOF_OUTPUT_PRE_INIT) : 0u);
+        contextInfo.backendInterface = backend;
+        recordedModules.clear();
+        FfxDofContext context = nullptr;
+        const FfxDofErrorCode created = ffxDofContextCreate(&context, &contextInfo);
+        INFO(ffxDofGetLastErrorMessage());
+        CHECK(created == FFX_DOF_OK);
+        ffxDofContextDestroy(&context);
+        ffxDofBackendDestroy(backend);
+        requireNoValidationMessages(device, options.hlsl ? "HLSL pipelines" : "GLSL pipelines");
+
+        // One module per pass, each exactly the expected blob of the chosen language.
+        REQUIRE(recordedModules.size() == ffxdof::shaders::glsl::kPassTableCount);
+        for (const std::vector<uint32_t>& module : recordedModules) {
+            bool matched = false;
+            for (uint32_t t = 0; t < shaders::glsl::kPassTableCount && !matched; ++t) {
+                const char* pass = shaders::glsl::kPassTables[t]->pass;
+                const shaders::PassTable* own = tableFor(options.hlsl, pass);
+                const shaders::PassTable* other = tableFor(!options.hlsl, pass);
+                REQUIRE(own != nullptr);
+                REQUIRE(other != nullptr);
+                INFO("pass " << pass);
+                for (uint32_t b = 0; b < other->blobCount; ++b) CHECK_FALSE(sameWords(module, other->blobs[b]));
+                matched = sameWords(module, expectedBlob(*own, options));
+            }
+            CHECK(matched);
+        }
+    }
+}
