@@ -213,6 +213,7 @@ TEST_CASE("input file errors", "[cli]") {
     requireError(runProgram(applyArguments(folder, {{"--color", folder / "grey.exr"}})), 2, "grey.exr");
     requireError(runProgram(applyArguments(folder, {{"--depth", folder / "color.exr"}})), 2, "color.exr");
     requireError(runProgram(applyArguments(folder, {{"--depth-channel", "depth.V"}})), 2, "depth.V");
+    requireError(runProgram(applyArguments(folder, {{"--color-layer", "beauty"}})), 2, "beauty.R");
 }
 
 TEST_CASE("invalid values", "[cli]") {

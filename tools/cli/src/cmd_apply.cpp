@@ -49,7 +49,7 @@ void runApply(const ApplyOptions& options) {
         projection = deviceProjection(options);
     }
 
-    const io::ImageRGBA color = readInput([&] { return io::readExrColor(options.colorPath); });
+    const io::ImageRGBA color = readInput([&] { return io::readExrColor(options.colorPath, options.colorLayer); });
     const io::ImageR depth = readInput([&] { return io::readExrChannel(options.depthPath, options.depthChannel); });
     checkResolutions(color, options.colorPath, depth, options.depthPath);
     checkColorFinite(color, options.colorPath);

@@ -28,6 +28,7 @@ struct ApplyOptions {
     std::string colorPath;
     std::string depthPath;
     std::string outputPath;
+    std::string colorLayer;    // empty: the default layer's R, G, B (A)
     std::string depthChannel;  // empty: the file's only channel
     DepthKind depthKind = DepthKind::Linear;
     std::optional<double> nearPlane;

@@ -52,6 +52,8 @@ CLI::App* addApply(CLI::App& app, ApplyArguments& args) {
     apply->add_option("--color", o.colorPath, "Color EXR (R, G, B and optional A)")->required();
     apply->add_option("--depth", o.depthPath, "Depth EXR (one channel, or see --depth-channel)")->required();
     apply->add_option("--out", o.outputPath, "Output file: .exr (half float) or .png (8-bit sRGB)")->required();
+    apply->add_option("--color-layer", o.colorLayer,
+                      "Layer of the color in a multilayer EXR: reads LAYER.R, LAYER.G, LAYER.B (LAYER.A)");
     apply->add_option("--depth-channel", o.depthChannel, "Depth channel name in a multi-channel EXR, e.g. Z");
     apply
         ->add_option("--depth-kind", args.depthKind,
