@@ -47,6 +47,12 @@ FFX_DOF_INLINE FfxInt32x2 ffxDofMipTexel(FfxFloat32x2 position, FfxUInt32 mip, F
     return clamp(texel, FfxInt32x2(0, 0), FfxInt32x2(size) - FfxInt32x2(1, 1));
 }
 
+// Centre of texel `texel` of MIP `mip`, in half-res px.
+FFX_DOF_INLINE FfxFloat32x2 ffxDofMipTexelCenter(FfxInt32x2 texel, FfxUInt32 mip)
+{
+    return (FfxFloat32x2(texel) + FfxFloat32x2(0.5f, 0.5f)) * FfxFloat32(1u << mip);
+}
+
 struct FfxDofBlurResult
 {
     FfxDofFloat3 nearColor;
@@ -80,7 +86,8 @@ FFX_DOF_INLINE FfxDofBlurResult ffxDofBlurTexel(FfxUInt32x2 texel, FfxFloat32x2 
 
     FfxFloat32 spacing = kernelRadius / FfxFloat32(rings);
     FfxUInt32 baseMip = FfxUInt32(ffxDofMipForSpacing(spacing));
-    FfxFloat32x2 origin = FfxFloat32x2(texel) + FfxFloat32x2(0.5f, 0.5f) + ffxDofKernelJitter(texel, constants.frameIndex);
+    FfxFloat32x2 center = FfxFloat32x2(texel) + FfxFloat32x2(0.5f, 0.5f);
+    FfxFloat32x2 origin = center + ffxDofKernelJitter(texel, constants.frameIndex);
 
     FfxFloat32x3 nearSum = FfxFloat32x3(0.0f, 0.0f, 0.0f);
     FfxFloat32 nearWeight = 0.0f;
@@ -105,7 +112,6 @@ FFX_DOF_INLINE FfxDofBlurResult ffxDofBlurTexel(FfxUInt32x2 texel, FfxFloat32x2 
             FfxUInt32 first = ringIndex + 1u > mergeStep ? ringIndex + 1u - mergeStep : 1u;
             ringWeight = FfxFloat32((first + ringIndex) * (ringIndex - first + 1u)) / FfxFloat32(2u * ringIndex);
         }
-        FfxFloat32 distance = FfxFloat32(ringIndex) * spacing;
         FfxUInt32 sampleCount = ffxDofRingSampleCount(ringIndex);
         FfxDofBucket ringBucket = ffxDofEmptyBucket();
         FFX_DOF_LOOP
@@ -115,6 +121,9 @@ FFX_DOF_INLINE FfxDofBlurResult ffxDofBlurTexel(FfxUInt32x2 texel, FfxFloat32x2 
             FfxInt32x2 sampleTexel = ffxDofMipTexel(position, mip, constants.halfSize);
             FfxDofFloat3 color = ffxDofLoadColorMip(sampleTexel, mip);
             FfxFloat32 coc = ffxDofLoadCocMip(sampleTexel, mip);
+            // Reach is judged from the centre of the texel actually read, not from the ring: the
+            // ring distance would let a texel spread half a texel beyond its radius.
+            FfxFloat32 distance = length(ffxDofMipTexelCenter(sampleTexel, mip) - center);
             if (withNear && coc >= FFX_DOF_NEAR_THRESHOLD)
             {
                 FfxFloat32 weight = ffxDofReach(coc, distance) * ffxDofAreaWeight(coc) * ringWeight;
@@ -158,8 +167,8 @@ FFX_DOF_INLINE void ffxDofBlur(FfxUInt32x2 groupId, FfxUInt32 localIndex)
     if (texel.x >= constants.halfSize.x || texel.y >= constants.halfSize.y)
         return;
     FfxDofBlurResult result = ffxDofBlurTexel(texel, ffxDofLoadDilatedTile(groupId), constants);
-    ffxDofStoreNearColor(texel, result.nearColor);
-    ffxDofStoreFarColor(texel, result.farColor);
+    ffxDofStoreNearColor(texel, ffxDofRoundForPackedColor(result.nearColor));
+    ffxDofStoreFarColor(texel, ffxDofRoundForPackedColor(result.farColor));
     ffxDofStoreLayerAlpha(texel, result.alpha);
 }
 

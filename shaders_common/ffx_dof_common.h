@@ -57,6 +57,14 @@
 // the centre is covered fully. Numerically integrated; tests/shaders recomputes them.
 #define FFX_DOF_FIXED_BLUR_EDGE_WEIGHT 0.9718f
 #define FFX_DOF_FIXED_BLUR_CORNER_WEIGHT 0.5454f
+// Per-axis variance of that 3x3 kernel, in half-res px^2: (2 * edge + 4 * corner) / (1 + 4 * edge +
+// 4 * corner) full-res px^2, divided by 4.
+#define FFX_DOF_FIXED_BLUR_VARIANCE 0.1459f
+// Per-axis variance, in half-res px^2, that the far layer adds to its disc: the 2x2 downsample box
+// (1/12), the bilinear upsample (1/6), the kernel jitter and the half-pixel anti-aliased reach.
+#define FFX_DOF_FAR_LAYER_EXTRA_VARIANCE 0.3f
+// From this |radius| (half-res px) on, the far layer alone makes the pixel.
+#define FFX_DOF_FAR_LAYER_ONLY_RADIUS 3.0f
 
 // ---- CoC ----------------------------------------------------------------------------------------
 
@@ -108,6 +116,26 @@ FFX_DOF_INLINE void ffxDofBilateralReduce(FfxDofFloat3 color0, FfxDofFloat3 colo
     color = (color0 + color1 * FfxDofFloat(weight1) + color2 * FfxDofFloat(weight2) + color3 * FfxDofFloat(weight3)) *
             FfxDofFloat(normalization);
     coc = (coc0 + coc1 * weight1 + coc2 * weight2 + coc3 * weight3) * normalization;
+}
+
+// ---- Storage ------------------------------------------------------------------------------------
+
+// Rounds a non-negative float to nearest with `mantissaBits` bits of mantissa. The packed float
+// formats of the half-res color images (B10G11R11: 6, 6 and 5 bits) may be written by truncation
+// (lavapipe does), which darkens every stored color by half a unit in the last place on average, a
+// bias that adds up over the two stores a blurred pixel goes through; rounding first makes the
+// store exact whichever rounding the device uses.
+FFX_DOF_INLINE FfxFloat32 ffxDofRoundMantissa(FfxFloat32 value, FfxUInt32 mantissaBits)
+{
+    FfxUInt32 dropped = 23u - mantissaBits;
+    FfxUInt32 bits = ffxDofAsUInt(max(value, 0.0f)) + (1u << (dropped - 1u));
+    return ffxDofAsFloat(bits & ~((1u << dropped) - 1u));
+}
+FFX_DOF_INLINE FfxDofFloat3 ffxDofRoundForPackedColor(FfxDofFloat3 color)
+{
+    return FfxDofFloat3(FfxDofFloat(ffxDofRoundMantissa(FfxFloat32(color.x), 6u)),
+                        FfxDofFloat(ffxDofRoundMantissa(FfxFloat32(color.y), 6u)),
+                        FfxDofFloat(ffxDofRoundMantissa(FfxFloat32(color.z), 5u)));
 }
 
 // ---- Workgroup and tile arithmetic --------------------------------------------------------------
@@ -355,15 +383,27 @@ FFX_DOF_INLINE FfxFloat32 ffxDofUpsampleCocWeight(FfxFloat32 tapCoc, FfxFloat32 
     return max(ffxDofSaturate(1.0f - abs(tapCoc - pixelCoc) / tolerance), 1e-3f);
 }
 
-// Blend weights of the layers below the near field, from the pixel's |radius| (half-res px):
-// the fixed 3x3 blur covers 0.5..1.5, the far-field layer takes over from 1 to 2.
+// Blend weights of the layers below the near field, from the pixel's |radius| (half-res px). The
+// layers are blended so that the second moment of the combined kernel (mixing kernels adds their
+// variances, weighted) matches that of the pixel's disc, |radius|^2 / 4 per axis: the fixed 3x3 blur
+// (FFX_DOF_FIXED_BLUR_VARIANCE) is mixed into the input until it alone is right, then the far layer
+// (the disc plus FFX_DOF_FAR_LAYER_EXTRA_VARIANCE from half-res processing) into the fixed blur.
+// Any other choice blurs the small radii behind the focus too little or too much.
+FFX_DOF_INLINE FfxFloat32 ffxDofDiscVariance(FfxFloat32 absCoc)
+{
+    return 0.25f * absCoc * absCoc;
+}
 FFX_DOF_INLINE FfxFloat32 ffxDofFixedBlurBlend(FfxFloat32 absCoc, FfxFloat32 nearOpacity)
 {
-    return nearOpacity > FFX_DOF_NEAR_BLOCKS_FIXED_BLUR ? 0.0f : ffxDofSaturate(absCoc - FFX_DOF_IN_FOCUS_RADIUS);
+    return nearOpacity > FFX_DOF_NEAR_BLOCKS_FIXED_BLUR ? 0.0f
+                                                        : ffxDofSaturate(ffxDofDiscVariance(absCoc) / FFX_DOF_FIXED_BLUR_VARIANCE);
 }
 FFX_DOF_INLINE FfxFloat32 ffxDofFarBlend(FfxFloat32 absCoc, FfxFloat32 farValidity)
 {
-    return ffxDofSaturate(absCoc - 1.0f) * farValidity;
+    FfxFloat32 excess = ffxDofDiscVariance(absCoc) - FFX_DOF_FIXED_BLUR_VARIANCE;
+    FfxFloat32 matched = excess / max(excess + FFX_DOF_FAR_LAYER_EXTRA_VARIANCE, 1e-6f);
+    // From a radius of 2 the mixture's sharp remainder shows more than the excess spread: fade it out.
+    return ffxDofSaturate(max(matched, absCoc - FFX_DOF_FAR_LAYER_ONLY_RADIUS + 1.0f)) * farValidity;
 }
 
 // sRGB encoding for outputs written through a UNORM view of an sRGB image.

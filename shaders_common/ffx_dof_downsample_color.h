@@ -48,7 +48,7 @@ FFX_DOF_INLINE void ffxDofDownsampleColor(FfxUInt32x2 groupId, FfxUInt32 localIn
                           ffxDofLoadInputColorRgb(pixel3), coc0, coc1, coc2, coc3, color, coc);
     if (texel.x < constants.halfSize.x && texel.y < constants.halfSize.y)
     {
-        ffxDofStoreColorMip(0u, texel, color);
+        ffxDofStoreColorMip(0u, texel, ffxDofRoundForPackedColor(color));
         ffxDofStoreCocMip(0u, texel, coc);
     }
     ffxDofSharedMipColor[localIndex] = color;
@@ -77,7 +77,7 @@ FFX_DOF_INLINE void ffxDofDownsampleColor(FfxUInt32x2 groupId, FfxUInt32 localIn
             FfxUInt32x2 mipSize = ffxDofMipSize(constants.halfSize, mip);
             if (mipTexel.x < mipSize.x && mipTexel.y < mipSize.y)
             {
-                ffxDofStoreColorMip(mip, mipTexel, color);
+                ffxDofStoreColorMip(mip, mipTexel, ffxDofRoundForPackedColor(color));
                 ffxDofStoreCocMip(mip, mipTexel, coc);
             }
         }

@@ -268,13 +268,33 @@ TEST_CASE("Upsample CoC weight favours matching radii", "[upsample]") {
     CHECK(ffxDofUpsampleCocWeight(0.5f, 0.0f) == Approx(0.5f));
 }
 
-TEST_CASE("Layer blend weights", "[composite]") {
-    CHECK(ffxDofFixedBlurBlend(0.4f, 0.0f) == 0.0f);
-    CHECK(ffxDofFixedBlurBlend(1.0f, 0.0f) == Approx(0.5f));
-    CHECK(ffxDofFixedBlurBlend(1.0f, 0.5f) == 0.0f);
-    CHECK(ffxDofFarBlend(1.0f, 1.0f) == 0.0f);
-    CHECK(ffxDofFarBlend(1.5f, 1.0f) == Approx(0.5f));
+TEST_CASE("Layer blend weights match the variance of the pixel's disc", "[composite]") {
+    // Per-axis variance of the fixed 3x3 kernel, from its weights, in half-res px^2.
+    double weightSum = 0.0, moment = 0.0;
+    for (int dy = -1; dy <= 1; ++dy) {
+        for (int dx = -1; dx <= 1; ++dx) {
+            weightSum += ffxDofFixedBlurWeight(dx, dy);
+            moment += ffxDofFixedBlurWeight(dx, dy) * dx * dx;
+        }
+    }
+    const double fixedVariance = moment / weightSum / 4.0;
+    CHECK(FFX_DOF_FIXED_BLUR_VARIANCE == Approx(fixedVariance).epsilon(1e-3));
+    // A disc of radius r (half-res px = 2r full-res px) has a per-axis variance of (2r)^2 / 4 full-res
+    // px^2, r^2 / 4 half-res px^2.
+    for (float r : {0.5f, 0.6f, 0.7f}) {
+        CHECK(ffxDofFixedBlurBlend(r, 0.0f) * fixedVariance == Approx(r * r / 4.0).epsilon(1e-3));
+        CHECK(ffxDofFarBlend(r, 1.0f) == 0.0f);
+    }
+    CHECK(ffxDofFixedBlurBlend(1.0f, 0.0f) == 1.0f);
+    CHECK(ffxDofFixedBlurBlend(1.0f, 0.5f) == 0.0f);  // near opacity above 0.3 blocks the fixed blur
+    for (float r : {1.0f, 1.5f, 1.9f}) {
+        const double a = ffxDofFarBlend(r, 1.0f);
+        const double mixed = a * (r * r / 4.0 + FFX_DOF_FAR_LAYER_EXTRA_VARIANCE) + (1.0 - a) * fixedVariance;
+        CHECK(mixed == Approx(r * r / 4.0).epsilon(1e-3));
+    }
+    CHECK(ffxDofFarBlend(3.0f, 1.0f) == 1.0f);
     CHECK(ffxDofFarBlend(3.0f, 0.25f) == Approx(0.25f));
+    CHECK(ffxDofFarBlend(2.5f, 1.0f) > ffxDofFarBlend(2.0f, 1.0f));
 }
 
 TEST_CASE("sRGB encoding", "[composite]") {
@@ -300,4 +320,22 @@ TEST_CASE("Kernel jitter stays sub-pixel and varies", "[kernel]") {
         varies = varies || j != first;
     }
     CHECK(varies);
+}
+
+TEST_CASE("Colors are rounded to nearest before a packed-float store", "[storage]") {
+    CHECK(ffxDofRoundMantissa(1.0f + 1.0f / 256.0f, 6u) == 1.0f);
+    CHECK(ffxDofRoundMantissa(1.0f + 3.0f / 256.0f, 6u) == 1.0f + 1.0f / 64.0f);
+    CHECK(ffxDofRoundMantissa(0.75f - 1e-4f, 6u) == 0.75f);
+    CHECK(ffxDofRoundMantissa(0.0f, 5u) == 0.0f);
+    CHECK(ffxDofRoundMantissa(-1.0f, 5u) == 0.0f);
+    // Every result is representable with the given mantissa, and within half a unit in the last place.
+    for (int i = 1; i < 5000; ++i) {
+        const float x = float(i) * 0.00137f;
+        const float r = ffxDofRoundMantissa(x, 5u);
+        REQUIRE((ffxDofAsUInt(r) & ((1u << 18) - 1u)) == 0u);
+        REQUIRE(std::fabs(r - x) <= std::ldexp(1.0f, std::ilogb(x) - 6) * 1.0001f);
+    }
+    const FfxDofFloat3 rounded = ffxDofRoundForPackedColor(FfxDofFloat3(1.0f + 3.0f / 256.0f));
+    CHECK(float(rounded.x) == 1.0f + 1.0f / 64.0f);
+    CHECK(float(rounded.z) == 1.0f);  // blue keeps 5 bits: 3/256 is below half of 1/32
 }

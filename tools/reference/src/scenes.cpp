@@ -162,7 +162,12 @@ SceneSetup singlePoint(uint32_t width, uint32_t height) {
     Camera& camera = setup.camera;
     const double z = 20.0;
     setApertureForBlur(camera, z, std::max(6.0, 0.03 * width));
-    setup.scene.addEmitter({0.0, 0.0, z}, emitterRadiusForPixels(camera, z, 0.4), {1.0f, 1.0f, 1.0f}, 50.0f);
+    // Centred on a pixel centre (half a pixel right of and below the image centre): the pinhole depth
+    // is traced through pixel centres only, so a point between four centres would be missing from the
+    // depth buffer, and the effect would blur it with the background's radius instead of its own.
+    const double halfPixel = emitterRadiusForPixels(camera, z, 0.5);
+    setup.scene.addEmitter({halfPixel, -halfPixel, z}, emitterRadiusForPixels(camera, z, 0.4), {1.0f, 1.0f, 1.0f},
+                           50.0f);
     return setup;
 }
 
