@@ -5,6 +5,7 @@
 
 #include "ffx_dof.h"
 #include "ffx_dof_reference.h"
+#include "ffx_dof_validated_device.h"
 #include "ffx_dof_vkrun.h"
 
 #include <catch2/catch.hpp>
@@ -16,23 +17,8 @@
 
 namespace ffxdof::hlsltest {
 
-// The device with VK_LAYER_KHRONOS_validation and synchronization validation on.
-inline vkrun::Device& validatedDevice() {
-    static std::unique_ptr<vkrun::Device> device = [] {
-        vkrun::DeviceOptions options;
-        options.validation = true;
-        return std::make_unique<vkrun::Device>(options);
-    }();
-    return *device;
-}
-
-// Any validation message fails the calling test; `what` says which run produced it.
-inline void requireNoValidationMessages(vkrun::Device& device, const std::string& what) {
-    const std::vector<std::string> messages = device.validationMessages();
-    device.clearValidationMessages();
-    for (const std::string& message : messages) UNSCOPED_INFO(what << ": validation: " << message);
-    REQUIRE(messages.empty());
-}
+using ffxdof::testing::requireNoValidationMessages;
+using ffxdof::testing::validatedDevice;
 
 // FfxDofInitializationFlagBits for the option axes a context chooses (the in-place flag, with its
 // separate handling in vkrun, is left to the caller).

@@ -2,6 +2,7 @@
 // comparisons. Every test ends with requireNoValidationMessages: any message fails it.
 #pragma once
 
+#include "ffx_dof_validated_device.h"
 #include "ffx_dof_vkrun.h"
 #include "vkrun_internal.h"
 
@@ -14,22 +15,8 @@
 
 namespace ffxdof::vktest {
 
-// The device with VK_LAYER_KHRONOS_validation and synchronization validation on.
-inline vkrun::Device& validatedDevice() {
-    static std::unique_ptr<vkrun::Device> device = [] {
-        vkrun::DeviceOptions options;
-        options.validation = true;
-        return std::make_unique<vkrun::Device>(options);
-    }();
-    return *device;
-}
-
-inline void requireNoValidationMessages(vkrun::Device& device) {
-    const std::vector<std::string> messages = device.validationMessages();
-    device.clearValidationMessages();
-    for (const std::string& message : messages) UNSCOPED_INFO("validation: " << message);
-    REQUIRE(messages.empty());
-}
+using ffxdof::testing::requireNoValidationMessages;
+using ffxdof::testing::validatedDevice;
 
 // A procedural scene: a textured background plane far behind the focus, a band in focus, and a
 // bright near disc in front. Depth is device depth in [0, 1] (0 = near); the CoC is affine in it:
