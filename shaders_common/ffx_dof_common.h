@@ -413,4 +413,10 @@ FFX_DOF_INLINE FfxFloat32 ffxDofLinearToSrgb(FfxFloat32 x)
     return c <= 0.0031308f ? c * 12.92f : 1.055f * pow(c, 1.0f / 2.4f) - 0.055f;
 }
 
+// sRGB decoding, for an in-place input read back through a UNORM view of an sRGB image.
+FFX_DOF_INLINE FfxFloat32 ffxDofSrgbToLinear(FfxFloat32 x)
+{
+    return x <= 0.04045f ? x / 12.92f : pow((x + 0.055f) / 1.055f, 2.4f);
+}
+
 #endif  // FFX_DOF_COMMON_H

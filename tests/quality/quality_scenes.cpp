@@ -83,7 +83,7 @@ metrics::Mask undisturbedInFocusMask(const io::ImageR& radiusPixels) {
     return mask;
 }
 
-GateResult runGate(vkrun::Device& device, const SceneRender& render) {
+GateResult runGate(vkrun::Device& device, const SceneRender& render, bool inPlace) {
     const ref::Camera& camera = render.setup.camera;
     const uint32_t w = camera.width, h = camera.height;
     vkrun::HostImage color(w, h, 4), depth(w, h, 1);
@@ -113,6 +113,7 @@ GateResult runGate(vkrun::Device& device, const SceneRender& render) {
     settings.cocLimitFactor = result.cocLimitFactor;
     settings.cocScale = result.cocScale;
     settings.cocBias = result.cocBias;
+    settings.inPlace = inPlace;
     const vkrun::RunResult run = vkrun::runEffect(device, color, depth, settings);
     result.ours = io::ImageRGBA(w, h);
     result.ours.pixels = run.output.pixels;
