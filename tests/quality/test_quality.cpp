@@ -76,8 +76,8 @@ TEST_CASE("bokeh of a single far point: radius, flatness, energy", "[quality][vu
     CHECK(check.energyOk);
 }
 TEST_CASE("in place equals out of place within the documented tolerance", "[quality][vulkan]") {
-    // Documented tolerance (docs/technique.md): in place, the fixed 3x3 blur of a tile's border pixels reads its outer neighbours from the
-    // half-res color (ffx_dof_composite.h): the only difference to out of place.
+    // Documented tolerance (docs/technique.md): in place, the fixed 3x3 blur of a tile's border pixels reads its outer
+    // neighbours from the half-res color (ffx_dof_composite.h): the only difference to out of place.
     const quality::SceneRender render = quality::renderScene("floor");
     vkrun::Device& device = sharedDevice();
     device.clearValidationMessages();
