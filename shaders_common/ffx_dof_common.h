@@ -192,6 +192,15 @@ FFX_DOF_INLINE FfxFloat32x2 ffxDofRingSamplePosition(FfxUInt32 ring, FfxUInt32 s
     return FfxFloat32x2(cos(angle), sin(angle)) * FfxFloat32(ring);
 }
 
+// Rotation (cos, sin) from sample i to sample i + 1 of ring `ring`: the blur walks a ring by
+// rotating the previous offset, with no transcendental per sample. A non-circular shape replaces
+// this together with the two functions above.
+FFX_DOF_INLINE FfxFloat32x2 ffxDofRingSampleStep(FfxUInt32 ring)
+{
+    FfxFloat32 angle = 6.28318530718f / FfxFloat32(ffxDofRingSampleCount(ring));
+    return FfxFloat32x2(cos(angle), sin(angle));
+}
+
 // ---- Kernel size --------------------------------------------------------------------------------
 
 // Rings for a kernel of `radius`: none below the in-focus radius (the pixel is copied), else one per
