@@ -13,9 +13,11 @@
 //   of reach, and that average is the far color where no far-field sample reaches.
 // Tile classes: copy (every radius that reaches the tile is in focus; equal to R < 0.5 per texel);
 // far-only (no near radius reaches: the near branch is skipped, which changes nothing because a
-// near sample from a tile that does not reach has zero reach); flat far field (all radii within one
-// pixel of each other) with FFX_DOF_OPTION_MAX_RING_MERGE_LOG > 0: inner rings are gathered from a
-// coarser MIP, 2^log rings at a time, the outermost ring at full resolution to keep the circle.
+// near sample from a tile that does not reach has zero reach).
+// Ring merging (FFX_DOF_OPTION_MAX_RING_MERGE_LOG > 0) is decided per texel, not per tile: the
+// outermost ring is gathered at full resolution first; where its radii are all within half a pixel
+// of the texel's own (a flat far field), inner rings are gathered from a coarser MIP, 2^log rings at
+// a time; between half a pixel and one pixel both paths run and are mixed (ffxDofRingMergeAmount).
 // Samples are point-sampled (no bilinear mixing of a foreground and a background texel, which
 // would let the foreground color leak with a halfway radius).
 //
@@ -35,9 +37,6 @@ void ffxDofStoreFarColor(FfxUInt32x2 texel, FfxDofFloat3 color);
 void ffxDofStoreLayerAlpha(FfxUInt32x2 texel, FfxFloat32x2 nearOpacityFarValidity);
 #endif
 
-// Below this spread of radii (half-res px) a far-field tile counts as flat for ring merging.
-#define FFX_DOF_FLAT_RADIUS_RANGE 1.0f
-
 // Centre of texel `texel` of MIP `mip`, in half-res px.
 FFX_DOF_INLINE FfxFloat32x2 ffxDofMipTexelCenter(FfxInt32x2 texel, FfxUInt32 mip)
 {
@@ -51,51 +50,44 @@ struct FfxDofBlurResult
     FfxFloat32x2 alpha;  // near opacity, far validity
 };
 
-// The blur of one half-res texel; `dilated` is its tile's (far, near) range from pass 3.
-FFX_DOF_INLINE FfxDofBlurResult ffxDofBlurTexel(FfxUInt32x2 texel, FfxFloat32x2 dilated, FfxDofConstants constants)
+// Running sums of the gather of one texel: near sum and weights, hole fill, far buckets.
+struct FfxDofGather
 {
-    FfxDofBlurResult result;
-    result.nearColor = FfxDofFloat3(0.0f, 0.0f, 0.0f);
-    result.farColor = ffxDofLoadColorMip(FfxInt32x2(texel), 0u);
-    result.alpha = FfxFloat32x2(0.0f, 1.0f);
+    FfxFloat32x3 nearSum;
+    FfxFloat32 nearWeight;
+    FfxFloat32x3 fillSum;
+    FfxFloat32 fillCount;
+    FfxFloat32 weightedSamples;
+    FfxDofBucket outer;
+    FfxFloat32 cocSpread;  // largest |radius - own radius| among the samples seen
+};
 
-    FfxFloat32 centerCoc = ffxDofLoadCocMip(FfxInt32x2(texel), 0u);
-    FfxFloat32 nearRadius = max(dilated.y, 0.0f);
-    FfxFloat32 kernelRadius = max(nearRadius, abs(centerCoc));
-    FfxUInt32 rings = ffxDofRingCount(kernelRadius, constants.maxRings);
-    if (rings == 0u)
-        return result;  // in focus: the far layer holds the texel itself
+// What every ring of one texel's kernel shares.
+struct FfxDofKernel
+{
+    FfxFloat32x2 center;
+    FfxFloat32x2 origin;
+    FfxFloat32 centerCoc;
+    FfxFloat32 spacing;
+    FfxUInt32 baseMip;
+    FfxUInt32 rings;
+    FfxBoolean withNear;
+    FfxBoolean centerIsNear;
+};
 
-    FfxBoolean withNear = dilated.y >= FFX_DOF_NEAR_THRESHOLD;
-    FfxBoolean centerIsNear = centerCoc >= FFX_DOF_NEAR_THRESHOLD;
-    FfxUInt32 mergeLog = 0u;
-#if FFX_DOF_OPTION_MAX_RING_MERGE_LOG > 0
-    if (dilated.y <= -FFX_DOF_IN_FOCUS_RADIUS && dilated.y - dilated.x < FFX_DOF_FLAT_RADIUS_RANGE && rings >= 2u)
-        mergeLog = FfxUInt32(FFX_DOF_OPTION_MAX_RING_MERGE_LOG);
-#endif
+// Gathers rings firstRing down to lastRing, from the outside in. With mergeLog > 0, a ring also
+// stands for the 2^mergeLog - 1 rings inside it and is sampled from a MIP mergeLog levels coarser.
+FFX_DOF_INLINE void ffxDofGatherRings(FFX_DOF_INOUT(FfxDofGather) gather, FfxDofKernel kernel, FfxInt32 firstRing,
+                                      FfxInt32 lastRing, FfxUInt32 mergeLog, FfxDofConstants constants)
+{
     FfxUInt32 mergeStep = 1u << mergeLog;
-
-    FfxFloat32 spacing = kernelRadius / FfxFloat32(rings);
-    FfxUInt32 baseMip = FfxUInt32(ffxDofMipForSpacing(spacing));
-    FfxFloat32x2 center = FfxFloat32x2(texel) + FfxFloat32x2(0.5f, 0.5f);
-    FfxFloat32x2 origin = center + ffxDofKernelJitter(texel, constants.frameIndex);
-
-    FfxFloat32x3 nearSum = FfxFloat32x3(0.0f, 0.0f, 0.0f);
-    FfxFloat32 nearWeight = 0.0f;
-    FfxFloat32x3 fillSum = FfxFloat32x3(0.0f, 0.0f, 0.0f);
-    FfxFloat32 fillCount = 0.0f;
-    FfxFloat32 weightedSamples = 0.0f;
-    FfxDofBucket outer = ffxDofEmptyBucket();
-
-    // Rings from the outside in. With merging, ring `ring` also stands for the mergeStep - 1 rings
-    // inside it, and is sampled from a MIP mergeLog levels coarser; the outermost ring never merges.
-    FfxInt32 ring = FfxInt32(rings);
+    FfxInt32 ring = firstRing;
     FFX_DOF_LOOP
-    while (ring >= 0)
+    while (ring >= lastRing)
     {
         FfxUInt32 ringIndex = FfxUInt32(ring);
-        FfxBoolean merged = mergeStep > 1u && ringIndex < rings && ringIndex > 0u;
-        FfxUInt32 mip = min(baseMip + (merged ? mergeLog : 0u), FfxUInt32(FFX_DOF_OPTION_MAX_MIP - 1));
+        FfxBoolean merged = mergeStep > 1u && ringIndex < kernel.rings && ringIndex > 0u;
+        FfxUInt32 mip = min(kernel.baseMip + (merged ? mergeLog : 0u), FfxUInt32(FFX_DOF_OPTION_MAX_MIP - 1));
         FfxFloat32 ringWeight = 1.0f;
         if (merged)
         {
@@ -105,54 +97,125 @@ FFX_DOF_INLINE FfxDofBlurResult ffxDofBlurTexel(FfxUInt32x2 texel, FfxFloat32x2 
         }
         FfxUInt32 sampleCount = ffxDofRingSampleCount(ringIndex);
         FfxDofBucket ringBucket = ffxDofEmptyBucket();
-        FfxFloat32x2 offset = ffxDofRingSamplePosition(ringIndex, 0u) * spacing;
+        FfxFloat32x2 offset = ffxDofRingSamplePosition(ringIndex, 0u) * kernel.spacing;
         FfxFloat32x2 step = ffxDofRingSampleStep(ringIndex);
         FfxFloat32 mipScale = 1.0f / FfxFloat32(1u << mip);
         FfxInt32x2 lastTexel = FfxInt32x2(ffxDofMipSize(constants.halfSize, mip)) - FfxInt32x2(1, 1);
         FFX_DOF_LOOP
         for (FfxUInt32 sampleIndex = 0u; sampleIndex < sampleCount; ++sampleIndex)
         {
-            FfxInt32x2 sampleTexel = clamp(FfxInt32x2(floor((origin + offset) * mipScale)), FfxInt32x2(0, 0), lastTexel);
+            FfxInt32x2 sampleTexel = clamp(FfxInt32x2(floor((kernel.origin + offset) * mipScale)), FfxInt32x2(0, 0), lastTexel);
             offset = FfxFloat32x2(offset.x * step.x - offset.y * step.y, offset.x * step.y + offset.y * step.x);
             FfxDofFloat3 color = ffxDofLoadColorMip(sampleTexel, mip);
             FfxFloat32 coc = ffxDofLoadCocMip(sampleTexel, mip);
+            gather.cocSpread = max(gather.cocSpread, abs(coc - kernel.centerCoc));
             // Reach is judged from the centre of the texel actually read, not from the ring: the
             // ring distance would let a texel spread half a texel beyond its radius.
-            FfxFloat32 distance = length(ffxDofMipTexelCenter(sampleTexel, mip) - center);
-            if (withNear && coc >= FFX_DOF_NEAR_THRESHOLD)
+            FfxFloat32 distance = length(ffxDofMipTexelCenter(sampleTexel, mip) - kernel.center);
+            if (kernel.withNear && coc >= FFX_DOF_NEAR_THRESHOLD)
             {
                 FfxFloat32 weight = ffxDofReach(coc, distance) * ffxDofAreaWeight(coc) * ringWeight;
-                nearSum += ffxDofToFloat32x3(color) * weight;
-                nearWeight += weight;
+                gather.nearSum += ffxDofToFloat32x3(color) * weight;
+                gather.nearWeight += weight;
             }
             else
             {
                 ffxDofBucketAdd(ringBucket, color, abs(coc), ffxDofReach(abs(coc), distance), ringWeight);
-                if (centerIsNear)
+                if (kernel.centerIsNear)
                 {
-                    fillSum += ffxDofToFloat32x3(color);
-                    fillCount += 1.0f;
+                    gather.fillSum += ffxDofToFloat32x3(color);
+                    gather.fillCount += 1.0f;
                 }
             }
         }
         ringBucket.sampleCount = FfxFloat32(sampleCount);
-        weightedSamples += FfxFloat32(sampleCount) * ringWeight;
-        outer = ffxDofMergeBuckets(outer, ringBucket, spacing);
+        gather.weightedSamples += FfxFloat32(sampleCount) * ringWeight;
+        gather.outer = ffxDofMergeBuckets(gather.outer, ringBucket, kernel.spacing);
         ring = merged ? max(ring - FfxInt32(mergeStep), 0) : ring - 1;
     }
+}
 
-    if (nearWeight > 0.0f)
+// The layers of one texel from its finished gather; `result` holds the defaults (texel itself).
+FFX_DOF_INLINE FfxDofBlurResult ffxDofFinishGather(FfxDofGather gather, FfxFloat32 kernelRadius, FfxDofBlurResult result)
+{
+    if (gather.nearWeight > 0.0f)
     {
-        result.nearColor = ffxDofToDofFloat3(nearSum / nearWeight);
-        result.alpha.x = ffxDofNearOpacity(nearWeight, kernelRadius, weightedSamples);
+        result.nearColor = ffxDofToDofFloat3(gather.nearSum / gather.nearWeight);
+        result.alpha.x = ffxDofNearOpacity(gather.nearWeight, kernelRadius, gather.weightedSamples);
     }
-    if (outer.weight > 0.0f)
-        result.farColor = ffxDofToDofFloat3(outer.color / outer.weight);
-    else if (fillCount > 0.0f)
-        result.farColor = ffxDofToDofFloat3(fillSum / fillCount);
+    if (gather.outer.weight > 0.0f)
+        result.farColor = ffxDofToDofFloat3(gather.outer.color / gather.outer.weight);
+    else if (gather.fillCount > 0.0f)
+        result.farColor = ffxDofToDofFloat3(gather.fillSum / gather.fillCount);
     else
         result.alpha.y = 0.0f;
     return result;
+}
+
+// The blur of one half-res texel; `dilated` is its tile's (far, near) range from pass 3.
+FFX_DOF_INLINE FfxDofBlurResult ffxDofBlurTexel(FfxUInt32x2 texel, FfxFloat32x2 dilated, FfxDofConstants constants)
+{
+    FfxDofBlurResult result;
+    result.nearColor = FfxDofFloat3(0.0f, 0.0f, 0.0f);
+    result.farColor = ffxDofLoadColorMip(FfxInt32x2(texel), 0u);
+    result.alpha = FfxFloat32x2(0.0f, 1.0f);
+
+    FfxDofKernel kernel;
+    kernel.centerCoc = ffxDofLoadCocMip(FfxInt32x2(texel), 0u);
+    FfxFloat32 nearRadius = max(dilated.y, 0.0f);
+    FfxFloat32 kernelRadius = max(nearRadius, abs(kernel.centerCoc));
+    kernel.rings = ffxDofRingCount(kernelRadius, constants.maxRings);
+    if (kernel.rings == 0u)
+        return result;  // in focus: the far layer holds the texel itself
+
+    kernel.withNear = dilated.y >= FFX_DOF_NEAR_THRESHOLD;
+    kernel.centerIsNear = kernel.centerCoc >= FFX_DOF_NEAR_THRESHOLD;
+    kernel.spacing = kernelRadius / FfxFloat32(kernel.rings);
+    kernel.baseMip = FfxUInt32(ffxDofMipForSpacing(kernel.spacing));
+    kernel.center = FfxFloat32x2(texel) + FfxFloat32x2(0.5f, 0.5f);
+    kernel.origin = kernel.center + ffxDofKernelJitter(texel, constants.frameIndex);
+
+    FfxDofGather gather;
+    gather.nearSum = FfxFloat32x3(0.0f, 0.0f, 0.0f);
+    gather.nearWeight = 0.0f;
+    gather.fillSum = FfxFloat32x3(0.0f, 0.0f, 0.0f);
+    gather.fillCount = 0.0f;
+    gather.weightedSamples = 0.0f;
+    gather.outer = ffxDofEmptyBucket();
+    gather.cocSpread = 0.0f;
+
+    // The outermost ring is always gathered at full resolution (it keeps the circle), and it tells
+    // how flat the radii around the texel are: the merged path is taken by how flat, per texel, from
+    // the texel's own samples, never per tile (a per-tile switch shows as tile-shaped blocks).
+    FfxInt32 outerRing = FfxInt32(kernel.rings);
+    ffxDofGatherRings(gather, kernel, outerRing, outerRing, 0u, constants);
+    FfxFloat32 mergeAmount = 0.0f;
+#if FFX_DOF_OPTION_MAX_RING_MERGE_LOG > 0
+    if (kernel.rings >= 2u && kernel.centerCoc <= -FFX_DOF_IN_FOCUS_RADIUS)
+        mergeAmount = ffxDofRingMergeAmount(gather.cocSpread);
+#endif
+    FfxDofBlurResult fullResult = result;
+    if (mergeAmount < 1.0f)
+    {
+        FfxDofGather full = gather;
+        ffxDofGatherRings(full, kernel, outerRing - 1, 0, 0u, constants);
+        fullResult = ffxDofFinishGather(full, kernelRadius, result);
+    }
+#if FFX_DOF_OPTION_MAX_RING_MERGE_LOG > 0
+    if (mergeAmount > 0.0f)
+    {
+        ffxDofGatherRings(gather, kernel, outerRing - 1, 0, FfxUInt32(FFX_DOF_OPTION_MAX_RING_MERGE_LOG), constants);
+        FfxDofBlurResult mergedResult = ffxDofFinishGather(gather, kernelRadius, result);
+        if (mergeAmount >= 1.0f)
+            return mergedResult;
+        // Between flat and not flat both paths run and are mixed, so the switch is continuous.
+        FfxDofFloat mergedShare = FfxDofFloat(mergeAmount);
+        fullResult.nearColor += (mergedResult.nearColor - fullResult.nearColor) * mergedShare;
+        fullResult.farColor += (mergedResult.farColor - fullResult.farColor) * mergedShare;
+        fullResult.alpha = ffxDofLerp(fullResult.alpha, mergedResult.alpha, mergeAmount);
+    }
+#endif
+    return fullResult;
 }
 
 FFX_DOF_INLINE void ffxDofBlur(FfxUInt32x2 groupId, FfxUInt32 localIndex)

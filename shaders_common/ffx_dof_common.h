@@ -66,6 +66,11 @@
 // From this |radius| (half-res px) on, the far layer alone makes the pixel.
 #define FFX_DOF_FAR_LAYER_ONLY_RADIUS 3.0f
 
+// Ring merging: where every radius on a texel's outermost ring is within FLAT of its own radius
+// (half-res px), inner rings are merged; from NOT_FLAT on they are not; in between both are mixed.
+#define FFX_DOF_RING_MERGE_FLAT_SPREAD 0.5f
+#define FFX_DOF_RING_MERGE_NOT_FLAT_SPREAD 1.0f
+
 // ---- CoC ----------------------------------------------------------------------------------------
 
 // Signed CoC radius of a depth value, always in 32-bit: rounding depth to 16 bits first would move
@@ -238,6 +243,15 @@ FFX_DOF_INLINE FfxFloat32x2 ffxDofKernelJitter(FfxUInt32x2 pixel, FfxUInt32 fram
 }
 
 // ---- Gathering ----------------------------------------------------------------------------------
+
+// How much of the merged-ring path a texel takes (0: all rings at full resolution, 1: merged), from
+// the largest difference between its own radius and those on its outermost ring. Continuous, so
+// the result changes smoothly where the radii stop being flat.
+FFX_DOF_INLINE FfxFloat32 ffxDofRingMergeAmount(FfxFloat32 cocSpread)
+{
+    return ffxDofSaturate((FFX_DOF_RING_MERGE_NOT_FLAT_SPREAD - cocSpread) /
+                          (FFX_DOF_RING_MERGE_NOT_FLAT_SPREAD - FFX_DOF_RING_MERGE_FLAT_SPREAD));
+}
 
 // How much a sample of |radius| reaches a pixel `distance` away (scatter-as-gather), with half a
 // pixel of anti-aliasing.

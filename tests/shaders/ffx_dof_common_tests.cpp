@@ -57,6 +57,17 @@ TEST_CASE("Bilateral reduce averages equal radii and drops outliers", "[downsamp
     CHECK(coc == Approx(-3.0f));
 }
 
+TEST_CASE("Ring merge amount: merged when flat, full when not, continuous in between", "[kernel]") {
+    CHECK(ffxDofRingMergeAmount(0.0f) == 1.0f);
+    CHECK(ffxDofRingMergeAmount(0.5f) == 1.0f);
+    CHECK(ffxDofRingMergeAmount(0.75f) == Approx(0.5f));
+    CHECK(ffxDofRingMergeAmount(1.0f) == 0.0f);
+    CHECK(ffxDofRingMergeAmount(7.0f) == 0.0f);
+    // No jump anywhere: a small change of spread moves the amount by at most spread change / 0.5.
+    for (float spread = 0.0f; spread < 1.5f; spread += 0.01f)
+        CHECK(std::abs(ffxDofRingMergeAmount(spread + 0.01f) - ffxDofRingMergeAmount(spread)) <= 0.0201f);
+}
+
 TEST_CASE("Ring geometry: counts, circularity, even spacing", "[kernel]") {
     CHECK(ffxDofRingSampleCount(0) == 1u);
     CHECK(ffxDofRingSamplePosition(0, 0) == FfxFloat32x2(0.0f, 0.0f));
