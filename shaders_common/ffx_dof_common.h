@@ -65,7 +65,6 @@
 #define FFX_DOF_FAR_LAYER_EXTRA_VARIANCE 0.3f
 // From this |radius| (half-res px) on, the far layer alone makes the pixel.
 #define FFX_DOF_FAR_LAYER_ONLY_RADIUS 3.0f
-
 // Ring merging: where every radius on a texel's outermost ring is within FLAT of its own radius
 // (half-res px), inner rings are merged; from NOT_FLAT on they are not; in between both are mixed.
 #define FFX_DOF_RING_MERGE_FLAT_SPREAD 0.5f
@@ -101,6 +100,11 @@ FFX_DOF_INLINE FfxFloat32 ffxDofFartherDepth(FfxFloat32 a, FfxFloat32 b)
 
 // ---- Bilateral downsampling ----------------------------------------------------------------------
 
+FFX_DOF_INLINE FfxFloat32 ffxDofLuminance(FfxDofFloat3 color)
+{
+    return FfxFloat32(color.x) * 0.2126f + FfxFloat32(color.y) * 0.7152f + FfxFloat32(color.z) * 0.0722f;
+}
+
 // Weight of a pixel of a 2x2 quad relative to the quad's top-left pixel: 1 for equal radii, falling
 // linearly to 0 at a difference of one pixel of radius.
 FFX_DOF_INLINE FfxFloat32 ffxDofBilateralWeight(FfxFloat32 referenceCoc, FfxFloat32 coc)
@@ -108,19 +112,55 @@ FFX_DOF_INLINE FfxFloat32 ffxDofBilateralWeight(FfxFloat32 referenceCoc, FfxFloa
     return ffxDofSaturate(1.0f - abs(coc - referenceCoc));
 }
 
+// The reference radius of a 2x2 quad: the one closest to the quad's mean (the same whichever pixel
+// of the quad it is; the top-left pixel as reference made an isolated pixel of another radius gain
+// energy at one position of the quad and lose it at the others).
+FFX_DOF_INLINE FfxFloat32 ffxDofQuadReferenceCoc(FfxFloat32 coc0, FfxFloat32 coc1, FfxFloat32 coc2, FfxFloat32 coc3)
+{
+    FfxFloat32 mean = (coc0 + coc1 + coc2 + coc3) * 0.25f;
+    FfxFloat32 reference = coc0;
+    if (abs(coc1 - mean) < abs(reference - mean))
+        reference = coc1;
+    if (abs(coc2 - mean) < abs(reference - mean))
+        reference = coc2;
+    if (abs(coc3 - mean) < abs(reference - mean))
+        reference = coc3;
+    return reference;
+}
+
+// Weight of a quad pixel of radius `coc`: 1 for all while every radius of the quad is within one
+// pixel of every other (the plain average: every pixel's energy stays in the texel), the bilateral
+// weight relative to the reference once the quad's range of radii exceeds 1.25 px, mixed in between
+// so that the texel changes continuously with the radii.
+FFX_DOF_INLINE FfxFloat32 ffxDofQuadWeight(FfxFloat32 referenceCoc, FfxFloat32 cocRange, FfxFloat32 coc)
+{
+    return max(ffxDofBilateralWeight(referenceCoc, coc), ffxDofSaturate((1.25f - cocRange) * 4.0f));
+}
+
 // Reduces a 2x2 quad (0: top-left, 1: top-right, 2: bottom-left, 3: bottom-right). The same kernel
-// makes every MIP level.
+// makes every MIP level. The radius is averaged with the color's luminance as an extra weight: the
+// texel's light spreads with the radius of the pixels it comes from (a bright point keeps its own
+// radius among darker pixels of a slightly different one).
 FFX_DOF_INLINE void ffxDofBilateralReduce(FfxDofFloat3 color0, FfxDofFloat3 color1, FfxDofFloat3 color2,
                                           FfxDofFloat3 color3, FfxFloat32 coc0, FfxFloat32 coc1, FfxFloat32 coc2,
                                           FfxFloat32 coc3, FFX_DOF_OUT(FfxDofFloat3) color, FFX_DOF_OUT(FfxFloat32) coc)
 {
-    FfxFloat32 weight1 = ffxDofBilateralWeight(coc0, coc1);
-    FfxFloat32 weight2 = ffxDofBilateralWeight(coc0, coc2);
-    FfxFloat32 weight3 = ffxDofBilateralWeight(coc0, coc3);
-    FfxFloat32 normalization = 1.0f / (1.0f + weight1 + weight2 + weight3);
-    color = (color0 + color1 * FfxDofFloat(weight1) + color2 * FfxDofFloat(weight2) + color3 * FfxDofFloat(weight3)) *
+    FfxFloat32 reference = ffxDofQuadReferenceCoc(coc0, coc1, coc2, coc3);
+    FfxFloat32 range = max(max(coc0, coc1), max(coc2, coc3)) - min(min(coc0, coc1), min(coc2, coc3));
+    FfxFloat32 weight0 = ffxDofQuadWeight(reference, range, coc0);
+    FfxFloat32 weight1 = ffxDofQuadWeight(reference, range, coc1);
+    FfxFloat32 weight2 = ffxDofQuadWeight(reference, range, coc2);
+    FfxFloat32 weight3 = ffxDofQuadWeight(reference, range, coc3);
+    FfxFloat32 normalization = 1.0f / (weight0 + weight1 + weight2 + weight3);  // the reference weighs 1
+    color = (color0 * FfxDofFloat(weight0) + color1 * FfxDofFloat(weight1) + color2 * FfxDofFloat(weight2) +
+             color3 * FfxDofFloat(weight3)) *
             FfxDofFloat(normalization);
-    coc = (coc0 + coc1 * weight1 + coc2 * weight2 + coc3 * weight3) * normalization;
+    // A small floor keeps black quads at the plain weighted mean.
+    FfxFloat32 light0 = weight0 * (ffxDofLuminance(color0) + 1e-3f);
+    FfxFloat32 light1 = weight1 * (ffxDofLuminance(color1) + 1e-3f);
+    FfxFloat32 light2 = weight2 * (ffxDofLuminance(color2) + 1e-3f);
+    FfxFloat32 light3 = weight3 * (ffxDofLuminance(color3) + 1e-3f);
+    coc = (coc0 * light0 + coc1 * light1 + coc2 * light2 + coc3 * light3) / (light0 + light1 + light2 + light3);
 }
 
 // ---- Storage ------------------------------------------------------------------------------------
@@ -326,11 +366,6 @@ FFX_DOF_INLINE FfxFloat32 ffxDofNearOpacity(FfxFloat32 nearWeight, FfxFloat32 ke
 }
 
 // ---- Post-filter and composition ----------------------------------------------------------------
-
-FFX_DOF_INLINE FfxFloat32 ffxDofLuminance(FfxDofFloat3 color)
-{
-    return FfxFloat32(color.x) * 0.2126f + FfxFloat32(color.y) * 0.7152f + FfxFloat32(color.z) * 0.0722f;
-}
 
 // Median of nine values by a 19-exchange selection network.
 FFX_DOF_INLINE void ffxDofSort2(FFX_DOF_INOUT(FfxFloat32) a, FFX_DOF_INOUT(FfxFloat32) b)

@@ -57,6 +57,38 @@ TEST_CASE("Bilateral reduce averages equal radii and drops outliers", "[downsamp
     CHECK(coc == Approx(-3.0f));
 }
 
+TEST_CASE("Bilateral reduce keeps a bright pixel's energy and radius wherever it lies in the quad", "[downsample]") {
+    // A bright pixel of radius -4.8 among black ones of -5.65 (a point in front of a far background).
+    for (int position = 0; position < 4; ++position) {
+        FfxFloat32x3 colors[4] = {FfxFloat32x3(0), FfxFloat32x3(0), FfxFloat32x3(0), FfxFloat32x3(0)};
+        float cocs[4] = {-5.65f, -5.65f, -5.65f, -5.65f};
+        colors[position] = FfxFloat32x3(8.0f);
+        cocs[position] = -4.8f;
+        FfxFloat32x3 color;
+        float coc;
+        ffxDofBilateralReduce(colors[0], colors[1], colors[2], colors[3], cocs[0], cocs[1], cocs[2], cocs[3], color,
+                              coc);
+        INFO("bright pixel at " << position);
+        CHECK(color.x == Approx(2.0f));  // the plain average: energy kept
+        CHECK(coc == Approx(-4.8f).margin(0.01f));
+    }
+    // Beyond the flat range the outlier gets weight 0 wherever it is (it used to depend on the
+    // top-left pixel being the outlier or not).
+    for (int position = 0; position < 4; ++position) {
+        float cocs[4] = {-3.0f, -3.0f, -3.0f, -3.0f};
+        cocs[position] = 2.0f;
+        FfxFloat32x3 colors[4] = {FfxFloat32x3(1), FfxFloat32x3(1), FfxFloat32x3(1), FfxFloat32x3(1)};
+        colors[position] = FfxFloat32x3(9.0f);
+        FfxFloat32x3 color;
+        float coc;
+        ffxDofBilateralReduce(colors[0], colors[1], colors[2], colors[3], cocs[0], cocs[1], cocs[2], cocs[3], color,
+                              coc);
+        INFO("outlier at " << position);
+        CHECK(color.x == Approx(1.0f));
+        CHECK(coc == Approx(-3.0f));
+    }
+}
+
 TEST_CASE("Ring merge amount: merged when flat, full when not, continuous in between", "[kernel]") {
     CHECK(ffxDofRingMergeAmount(0.0f) == 1.0f);
     CHECK(ffxDofRingMergeAmount(0.5f) == 1.0f);
