@@ -10,7 +10,8 @@ namespace ffxdof::quality {
 const std::vector<SceneGate>& sceneGates() {
     // Margins are about 1.5 dB below what the effect measured on lavapipe (gains of 15.8, 7.5, 5.6,
     // 14.0 and 10.9 dB after the per-texel ring merge and the energy-keeping downsample;
-    // docs/quality.md has the current figures), so a regression of 1.5 dB or more fails. The truth is deterministic (seeded), so the figures repeat.
+    // docs/quality.md has the current figures), so a regression of 1.5 dB or more fails. The truth is deterministic
+    // (seeded), so the figures repeat.
     static const std::vector<SceneGate> gates = {
         {"near-object", 14.0,
          "a large blurred near sphere: most of the input's error is there and the effect removes most of it"},
