@@ -38,15 +38,6 @@ void ffxDofStoreLayerAlpha(FfxUInt32x2 texel, FfxFloat32x2 nearOpacityFarValidit
 // Below this spread of radii (half-res px) a far-field tile counts as flat for ring merging.
 #define FFX_DOF_FLAT_RADIUS_RANGE 1.0f
 
-// Texel of MIP `mip` holding half-res position `position` (clamped to the image).
-FFX_DOF_INLINE FfxInt32x2 ffxDofMipTexel(FfxFloat32x2 position, FfxUInt32 mip, FfxUInt32x2 halfSize)
-{
-    FfxFloat32 scale = 1.0f / FfxFloat32(1u << mip);
-    FfxUInt32x2 size = ffxDofMipSize(halfSize, mip);
-    FfxInt32x2 texel = FfxInt32x2(floor(position * scale));
-    return clamp(texel, FfxInt32x2(0, 0), FfxInt32x2(size) - FfxInt32x2(1, 1));
-}
-
 // Centre of texel `texel` of MIP `mip`, in half-res px.
 FFX_DOF_INLINE FfxFloat32x2 ffxDofMipTexelCenter(FfxInt32x2 texel, FfxUInt32 mip)
 {
@@ -114,11 +105,15 @@ FFX_DOF_INLINE FfxDofBlurResult ffxDofBlurTexel(FfxUInt32x2 texel, FfxFloat32x2 
         }
         FfxUInt32 sampleCount = ffxDofRingSampleCount(ringIndex);
         FfxDofBucket ringBucket = ffxDofEmptyBucket();
+        FfxFloat32x2 offset = ffxDofRingSamplePosition(ringIndex, 0u) * spacing;
+        FfxFloat32x2 step = ffxDofRingSampleStep(ringIndex);
+        FfxFloat32 mipScale = 1.0f / FfxFloat32(1u << mip);
+        FfxInt32x2 lastTexel = FfxInt32x2(ffxDofMipSize(constants.halfSize, mip)) - FfxInt32x2(1, 1);
         FFX_DOF_LOOP
         for (FfxUInt32 sampleIndex = 0u; sampleIndex < sampleCount; ++sampleIndex)
         {
-            FfxFloat32x2 position = origin + ffxDofRingSamplePosition(ringIndex, sampleIndex) * spacing;
-            FfxInt32x2 sampleTexel = ffxDofMipTexel(position, mip, constants.halfSize);
+            FfxInt32x2 sampleTexel = clamp(FfxInt32x2(floor((origin + offset) * mipScale)), FfxInt32x2(0, 0), lastTexel);
+            offset = FfxFloat32x2(offset.x * step.x - offset.y * step.y, offset.x * step.y + offset.y * step.x);
             FfxDofFloat3 color = ffxDofLoadColorMip(sampleTexel, mip);
             FfxFloat32 coc = ffxDofLoadCocMip(sampleTexel, mip);
             // Reach is judged from the centre of the texel actually read, not from the ring: the

@@ -33,7 +33,17 @@ FfxDofConstants ffxDofGetConstants()
     return ffxDofPushedConstants;
 }
 
-#if FFX_DOF_USES_INPUT_COLOR
+// In place, D3D12 cannot have the color image as SRV and UAV at once: the composite pass reads the
+// input through the output UAV (ffxDofLoadInputColor below, next to the output). Vulkan (SPIR-V from
+// glslang or dxc -spirv) keeps the sampled view of the same GENERAL-layout image, which is valid
+// there and needs no shaderStorageImageReadWithoutFormat.
+#if defined(FFX_DOF_PASS_COMPOSITE) && FFX_DOF_OPTION_COMBINE_IN_PLACE && defined(__DXC_VERSION_MAJOR) && \
+    !defined(__spirv__)
+#define FFX_DOF_INPUT_COLOR_THROUGH_OUTPUT 1
+#else
+#define FFX_DOF_INPUT_COLOR_THROUGH_OUTPUT 0
+#endif
+#if FFX_DOF_USES_INPUT_COLOR && !FFX_DOF_INPUT_COLOR_THROUGH_OUTPUT
 FFX_DOF_BINDING_SRV(FFX_DOF_SRV_INPUT_COLOR) Texture2D<float4> ffxDofInputColor : FFX_DOF_HLSL_REGISTER(t, FFX_DOF_SRV_INPUT_COLOR);
 FfxFloat32x4 ffxDofLoadInputColor(FfxUInt32x2 pixel)
 {
@@ -193,6 +203,16 @@ void ffxDofStoreOutput(FfxUInt32x2 pixel, FfxFloat32x4 color)
         color = float4(ffxDofLinearToSrgb(color.x), ffxDofLinearToSrgb(color.y), ffxDofLinearToSrgb(color.z), color.w);
     ffxDofOutput[pixel] = color;
 }
+#if FFX_DOF_INPUT_COLOR_THROUGH_OUTPUT
+// Only called for pixels of the workgroup's own tile, before the group writes any of them.
+FfxFloat32x4 ffxDofLoadInputColor(FfxUInt32x2 pixel)
+{
+    FfxFloat32x4 color = ffxDofOutput[pixel];
+    if ((ffxDofPushedConstants.outputFlags & FFX_DOF_OUTPUT_FLAG_ENCODE_SRGB) != 0u)
+        color = float4(ffxDofSrgbToLinear(color.x), ffxDofSrgbToLinear(color.y), ffxDofSrgbToLinear(color.z), color.w);
+    return color;
+}
+#endif
 #endif
 
 #if FFX_DOF_USES_GLOBALS

@@ -192,6 +192,15 @@ FFX_DOF_INLINE FfxFloat32x2 ffxDofRingSamplePosition(FfxUInt32 ring, FfxUInt32 s
     return FfxFloat32x2(cos(angle), sin(angle)) * FfxFloat32(ring);
 }
 
+// Rotation (cos, sin) from sample i to sample i + 1 of ring `ring`: the blur walks a ring by
+// rotating the previous offset, with no transcendental per sample. A non-circular shape replaces
+// this together with the two functions above.
+FFX_DOF_INLINE FfxFloat32x2 ffxDofRingSampleStep(FfxUInt32 ring)
+{
+    FfxFloat32 angle = 6.28318530718f / FfxFloat32(ffxDofRingSampleCount(ring));
+    return FfxFloat32x2(cos(angle), sin(angle));
+}
+
 // ---- Kernel size --------------------------------------------------------------------------------
 
 // Rings for a kernel of `radius`: none below the in-focus radius (the pixel is copied), else one per
@@ -411,6 +420,12 @@ FFX_DOF_INLINE FfxFloat32 ffxDofLinearToSrgb(FfxFloat32 x)
 {
     FfxFloat32 c = ffxDofSaturate(x);
     return c <= 0.0031308f ? c * 12.92f : 1.055f * pow(c, 1.0f / 2.4f) - 0.055f;
+}
+
+// sRGB decoding, for an in-place input read back through a UNORM view of an sRGB image.
+FFX_DOF_INLINE FfxFloat32 ffxDofSrgbToLinear(FfxFloat32 x)
+{
+    return x <= 0.04045f ? x / 12.92f : pow((x + 0.055f) / 1.055f, 2.4f);
 }
 
 #endif  // FFX_DOF_COMMON_H

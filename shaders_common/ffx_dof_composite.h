@@ -22,6 +22,7 @@
 FfxDofConstants ffxDofGetConstants();
 FfxFloat32 ffxDofLoadInputDepth(FfxUInt32x2 pixel);
 FfxFloat32x4 ffxDofLoadInputColor(FfxUInt32x2 pixel);
+FfxDofFloat3 ffxDofLoadColorMip(FfxInt32x2 texel, FfxUInt32 mip);
 FfxFloat32x2 ffxDofLoadTile(FfxUInt32x2 tile);
 FfxFloat32x2 ffxDofLoadDilatedTile(FfxUInt32x2 tile);
 FfxFloat32 ffxDofLoadCocMip(FfxInt32x2 texel, FfxUInt32 mip);
@@ -42,6 +43,18 @@ FFX_DOF_GROUPSHARED FfxDofFloat3 ffxDofSharedNear[FFX_DOF_FILTERED_SIDE * FFX_DO
 FFX_DOF_GROUPSHARED FfxDofFloat3 ffxDofSharedFar[FFX_DOF_FILTERED_SIDE * FFX_DOF_FILTERED_SIDE];
 FFX_DOF_GROUPSHARED FfxFloat32x2 ffxDofSharedAlpha[FFX_DOF_FILTERED_SIDE * FFX_DOF_FILTERED_SIDE];
 FFX_DOF_GROUPSHARED FfxFloat32 ffxDofSharedCoc[FFX_DOF_FILTERED_SIDE * FFX_DOF_FILTERED_SIDE];
+
+#if FFX_DOF_OPTION_COMBINE_IN_PLACE
+// In place the output image is the input: other workgroups write their tiles during this pass, and
+// this group writes its own. So the group reads the input only for its own tile, into group-shared
+// memory before any write, and takes the pixels just outside the tile (the fixed 3x3 blur's border)
+// from MIP 0 of the half-res color, which nobody writes. On D3D12 the reads go through the output UAV
+// (ffx_dof_callbacks_hlsl.h); on Vulkan through the sampled view of the same GENERAL-layout image.
+// The difference to out of place: the fixed blur of the tile's border pixels sees half-res color
+// for its outer neighbours (bilateral 2x2 averages): documented in docs/technique.md and bounded by
+// the in-place test of tests/quality.
+FFX_DOF_GROUPSHARED FfxFloat32x4 ffxDofSharedInput[16 * 16];
+#endif
 
 FFX_DOF_INLINE FfxInt32x2 ffxDofClampHalfTexel(FfxInt32x2 texel, FfxUInt32x2 halfSize)
 {
@@ -94,6 +107,21 @@ FFX_DOF_INLINE void ffxDofPostFilterTexel(FfxUInt32 index)
     ffxDofSharedAlpha[index] = FfxFloat32x2(opacitySum * (1.0f / 9.0f), centerAlpha.y);
 }
 
+// The input color of a full-res pixel within one pixel of the tile that holds `ownPixel` (a pixel
+// of the workgroup's own tile).
+#if FFX_DOF_OPTION_COMBINE_IN_PLACE
+FFX_DOF_INLINE FfxFloat32x4 ffxDofCompositeInput(FfxUInt32x2 pixel, FfxUInt32x2 ownPixel)
+{
+    FfxUInt32x2 tileOrigin = (ownPixel / 16u) * 16u;
+    if (pixel.x >= tileOrigin.x && pixel.y >= tileOrigin.y && pixel.x < tileOrigin.x + 16u && pixel.y < tileOrigin.y + 16u)
+        return ffxDofSharedInput[(pixel.y - tileOrigin.y) * 16u + pixel.x - tileOrigin.x];
+    FfxDofFloat3 color = ffxDofLoadColorMip(FfxInt32x2(pixel / 2u), 0u);
+    return FfxFloat32x4(FfxFloat32(color.x), FfxFloat32(color.y), FfxFloat32(color.z), 1.0f);
+}
+#else
+#define ffxDofCompositeInput(pixel, ownPixel) ffxDofLoadInputColor(pixel)
+#endif
+
 FFX_DOF_INLINE FfxFloat32x3 ffxDofFixedBlur(FfxUInt32x2 pixel, FfxUInt32x2 fullSize)
 {
     FfxFloat32x3 sum = FfxFloat32x3(0.0f, 0.0f, 0.0f);
@@ -106,7 +134,7 @@ FFX_DOF_INLINE FfxFloat32x3 ffxDofFixedBlur(FfxUInt32x2 pixel, FfxUInt32x2 fullS
         {
             FfxInt32x2 neighbour = clamp(FfxInt32x2(pixel) + FfxInt32x2(dx, dy), FfxInt32x2(0, 0),
                                          FfxInt32x2(fullSize) - FfxInt32x2(1, 1));
-            FfxFloat32x4 color = ffxDofLoadInputColor(FfxUInt32x2(neighbour));
+            FfxFloat32x4 color = ffxDofCompositeInput(FfxUInt32x2(neighbour), pixel);
             FfxFloat32 weight = ffxDofFixedBlurWeight(dx, dy);
             sum += FfxFloat32x3(color.x, color.y, color.z) * weight;
             weightSum += weight;
@@ -196,6 +224,15 @@ FFX_DOF_INLINE void ffxDofComposite(FfxUInt32x2 groupId, FfxUInt32 localIndex)
         return;
     }
 
+#if FFX_DOF_OPTION_COMBINE_IN_PLACE
+    FFX_DOF_UNROLL
+    for (FfxUInt32 k = 0u; k < 4u; ++k)
+    {
+        FfxUInt32x2 pixel = quad + FfxUInt32x2(k & 1u, k >> 1u);
+        if (pixel.x < constants.fullSize.x && pixel.y < constants.fullSize.y)
+            ffxDofSharedInput[(pixel.y - groupId.y * 16u) * 16u + pixel.x - groupId.x * 16u] = ffxDofLoadInputColor(pixel);
+    }
+#endif
     FfxInt32x2 tileOrigin = FfxInt32x2(groupId * FfxUInt32(FFX_DOF_TILE_SIZE));
     for (FfxUInt32 index = localIndex; index < FfxUInt32(FFX_DOF_RAW_SIDE * FFX_DOF_RAW_SIDE); index += FfxUInt32(FFX_DOF_GROUP_THREADS))
     {
@@ -220,7 +257,7 @@ FFX_DOF_INLINE void ffxDofComposite(FfxUInt32x2 groupId, FfxUInt32 localIndex)
         FfxUInt32x2 pixel = quad + FfxUInt32x2(k & 1u, k >> 1u);
         if (pixel.x >= constants.fullSize.x || pixel.y >= constants.fullSize.y)
             continue;
-        FfxFloat32x4 color = ffxDofLoadInputColor(pixel);
+        FfxFloat32x4 color = ffxDofCompositeInput(pixel, pixel);
 #if FFX_DOF_OPTION_COMBINE_IN_PLACE
         if (ffxDofComposePixel(pixel, filteredOrigin, constants, color))
             ffxDofStoreOutput(pixel, color);

@@ -8,19 +8,19 @@
 namespace ffxdof::quality {
 
 const std::vector<SceneGate>& sceneGates() {
-    // Margins are about 1.5 dB below what the effect measured on lavapipe when the gates were written
-    // (gains of 12.8, 6.8, 5.6, 13.9 and 7.1 dB; docs/quality.md has the current figures), so a
-    // regression of 1.5 dB or more fails. The truth is deterministic (seeded), so the figures repeat.
+    // Margins are about 1.5 dB below what the effect measured on lavapipe (gains of 15.8, 7.5, 5.6,
+    // 13.9 and 10.8 dB after the variance-matched layer blend; docs/quality.md has the current
+    // figures), so a regression of 1.5 dB or more fails. The truth is deterministic (seeded), so the figures repeat.
     static const std::vector<SceneGate> gates = {
-        {"near-object", 11.0,
+        {"near-object", 14.0,
          "a large blurred near sphere: most of the input's error is there and the effect removes most of it"},
-        {"far-highlights", 5.0,
+        {"far-highlights", 6.0,
          "bright far bokeh: the effect's discs are brighter in the centre than the truth's flat ones"},
         {"fence", 4.0,
          "thin near posts over a sharp wall: partial occlusion, which a post-process can only "
          "approximate, so the gain is smaller"},
         {"busy-background", 12.0, "a 40+ px background blur: nearly every background pixel changes"},
-        {"floor", 5.5, "blur grows continuously with distance in front of and behind the focus"},
+        {"floor", 9.0, "blur grows continuously with distance in front of and behind the focus"},
     };
     return gates;
 }
@@ -83,7 +83,7 @@ metrics::Mask undisturbedInFocusMask(const io::ImageR& radiusPixels) {
     return mask;
 }
 
-GateResult runGate(vkrun::Device& device, const SceneRender& render) {
+GateResult runGate(vkrun::Device& device, const SceneRender& render, bool inPlace) {
     const ref::Camera& camera = render.setup.camera;
     const uint32_t w = camera.width, h = camera.height;
     vkrun::HostImage color(w, h, 4), depth(w, h, 1);
@@ -113,6 +113,7 @@ GateResult runGate(vkrun::Device& device, const SceneRender& render) {
     settings.cocLimitFactor = result.cocLimitFactor;
     settings.cocScale = result.cocScale;
     settings.cocBias = result.cocBias;
+    settings.inPlace = inPlace;
     const vkrun::RunResult run = vkrun::runEffect(device, color, depth, settings);
     result.ours = io::ImageRGBA(w, h);
     result.ours.pixels = run.output.pixels;

@@ -59,6 +59,7 @@ struct GateResult {
 };
 // Runs ffx-dof on the scene's pinhole colour and standard device depth, with cocScale/cocBias from
 // ffxDofCalculateCocScale/Bias and a cocLimitFactor that covers the scene's largest radius.
-GateResult runGate(vkrun::Device& device, const SceneRender& render);
+// inPlace: the output is the color image itself (FFX_DOF_OPTION_COMBINE_IN_PLACE).
+GateResult runGate(vkrun::Device& device, const SceneRender& render, bool inPlace = false);
 
 }  // namespace ffxdof::quality

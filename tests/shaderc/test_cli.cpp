@@ -5,7 +5,9 @@
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <string>
 #include <sys/wait.h>
+#include <unistd.h>
 
 namespace fs = std::filesystem;
 
@@ -18,7 +20,8 @@ struct RunResult {
 
 // Runs the tool with `arguments` (shell-quoted by the caller), capturing stderr.
 RunResult runTool(const std::string& arguments) {
-    const fs::path errFile = fs::path(FFX_DOF_TEST_WORK_DIR) / "stderr.txt";
+    // One file per process: CTest runs the test cases of this file in parallel processes.
+    const fs::path errFile = fs::path(FFX_DOF_TEST_WORK_DIR) / ("stderr." + std::to_string(getpid()) + ".txt");
     fs::create_directories(FFX_DOF_TEST_WORK_DIR);
     const std::string command =
         std::string("'") + FFX_DOF_SHADERC_EXE + "' " + arguments + " 2>'" + errFile.string() + "' >/dev/null";

@@ -67,7 +67,8 @@ TEST_CASE("every pass has product-of-axes permutations and each key resolves", "
 }
 
 TEST_CASE("GLSL and HLSL bind every resource at the same slot", "[passes][reflection]") {
-    for (const auto& pass : permutationsJson().at("passes")) {
+    const nlohmann::json json = permutationsJson();
+    for (const auto& pass : json.at("passes")) {
         const std::string name = pass.at("name");
         INFO(name);
         const PassTable* glsl = tableOf("glsl", name);
@@ -102,7 +103,8 @@ TEST_CASE("push constants are laid out like FfxDofConstants", "[passes][reflecti
         {"outputFlags", offsetof(FfxDofConstants, outputFlags)},
     };
     for (const char* language : {"glsl", "hlsl"}) {
-        for (const auto& pass : permutationsJson().at("passes")) {
+        const nlohmann::json json = permutationsJson();
+        for (const auto& pass : json.at("passes")) {
             const std::string name = pass.at("name");
             INFO(language << " " << name);
             const PassTable* table = tableOf(language, name);

@@ -339,3 +339,16 @@ TEST_CASE("Colors are rounded to nearest before a packed-float store", "[storage
     CHECK(float(rounded.x) == 1.0f + 1.0f / 64.0f);
     CHECK(float(rounded.z) == 1.0f);  // blue keeps 5 bits: 3/256 is below half of 1/32
 }
+
+TEST_CASE("Walking a ring by its rotation step visits the sample positions", "[kernel]") {
+    for (uint32_t ring = 1; ring <= 12; ++ring) {
+        const FfxFloat32x2 step = ffxDofRingSampleStep(ring);
+        FfxFloat32x2 offset = ffxDofRingSamplePosition(ring, 0);
+        for (uint32_t i = 0; i < ffxDofRingSampleCount(ring); ++i) {
+            const FfxFloat32x2 expected = ffxDofRingSamplePosition(ring, i);
+            REQUIRE(offset.x == Approx(expected.x).margin(1e-4));
+            REQUIRE(offset.y == Approx(expected.y).margin(1e-4));
+            offset = FfxFloat32x2(offset.x * step.x - offset.y * step.y, offset.x * step.y + offset.y * step.x);
+        }
+    }
+}
