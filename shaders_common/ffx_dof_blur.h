@@ -112,15 +112,19 @@ FFX_DOF_INLINE void ffxDofGatherRings(FFX_DOF_INOUT(FfxDofGather) gather, FfxDof
             // Reach is judged from the centre of the texel actually read, not from the ring: the
             // ring distance would let a texel spread half a texel beyond its radius.
             FfxFloat32 distance = length(ffxDofMipTexelCenter(sampleTexel, mip) - kernel.center);
+            // Near and far samples weigh alike (reach times inverse area): computed once, before the
+            // branch, because a CPU implementation such as lavapipe runs both sides of every branch.
+            FfxFloat32 absCoc = abs(coc);
+            FfxFloat32 reach = ffxDofReach(absCoc, distance);
+            FfxFloat32 weight = reach * ffxDofAreaWeight(absCoc) * ringWeight;
             if (kernel.withNear && coc >= FFX_DOF_NEAR_THRESHOLD)
             {
-                FfxFloat32 weight = ffxDofReach(coc, distance) * ffxDofAreaWeight(coc) * ringWeight;
                 gather.nearSum += ffxDofToFloat32x3(color) * weight;
                 gather.nearWeight += weight;
             }
             else
             {
-                ffxDofBucketAdd(ringBucket, color, abs(coc), ffxDofReach(abs(coc), distance), ringWeight);
+                ffxDofBucketAddWeighted(ringBucket, color, absCoc, reach, weight);
                 if (kernel.centerIsNear)
                 {
                     gather.fillSum += ffxDofToFloat32x3(color);

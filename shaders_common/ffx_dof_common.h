@@ -328,14 +328,20 @@ FFX_DOF_INLINE FfxDofBucket ffxDofEmptyBucket()
     return bucket;
 }
 
-FFX_DOF_INLINE void ffxDofBucketAdd(FFX_DOF_INOUT(FfxDofBucket) bucket, FfxDofFloat3 color, FfxFloat32 absRadius,
-                                    FfxFloat32 reach, FfxFloat32 sampleWeight)
+// `weight` is the sample's reach * ffxDofAreaWeight(absRadius) * its own weight (the caller may
+// have computed it already, as the blur does for near and far samples alike).
+FFX_DOF_INLINE void ffxDofBucketAddWeighted(FFX_DOF_INOUT(FfxDofBucket) bucket, FfxDofFloat3 color,
+                                            FfxFloat32 absRadius, FfxFloat32 reach, FfxFloat32 weight)
 {
-    FfxFloat32 weight = reach * ffxDofAreaWeight(absRadius) * sampleWeight;
     bucket.color += ffxDofToFloat32x3(color) * weight;
     bucket.weight += weight;
     bucket.radius += absRadius * weight;
     bucket.coverage += reach;
+}
+FFX_DOF_INLINE void ffxDofBucketAdd(FFX_DOF_INOUT(FfxDofBucket) bucket, FfxDofFloat3 color, FfxFloat32 absRadius,
+                                    FfxFloat32 reach, FfxFloat32 sampleWeight)
+{
+    ffxDofBucketAddWeighted(bucket, color, absRadius, reach, reach * ffxDofAreaWeight(absRadius) * sampleWeight);
 }
 
 // Merges the ring just gathered (`inner`) into the bucket of every ring outside it. Both are seen as

@@ -122,7 +122,28 @@ FFX_DOF_INLINE FfxFloat32x4 ffxDofCompositeInput(FfxUInt32x2 pixel, FfxUInt32x2 
 #define ffxDofCompositeInput(pixel, ownPixel) ffxDofLoadInputColor(pixel)
 #endif
 
-FFX_DOF_INLINE FfxFloat32x3 ffxDofFixedBlur(FfxUInt32x2 pixel, FfxUInt32x2 fullSize)
+// The input colors of the 4 x 4 full-res pixels around an invocation's 2 x 2 quad (row by row,
+// clamped to the image): the four fixed 3x3 blurs of the quad share them, 16 reads instead of 36.
+struct FfxDofQuadNeighbourhood
+{
+    FfxFloat32x4 color[16];
+};
+
+FFX_DOF_INLINE FfxDofQuadNeighbourhood ffxDofLoadQuadNeighbourhood(FfxUInt32x2 quad, FfxUInt32x2 fullSize)
+{
+    FfxDofQuadNeighbourhood neighbourhood;
+    FFX_DOF_UNROLL
+    for (FfxUInt32 k = 0u; k < 16u; ++k)
+    {
+        FfxInt32x2 pixel = clamp(FfxInt32x2(quad) + FfxInt32x2(FfxInt32(k % 4u) - 1, FfxInt32(k / 4u) - 1),
+                                 FfxInt32x2(0, 0), FfxInt32x2(fullSize) - FfxInt32x2(1, 1));
+        neighbourhood.color[k] = ffxDofCompositeInput(FfxUInt32x2(pixel), quad);
+    }
+    return neighbourhood;
+}
+
+// The fixed 3x3 blur of the quad's pixel `inQuad` (0..1 each way).
+FFX_DOF_INLINE FfxFloat32x3 ffxDofFixedBlur(FfxDofQuadNeighbourhood neighbourhood, FfxUInt32x2 inQuad)
 {
     FfxFloat32x3 sum = FfxFloat32x3(0.0f, 0.0f, 0.0f);
     FfxFloat32 weightSum = 0.0f;
@@ -132,10 +153,9 @@ FFX_DOF_INLINE FfxFloat32x3 ffxDofFixedBlur(FfxUInt32x2 pixel, FfxUInt32x2 fullS
         FFX_DOF_UNROLL
         for (FfxInt32 dx = -1; dx <= 1; ++dx)
         {
-            FfxInt32x2 neighbour = clamp(FfxInt32x2(pixel) + FfxInt32x2(dx, dy), FfxInt32x2(0, 0),
-                                         FfxInt32x2(fullSize) - FfxInt32x2(1, 1));
-            FfxFloat32x4 color = ffxDofCompositeInput(FfxUInt32x2(neighbour), pixel);
+            FfxUInt32 k = (inQuad.y + FfxUInt32(dy + 1)) * 4u + inQuad.x + FfxUInt32(dx + 1);
             FfxFloat32 weight = ffxDofFixedBlurWeight(dx, dy);
+            FfxFloat32x4 color = neighbourhood.color[k];
             sum += FfxFloat32x3(color.x, color.y, color.z) * weight;
             weightSum += weight;
         }
@@ -143,10 +163,10 @@ FFX_DOF_INLINE FfxFloat32x3 ffxDofFixedBlur(FfxUInt32x2 pixel, FfxUInt32x2 fullS
     return sum / weightSum;
 }
 
-// The composed color of one full-res pixel; `filteredOrigin` is the half-res texel at filtered
-// index 0. Returns false (and leaves `color` alone) when the pixel keeps its input value.
-FFX_DOF_INLINE FfxBoolean ffxDofComposePixel(FfxUInt32x2 pixel, FfxInt32x2 filteredOrigin, FfxDofConstants constants,
-                                             FFX_DOF_INOUT(FfxFloat32x4) color)
+// The composed color of one full-res pixel, `inQuad` (0..1 each way) in its invocation's quad;
+// `filteredOrigin` is the half-res texel at filtered index 0. Returns false (and leaves `color` alone) when the pixel keeps its input value.
+FFX_DOF_INLINE FfxBoolean ffxDofComposePixel(FfxUInt32x2 pixel, FfxUInt32x2 inQuad, FfxInt32x2 filteredOrigin, FfxDofConstants constants,
+                                             FfxDofQuadNeighbourhood neighbourhood, FFX_DOF_INOUT(FfxFloat32x4) color)
 {
     FfxFloat32 coc = ffxDofCocFromDepth(ffxDofLoadInputDepth(pixel), constants.cocScale, constants.cocBias,
                                         constants.cocLimit);
@@ -192,7 +212,7 @@ FFX_DOF_INLINE FfxBoolean ffxDofComposePixel(FfxUInt32x2 pixel, FfxInt32x2 filte
     FfxFloat32x3 result = FfxFloat32x3(color.x, color.y, color.z);
     FfxFloat32 fixedBlurBlend = ffxDofFixedBlurBlend(absCoc, nearOpacity);
     if (fixedBlurBlend > 0.0f)
-        result = ffxDofLerp(result, ffxDofFixedBlur(pixel, constants.fullSize), fixedBlurBlend);
+        result = ffxDofLerp(result, ffxDofFixedBlur(neighbourhood, inQuad), fixedBlurBlend);
     if (farWeight > 0.0f)
         result = ffxDofLerp(result, farSum / farWeight, ffxDofFarBlend(absCoc, farWeight / farTotal));
     result = ffxDofLerp(result, nearColor, ffxDofCubicWeight(nearOpacity));
@@ -251,18 +271,20 @@ FFX_DOF_INLINE void ffxDofComposite(FfxUInt32x2 groupId, FfxUInt32 localIndex)
     }
     ffxDofGroupBarrier();
 
+    FfxDofQuadNeighbourhood neighbourhood = ffxDofLoadQuadNeighbourhood(quad, constants.fullSize);
     FFX_DOF_UNROLL
     for (FfxUInt32 k = 0u; k < 4u; ++k)
     {
-        FfxUInt32x2 pixel = quad + FfxUInt32x2(k & 1u, k >> 1u);
+        FfxUInt32x2 inQuad = FfxUInt32x2(k & 1u, k >> 1u);
+        FfxUInt32x2 pixel = quad + inQuad;
         if (pixel.x >= constants.fullSize.x || pixel.y >= constants.fullSize.y)
             continue;
-        FfxFloat32x4 color = ffxDofCompositeInput(pixel, pixel);
+        FfxFloat32x4 color = neighbourhood.color[(inQuad.y + 1u) * 4u + inQuad.x + 1u];
 #if FFX_DOF_OPTION_COMBINE_IN_PLACE
-        if (ffxDofComposePixel(pixel, filteredOrigin, constants, color))
+        if (ffxDofComposePixel(pixel, inQuad, filteredOrigin, constants, neighbourhood, color))
             ffxDofStoreOutput(pixel, color);
 #else
-        ffxDofComposePixel(pixel, filteredOrigin, constants, color);
+        ffxDofComposePixel(pixel, inQuad, filteredOrigin, constants, neighbourhood, color);
         ffxDofStoreOutput(pixel, color);
 #endif
     }

@@ -18,9 +18,31 @@ void ffxDofStoreTile(FfxUInt32x2 tile, FfxFloat32x2 cocMinMax);
 void ffxDofAtomicMaxGlobalRadius(FfxFloat32 radius);
 #endif
 
+// One slot per wave (a wave of one lane on the CPU, so up to one per invocation).
 FFX_DOF_GROUPSHARED FfxFloat32 ffxDofSharedNearDepth[FFX_DOF_GROUP_THREADS];
 FFX_DOF_GROUPSHARED FfxFloat32 ffxDofSharedFarDepth[FFX_DOF_GROUP_THREADS];
 
+FFX_DOF_INLINE FfxFloat32 ffxDofWaveNearestDepth(FfxFloat32 depth)
+{
+#if FFX_DOF_OPTION_REVERSE_DEPTH
+    return ffxDofWaveMax(depth);
+#else
+    return ffxDofWaveMin(depth);
+#endif
+}
+FFX_DOF_INLINE FfxFloat32 ffxDofWaveFarthestDepth(FfxFloat32 depth)
+{
+#if FFX_DOF_OPTION_REVERSE_DEPTH
+    return ffxDofWaveMin(depth);
+#else
+    return ffxDofWaveMax(depth);
+#endif
+}
+
+// The group reduces in two steps, wave operations then one pass over one slot per wave, so that it
+// needs a single barrier: a barrier is cheap on a GPU but costs about as much as the whole pass's
+// memory traffic on a CPU implementation such as lavapipe, where the group's waves run as coroutines
+// (a log2(64)-step tree in group-shared memory, one barrier per step, made this pass 2.5x a copy pass).
 FFX_DOF_INLINE void ffxDofDownsampleDepth(FfxUInt32x2 groupId, FfxUInt32 localIndex)
 {
     FfxDofConstants constants = ffxDofGetConstants();
@@ -32,25 +54,27 @@ FFX_DOF_INLINE void ffxDofDownsampleDepth(FfxUInt32x2 groupId, FfxUInt32 localIn
     FfxFloat32 depth1 = ffxDofLoadInputDepth(min(quad + FfxUInt32x2(1u, 0u), lastPixel));
     FfxFloat32 depth2 = ffxDofLoadInputDepth(min(quad + FfxUInt32x2(0u, 1u), lastPixel));
     FfxFloat32 depth3 = ffxDofLoadInputDepth(min(quad + FfxUInt32x2(1u, 1u), lastPixel));
-    ffxDofSharedNearDepth[localIndex] = ffxDofNearerDepth(ffxDofNearerDepth(depth0, depth1), ffxDofNearerDepth(depth2, depth3));
-    ffxDofSharedFarDepth[localIndex] = ffxDofFartherDepth(ffxDofFartherDepth(depth0, depth1), ffxDofFartherDepth(depth2, depth3));
-    ffxDofGroupBarrier();
-
-    FFX_DOF_UNROLL
-    for (FfxUInt32 stride = FfxUInt32(FFX_DOF_GROUP_THREADS) / 2u; stride > 0u; stride >>= 1u)
+    FfxFloat32 nearDepth = ffxDofWaveNearestDepth(ffxDofNearerDepth(ffxDofNearerDepth(depth0, depth1), ffxDofNearerDepth(depth2, depth3)));
+    FfxFloat32 farDepth = ffxDofWaveFarthestDepth(ffxDofFartherDepth(ffxDofFartherDepth(depth0, depth1), ffxDofFartherDepth(depth2, depth3)));
+    if (ffxDofWaveIsFirstLane())
     {
-        if (localIndex < stride)
-        {
-            ffxDofSharedNearDepth[localIndex] = ffxDofNearerDepth(ffxDofSharedNearDepth[localIndex], ffxDofSharedNearDepth[localIndex + stride]);
-            ffxDofSharedFarDepth[localIndex] = ffxDofFartherDepth(ffxDofSharedFarDepth[localIndex], ffxDofSharedFarDepth[localIndex + stride]);
-        }
-        ffxDofGroupBarrier();
+        FfxUInt32 wave = ffxDofWaveIndex(localIndex);
+        ffxDofSharedNearDepth[wave] = nearDepth;
+        ffxDofSharedFarDepth[wave] = farDepth;
     }
+    ffxDofGroupBarrier();
 
     if (localIndex == 0u)
     {
-        FfxFloat32 nearCoc = ffxDofCocFromDepth(ffxDofSharedNearDepth[0], constants.cocScale, constants.cocBias, constants.cocLimit);
-        FfxFloat32 farCoc = ffxDofCocFromDepth(ffxDofSharedFarDepth[0], constants.cocScale, constants.cocBias, constants.cocLimit);
+        // From slot 0: invocation 0 need not be in wave 0 (GLSL does not say which wave holds it).
+        FFX_DOF_LOOP
+        for (FfxUInt32 wave = 0u; wave < ffxDofWaveCount(); ++wave)
+        {
+            nearDepth = ffxDofNearerDepth(nearDepth, ffxDofSharedNearDepth[wave]);
+            farDepth = ffxDofFartherDepth(farDepth, ffxDofSharedFarDepth[wave]);
+        }
+        FfxFloat32 nearCoc = ffxDofCocFromDepth(nearDepth, constants.cocScale, constants.cocBias, constants.cocLimit);
+        FfxFloat32 farCoc = ffxDofCocFromDepth(farDepth, constants.cocScale, constants.cocBias, constants.cocLimit);
         ffxDofStoreTile(groupId, FfxFloat32x2(farCoc, nearCoc));
         ffxDofAtomicMaxGlobalRadius(max(abs(farCoc), abs(nearCoc)));
     }

@@ -100,6 +100,10 @@
 #define ffxDofWaveAnyTrue(x) subgroupAny(x)
 #define ffxDofWaveAllTrue(x) subgroupAll(x)
 #define ffxDofWaveReadFirst(x) subgroupBroadcastFirst(x)
+#define ffxDofWaveIsFirstLane() subgroupElect()
+// Which wave of the workgroup the invocation runs in, and how many waves the workgroup has.
+#define ffxDofWaveIndex(localIndex) gl_SubgroupID
+#define ffxDofWaveCount() gl_NumSubgroups
 
 // GLSL has no saturate/rcp; overloads per type keep the literals in the argument's precision.
 float ffxDofSaturate(float x) { return clamp(x, 0.0f, 1.0f); }
@@ -166,6 +170,11 @@ typedef half4 FfxFloat16x4;
 #define ffxDofWaveAnyTrue(x) WaveActiveAnyTrue(x)
 #define ffxDofWaveAllTrue(x) WaveActiveAllTrue(x)
 #define ffxDofWaveReadFirst(x) WaveReadLaneFirst(x)
+#define ffxDofWaveIsFirstLane() WaveIsFirstLane()
+// HLSL has no wave index: waves are taken to hold consecutive flattened thread indices, the layout
+// every D3D12 driver uses for a one-dimensional group (FidelityFX SPD relies on it too).
+#define ffxDofWaveIndex(localIndex) ((localIndex) / WaveGetLaneCount())
+#define ffxDofWaveCount() ((FfxUInt32(FFX_DOF_GROUP_THREADS) + WaveGetLaneCount() - 1u) / WaveGetLaneCount())
 
 //==================================================================================================
 #else  // FFX_CPU
@@ -261,6 +270,9 @@ inline float ffxDofAsFloat(uint32_t bits) {
 #define ffxDofWaveAnyTrue(x) (x)
 #define ffxDofWaveAllTrue(x) (x)
 #define ffxDofWaveReadFirst(x) (x)
+#define ffxDofWaveIsFirstLane() true
+#define ffxDofWaveIndex(localIndex) (localIndex)
+#define ffxDofWaveCount() FfxUInt32(FFX_DOF_GROUP_THREADS)
 
 #endif  // language
 

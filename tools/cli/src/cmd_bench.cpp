@@ -55,12 +55,13 @@ void runBench(const BenchOptions& options) {
     settings.outputFormat = VK_FORMAT_R16G16B16A16_SFLOAT;
     settings.repeat = options.repeat;
     settings.measureCopyPass = true;
+    settings.forceFloat32 = options.float32;
     const vkrun::RunResult result = runEffectOrThrow(
         *device, toHostImage(pinhole.color), toHostImage(options.width, options.height, depth.deviceDepth), settings);
 
     const double ratio = result.totalMilliseconds / result.copyPassMilliseconds;
     const vkrun::DeviceFeatures& features = device->features();
-    const bool float16 = features.shaderFloat16 && features.storageBuffer16BitAccess;
+    const bool float16 = !options.float32 && features.shaderFloat16 && features.storageBuffer16BitAccess;
     if (options.json) {
         nlohmann::ordered_json json;
         json["date"] = utcDate();

@@ -55,6 +55,7 @@ struct BenchOptions {
     uint32_t height = 1080;
     uint32_t repeat = 20;
     bool json = false;
+    bool float32 = false;  // 32-bit shaders even where the device has 16-bit float and storage
     EffectOptions effect;
 };
 void runBench(const BenchOptions& options);

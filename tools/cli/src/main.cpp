@@ -150,6 +150,8 @@ int run(int argc, char** argv) {
     benchCommand->add_option("--repeat", bench.repeat, "Dispatches to time; the median is printed")
         ->capture_default_str();
     benchCommand->add_flag("--json", bench.json, "Print one JSON object instead of a table");
+    benchCommand->add_flag("--float32", bench.float32,
+                           "Run the 32-bit shader permutations even where the device supports 16-bit ones");
     addEffectOptions(*benchCommand, bench.effect);
 
     CompareOptions compare;
