@@ -77,10 +77,18 @@ struct FfxDofKernel
 
 // Gathers rings firstRing down to lastRing, from the outside in. With mergeLog > 0, a ring also
 // stands for the 2^mergeLog - 1 rings inside it and is sampled from a MIP mergeLog levels coarser.
+// trackSpread (a literal at every call, so it compiles away) records the radius spread of the
+// samples for the ring-merge decision: only the outermost ring needs it.
+// The sample loop is written for devices that run both sides of every branch (lavapipe, which runs
+// groups of 8 lanes under masks even for a uniform condition): near and far samples are added with
+// 0/1 shares instead of a branch, the hole-fill average is kept for every texel (only a near texel
+// uses it), and positions stay in the sampled MIP's texel units (no int-to-float conversions).
 FFX_DOF_INLINE void ffxDofGatherRings(FFX_DOF_INOUT(FfxDofGather) gather, FfxDofKernel kernel, FfxInt32 firstRing,
-                                      FfxInt32 lastRing, FfxUInt32 mergeLog, FfxDofConstants constants)
+                                      FfxInt32 lastRing, FfxUInt32 mergeLog, FfxBoolean trackSpread,
+                                      FfxDofConstants constants)
 {
     FfxUInt32 mergeStep = 1u << mergeLog;
+    FfxFloat32 nearThreshold = kernel.withNear ? FFX_DOF_NEAR_THRESHOLD : 3.4e38f;
     FfxInt32 ring = firstRing;
     FFX_DOF_LOOP
     while (ring >= lastRing)
@@ -97,40 +105,43 @@ FFX_DOF_INLINE void ffxDofGatherRings(FFX_DOF_INOUT(FfxDofGather) gather, FfxDof
         }
         FfxUInt32 sampleCount = ffxDofRingSampleCount(ringIndex);
         FfxDofBucket ringBucket = ffxDofEmptyBucket();
-        FfxFloat32x2 offset = ffxDofRingSamplePosition(ringIndex, 0u) * kernel.spacing;
+        FfxFloat32 texelSize = FfxFloat32(1u << mip);
+        FfxFloat32 mipScale = 1.0f / texelSize;
+        // In units of MIP texels: sample positions, and the kernel centre less half a texel so that
+        // (texel - centre) is the offset of the texel's centre.
+        FfxFloat32x2 origin = kernel.origin * mipScale;
+        FfxFloat32x2 centerToCorner = kernel.center * mipScale - FfxFloat32x2(0.5f, 0.5f);
+        FfxFloat32x2 lastTexel = FfxFloat32x2(ffxDofMipSize(constants.halfSize, mip) - FfxUInt32x2(1u, 1u));
+        FfxFloat32x2 offset = ffxDofRingSamplePosition(ringIndex, 0u) * (kernel.spacing * mipScale);
         FfxFloat32x2 step = ffxDofRingSampleStep(ringIndex);
-        FfxFloat32 mipScale = 1.0f / FfxFloat32(1u << mip);
-        FfxInt32x2 lastTexel = FfxInt32x2(ffxDofMipSize(constants.halfSize, mip)) - FfxInt32x2(1, 1);
         FFX_DOF_LOOP
         for (FfxUInt32 sampleIndex = 0u; sampleIndex < sampleCount; ++sampleIndex)
         {
-            FfxInt32x2 sampleTexel = clamp(FfxInt32x2(floor((kernel.origin + offset) * mipScale)), FfxInt32x2(0, 0), lastTexel);
+            FfxFloat32x2 sampleTexel = clamp(floor(origin + offset), FfxFloat32x2(0.0f, 0.0f), lastTexel);
             offset = FfxFloat32x2(offset.x * step.x - offset.y * step.y, offset.x * step.y + offset.y * step.x);
-            FfxDofFloat3 color = ffxDofLoadColorMip(sampleTexel, mip);
-            FfxFloat32 coc = ffxDofLoadCocMip(sampleTexel, mip);
-            gather.cocSpread = max(gather.cocSpread, abs(coc - kernel.centerCoc));
+            FfxFloat32x3 color = ffxDofToFloat32x3(ffxDofLoadColorMip(FfxInt32x2(sampleTexel), mip));
+            FfxFloat32 coc = ffxDofLoadCocMip(FfxInt32x2(sampleTexel), mip);
+            if (trackSpread)
+                gather.cocSpread = max(gather.cocSpread, abs(coc - kernel.centerCoc));
             // Reach is judged from the centre of the texel actually read, not from the ring: the
             // ring distance would let a texel spread half a texel beyond its radius.
-            FfxFloat32 distance = length(ffxDofMipTexelCenter(sampleTexel, mip) - kernel.center);
-            // Near and far samples weigh alike (reach times inverse area): computed once, before the
-            // branch, because a CPU implementation such as lavapipe runs both sides of every branch.
+            FfxFloat32x2 toTexel = sampleTexel - centerToCorner;
+            FfxFloat32 distance = sqrt(dot(toTexel, toTexel)) * texelSize;
+            // Near and far samples weigh alike (reach times inverse area).
             FfxFloat32 absCoc = abs(coc);
             FfxFloat32 reach = ffxDofReach(absCoc, distance);
             FfxFloat32 weight = reach * ffxDofAreaWeight(absCoc) * ringWeight;
-            if (kernel.withNear && coc >= FFX_DOF_NEAR_THRESHOLD)
-            {
-                gather.nearSum += ffxDofToFloat32x3(color) * weight;
-                gather.nearWeight += weight;
-            }
-            else
-            {
-                ffxDofBucketAddWeighted(ringBucket, color, absCoc, reach, weight);
-                if (kernel.centerIsNear)
-                {
-                    gather.fillSum += ffxDofToFloat32x3(color);
-                    gather.fillCount += 1.0f;
-                }
-            }
+            FfxFloat32 farShare = coc >= nearThreshold ? 0.0f : 1.0f;
+            FfxFloat32 farWeight = weight * farShare;
+            FfxFloat32 nearWeight = weight - farWeight;
+            gather.nearSum += color * nearWeight;
+            gather.nearWeight += nearWeight;
+            ringBucket.color += color * farWeight;
+            ringBucket.weight += farWeight;
+            ringBucket.radius += absCoc * farWeight;
+            ringBucket.coverage += reach * farShare;
+            gather.fillSum += color * farShare;
+            gather.fillCount += farShare;
         }
         ringBucket.sampleCount = FfxFloat32(sampleCount);
         gather.weightedSamples += FfxFloat32(sampleCount) * ringWeight;
@@ -140,7 +151,8 @@ FFX_DOF_INLINE void ffxDofGatherRings(FFX_DOF_INOUT(FfxDofGather) gather, FfxDof
 }
 
 // The layers of one texel from its finished gather; `result` holds the defaults (texel itself).
-FFX_DOF_INLINE FfxDofBlurResult ffxDofFinishGather(FfxDofGather gather, FfxFloat32 kernelRadius, FfxDofBlurResult result)
+FFX_DOF_INLINE FfxDofBlurResult ffxDofFinishGather(FfxDofGather gather, FfxDofKernel kernel, FfxFloat32 kernelRadius,
+                                                   FfxDofBlurResult result)
 {
     if (gather.nearWeight > 0.0f)
     {
@@ -149,7 +161,7 @@ FFX_DOF_INLINE FfxDofBlurResult ffxDofFinishGather(FfxDofGather gather, FfxFloat
     }
     if (gather.outer.weight > 0.0f)
         result.farColor = ffxDofToDofFloat3(gather.outer.color / gather.outer.weight);
-    else if (gather.fillCount > 0.0f)
+    else if (kernel.centerIsNear && gather.fillCount > 0.0f)
         result.farColor = ffxDofToDofFloat3(gather.fillSum / gather.fillCount);
     else
         result.alpha.y = 0.0f;
@@ -192,7 +204,7 @@ FFX_DOF_INLINE FfxDofBlurResult ffxDofBlurTexel(FfxUInt32x2 texel, FfxFloat32x2 
     // how flat the radii around the texel are: the merged path is taken by how flat, per texel, from
     // the texel's own samples, never per tile (a per-tile switch shows as tile-shaped blocks).
     FfxInt32 outerRing = FfxInt32(kernel.rings);
-    ffxDofGatherRings(gather, kernel, outerRing, outerRing, 0u, constants);
+    ffxDofGatherRings(gather, kernel, outerRing, outerRing, 0u, true, constants);
     FfxFloat32 mergeAmount = 0.0f;
 #if FFX_DOF_OPTION_MAX_RING_MERGE_LOG > 0
     if (kernel.rings >= 2u && kernel.centerCoc <= -FFX_DOF_IN_FOCUS_RADIUS)
@@ -202,14 +214,15 @@ FFX_DOF_INLINE FfxDofBlurResult ffxDofBlurTexel(FfxUInt32x2 texel, FfxFloat32x2 
     if (mergeAmount < 1.0f)
     {
         FfxDofGather full = gather;
-        ffxDofGatherRings(full, kernel, outerRing - 1, 0, 0u, constants);
-        fullResult = ffxDofFinishGather(full, kernelRadius, result);
+        ffxDofGatherRings(full, kernel, outerRing - 1, 0, 0u, false, constants);
+        fullResult = ffxDofFinishGather(full, kernel, kernelRadius, result);
     }
 #if FFX_DOF_OPTION_MAX_RING_MERGE_LOG > 0
     if (mergeAmount > 0.0f)
     {
-        ffxDofGatherRings(gather, kernel, outerRing - 1, 0, FfxUInt32(FFX_DOF_OPTION_MAX_RING_MERGE_LOG), constants);
-        FfxDofBlurResult mergedResult = ffxDofFinishGather(gather, kernelRadius, result);
+        ffxDofGatherRings(gather, kernel, outerRing - 1, 0, FfxUInt32(FFX_DOF_OPTION_MAX_RING_MERGE_LOG), false,
+                          constants);
+        FfxDofBlurResult mergedResult = ffxDofFinishGather(gather, kernel, kernelRadius, result);
         if (mergeAmount >= 1.0f)
             return mergedResult;
         // Between flat and not flat both paths run and are mixed, so the switch is continuous.
