@@ -12,12 +12,15 @@
 //   Hole filling: when the texel itself is near, the far-field samples are also averaged regardless
 //   of reach, and that average is the far color where no far-field sample reaches.
 // Tile classes: copy (every radius that reaches the tile is in focus; equal to R < 0.5 per texel);
-// far-only (no near radius reaches: the near branch is skipped, which changes nothing because a
+// far-only (no near radius reaches: no sample counts as near, which changes nothing because a
 // near sample from a tile that does not reach has zero reach).
 // Ring merging (FFX_DOF_OPTION_MAX_RING_MERGE_LOG > 0) is decided per texel, not per tile: the
 // outermost ring is gathered at full resolution first; where its radii are all within half a pixel
 // of the texel's own (a flat far field), inner rings are gathered from a coarser MIP, 2^log rings at
-// a time; between half a pixel and one pixel both paths run and are mixed (ffxDofRingMergeAmount).
+// a time; between half a pixel and one pixel the groups of rings are merged one after the other as
+// the spread falls, the one part-way mixed ring by ring (ffxDofRingMergeAmount,
+// ffxDofGatherInnerRings), so the result is continuous and costs at most one ring more than the
+// full path.
 // Samples are point-sampled (no bilinear mixing of a foreground and a background texel, which
 // would let the foreground color leak with a halfway radius).
 //
@@ -75,78 +78,118 @@ struct FfxDofKernel
     FfxBoolean centerIsNear;
 };
 
-// Gathers rings firstRing down to lastRing, from the outside in. With mergeLog > 0, a ring also
-// stands for the 2^mergeLog - 1 rings inside it and is sampled from a MIP mergeLog levels coarser.
+// Gathers ring `ringIndex` from MIP `mip`; each sample stands for `ringWeight` samples (a merged
+// ring stands for the rings inside it too) and the whole ring counts `presence` (0..1) times.
 // trackSpread (a literal at every call, so it compiles away) records the radius spread of the
 // samples for the ring-merge decision: only the outermost ring needs it.
 // The sample loop is written for devices that run both sides of every branch (lavapipe, which runs
 // groups of 8 lanes under masks even for a uniform condition): near and far samples are added with
 // 0/1 shares instead of a branch, the hole-fill average is kept for every texel (only a near texel
 // uses it), and positions stay in the sampled MIP's texel units (no int-to-float conversions).
-FFX_DOF_INLINE void ffxDofGatherRings(FFX_DOF_INOUT(FfxDofGather) gather, FfxDofKernel kernel, FfxInt32 firstRing,
-                                      FfxInt32 lastRing, FfxUInt32 mergeLog, FfxBoolean trackSpread,
-                                      FfxDofConstants constants)
+FFX_DOF_INLINE void ffxDofGatherRing(FFX_DOF_INOUT(FfxDofGather) gather, FfxDofKernel kernel, FfxUInt32 ringIndex,
+                                     FfxUInt32 mip, FfxFloat32 ringWeight, FfxFloat32 presence, FfxBoolean trackSpread,
+                                     FfxDofConstants constants)
 {
-    FfxUInt32 mergeStep = 1u << mergeLog;
     FfxFloat32 nearThreshold = kernel.withNear ? FFX_DOF_NEAR_THRESHOLD : 3.4e38f;
-    FfxInt32 ring = firstRing;
+    FfxFloat32 sampleWeight = ringWeight * presence;
+    FfxUInt32 sampleCount = ffxDofRingSampleCount(ringIndex);
+    FfxDofBucket ringBucket = ffxDofEmptyBucket();
+    FfxFloat32x3 ringFillSum = FfxFloat32x3(0.0f, 0.0f, 0.0f);
+    FfxFloat32 ringFillCount = 0.0f;
+    FfxFloat32 texelSize = FfxFloat32(1u << mip);
+    FfxFloat32 mipScale = 1.0f / texelSize;
+    // In units of MIP texels: sample positions, and the kernel centre less half a texel so that
+    // (texel - centre) is the offset of the texel's centre.
+    FfxFloat32x2 origin = kernel.origin * mipScale;
+    FfxFloat32x2 centerToCorner = kernel.center * mipScale - FfxFloat32x2(0.5f, 0.5f);
+    FfxFloat32x2 lastTexel = FfxFloat32x2(ffxDofMipSize(constants.halfSize, mip) - FfxUInt32x2(1u, 1u));
+    FfxFloat32x2 offset = ffxDofRingSamplePosition(ringIndex, 0u) * (kernel.spacing * mipScale);
+    FfxFloat32x2 step = ffxDofRingSampleStep(ringIndex);
     FFX_DOF_LOOP
-    while (ring >= lastRing)
+    for (FfxUInt32 sampleIndex = 0u; sampleIndex < sampleCount; ++sampleIndex)
     {
-        FfxUInt32 ringIndex = FfxUInt32(ring);
-        FfxBoolean merged = mergeStep > 1u && ringIndex < kernel.rings && ringIndex > 0u;
-        FfxUInt32 mip = min(kernel.baseMip + (merged ? mergeLog : 0u), FfxUInt32(FFX_DOF_OPTION_MAX_MIP - 1));
-        FfxFloat32 ringWeight = 1.0f;
-        if (merged)
+        FfxFloat32x2 sampleTexel = clamp(floor(origin + offset), FfxFloat32x2(0.0f, 0.0f), lastTexel);
+        offset = FfxFloat32x2(offset.x * step.x - offset.y * step.y, offset.x * step.y + offset.y * step.x);
+        FfxFloat32x3 color = ffxDofToFloat32x3(ffxDofLoadColorMip(FfxInt32x2(sampleTexel), mip));
+        FfxFloat32 coc = ffxDofLoadCocMip(FfxInt32x2(sampleTexel), mip);
+        if (trackSpread)
+            gather.cocSpread = max(gather.cocSpread, abs(coc - kernel.centerCoc));
+        // Reach is judged from the centre of the texel actually read, not from the ring: the
+        // ring distance would let a texel spread half a texel beyond its radius.
+        FfxFloat32x2 toTexel = sampleTexel - centerToCorner;
+        FfxFloat32 distance = sqrt(dot(toTexel, toTexel)) * texelSize;
+        // Near and far samples weigh alike (reach times inverse area).
+        FfxFloat32 absCoc = abs(coc);
+        FfxFloat32 reach = ffxDofReach(absCoc, distance);
+        FfxFloat32 weight = reach * ffxDofAreaWeight(absCoc) * sampleWeight;
+        FfxFloat32 farShare = coc >= nearThreshold ? 0.0f : 1.0f;
+        FfxFloat32 farWeight = weight * farShare;
+        FfxFloat32 nearWeight = weight - farWeight;
+        gather.nearSum += color * nearWeight;
+        gather.nearWeight += nearWeight;
+        ringBucket.color += color * farWeight;
+        ringBucket.weight += farWeight;
+        ringBucket.radius += absCoc * farWeight;
+        ringBucket.coverage += reach * farShare;
+        ringFillSum += color * farShare;
+        ringFillCount += farShare;
+    }
+    // A ring of presence 0 leaves everything as it was (no weight, no occlusion).
+    ringBucket.coverage *= presence;
+    ringBucket.sampleCount = FfxFloat32(sampleCount);
+    gather.fillSum += ringFillSum * presence;
+    gather.fillCount += ringFillCount * presence;
+    gather.weightedSamples += FfxFloat32(sampleCount) * sampleWeight;
+    gather.outer = ffxDofMergeBuckets(gather.outer, ringBucket, kernel.spacing);
+}
+
+// Weight of each sample of ring `last` when it stands for rings first..last (6 * ring samples each).
+FFX_DOF_INLINE FfxFloat32 ffxDofMergedRingWeight(FfxUInt32 first, FfxUInt32 last)
+{
+    return FfxFloat32((first + last) * (last - first + 1u)) / FfxFloat32(2u * last);
+}
+
+// Gathers every ring inside the outermost one, from the outside in. Rings 1 .. rings - 1 form groups
+// of 2^FFX_DOF_OPTION_MAX_RING_MERGE_LOG; a group is gathered either ring by ring at the kernel's MIP
+// (full) or as its outermost ring from a MIP that much coarser (merged). mergeAmount (0..1) merges
+// the groups one after the other, from the outside in, and mixes the one group it is part-way
+// through: that group's merged ring with presence f and its full rings with presence 1 - f. So the
+// result is continuous in mergeAmount, and a texel walks at most one ring more than the full path.
+// One loop walks one ring per pass whatever each lane's schedule is: on devices that run groups of
+// lanes in lock step (lavapipe: 8), lanes that merge and lanes that do not share the passes instead
+// of running a merged loop and a full loop one after the other.
+FFX_DOF_INLINE void ffxDofGatherInnerRings(FFX_DOF_INOUT(FfxDofGather) gather, FfxDofKernel kernel,
+                                           FfxFloat32 mergeAmount, FfxDofConstants constants)
+{
+    FfxUInt32 mergeLog = FfxUInt32(FFX_DOF_OPTION_MAX_RING_MERGE_LOG);
+    FfxUInt32 groupSize = 1u << mergeLog;
+    FfxUInt32 groupCount = (kernel.rings - 1u + groupSize - 1u) / groupSize;
+    FfxFloat32 mergedGroups = mergeAmount * FfxFloat32(groupCount);
+    FfxInt32 top = FfxInt32(kernel.rings) - 1;  // outermost ring of the current group
+    FfxUInt32 group = 0u;
+    FfxUInt32 walk = 0u;  // rings of the current group walked so far
+    FFX_DOF_LOOP
+    while (top >= 0)
+    {
+        FfxUInt32 topRing = FfxUInt32(top);
+        // Ring 0 (the centre sample) is a group of its own, never merged.
+        FfxUInt32 first = topRing == 0u ? 0u : (topRing + 1u > groupSize ? topRing + 1u - groupSize : 1u);
+        FfxFloat32 merged = topRing == 0u ? 0.0f : ffxDofSaturate(mergedGroups - FfxFloat32(group));
+        FfxUInt32 mergedWalks = merged > 0.0f ? 1u : 0u;
+        FfxUInt32 walks = mergedWalks + (merged < 1.0f ? topRing - first + 1u : 0u);
+        FfxBoolean mergedWalk = walk < mergedWalks;
+        FfxUInt32 ring = mergedWalk ? topRing : topRing + mergedWalks - walk;
+        FfxUInt32 mip = min(kernel.baseMip + (mergedWalk ? mergeLog : 0u), FfxUInt32(FFX_DOF_OPTION_MAX_MIP - 1));
+        FfxFloat32 ringWeight = mergedWalk ? ffxDofMergedRingWeight(first, topRing) : 1.0f;
+        FfxFloat32 presence = mergedWalk ? merged : 1.0f - merged;
+        ffxDofGatherRing(gather, kernel, ring, mip, ringWeight, presence, false, constants);
+        ++walk;
+        if (walk == walks)
         {
-            // Rings max(ring - step + 1, 1) .. ring have (first + last) * n / 2 times 6 samples.
-            FfxUInt32 first = ringIndex + 1u > mergeStep ? ringIndex + 1u - mergeStep : 1u;
-            ringWeight = FfxFloat32((first + ringIndex) * (ringIndex - first + 1u)) / FfxFloat32(2u * ringIndex);
+            top = FfxInt32(first) - 1;
+            ++group;
+            walk = 0u;
         }
-        FfxUInt32 sampleCount = ffxDofRingSampleCount(ringIndex);
-        FfxDofBucket ringBucket = ffxDofEmptyBucket();
-        FfxFloat32 texelSize = FfxFloat32(1u << mip);
-        FfxFloat32 mipScale = 1.0f / texelSize;
-        // In units of MIP texels: sample positions, and the kernel centre less half a texel so that
-        // (texel - centre) is the offset of the texel's centre.
-        FfxFloat32x2 origin = kernel.origin * mipScale;
-        FfxFloat32x2 centerToCorner = kernel.center * mipScale - FfxFloat32x2(0.5f, 0.5f);
-        FfxFloat32x2 lastTexel = FfxFloat32x2(ffxDofMipSize(constants.halfSize, mip) - FfxUInt32x2(1u, 1u));
-        FfxFloat32x2 offset = ffxDofRingSamplePosition(ringIndex, 0u) * (kernel.spacing * mipScale);
-        FfxFloat32x2 step = ffxDofRingSampleStep(ringIndex);
-        FFX_DOF_LOOP
-        for (FfxUInt32 sampleIndex = 0u; sampleIndex < sampleCount; ++sampleIndex)
-        {
-            FfxFloat32x2 sampleTexel = clamp(floor(origin + offset), FfxFloat32x2(0.0f, 0.0f), lastTexel);
-            offset = FfxFloat32x2(offset.x * step.x - offset.y * step.y, offset.x * step.y + offset.y * step.x);
-            FfxFloat32x3 color = ffxDofToFloat32x3(ffxDofLoadColorMip(FfxInt32x2(sampleTexel), mip));
-            FfxFloat32 coc = ffxDofLoadCocMip(FfxInt32x2(sampleTexel), mip);
-            if (trackSpread)
-                gather.cocSpread = max(gather.cocSpread, abs(coc - kernel.centerCoc));
-            // Reach is judged from the centre of the texel actually read, not from the ring: the
-            // ring distance would let a texel spread half a texel beyond its radius.
-            FfxFloat32x2 toTexel = sampleTexel - centerToCorner;
-            FfxFloat32 distance = sqrt(dot(toTexel, toTexel)) * texelSize;
-            // Near and far samples weigh alike (reach times inverse area).
-            FfxFloat32 absCoc = abs(coc);
-            FfxFloat32 reach = ffxDofReach(absCoc, distance);
-            FfxFloat32 weight = reach * ffxDofAreaWeight(absCoc) * ringWeight;
-            FfxFloat32 farShare = coc >= nearThreshold ? 0.0f : 1.0f;
-            FfxFloat32 farWeight = weight * farShare;
-            FfxFloat32 nearWeight = weight - farWeight;
-            gather.nearSum += color * nearWeight;
-            gather.nearWeight += nearWeight;
-            ringBucket.color += color * farWeight;
-            ringBucket.weight += farWeight;
-            ringBucket.radius += absCoc * farWeight;
-            ringBucket.coverage += reach * farShare;
-            gather.fillSum += color * farShare;
-            gather.fillCount += farShare;
-        }
-        ringBucket.sampleCount = FfxFloat32(sampleCount);
-        gather.weightedSamples += FfxFloat32(sampleCount) * ringWeight;
-        gather.outer = ffxDofMergeBuckets(gather.outer, ringBucket, kernel.spacing);
-        ring = merged ? max(ring - FfxInt32(mergeStep), 0) : ring - 1;
     }
 }
 
@@ -203,36 +246,14 @@ FFX_DOF_INLINE FfxDofBlurResult ffxDofBlurTexel(FfxUInt32x2 texel, FfxFloat32x2 
     // The outermost ring is always gathered at full resolution (it keeps the circle), and it tells
     // how flat the radii around the texel are: the merged path is taken by how flat, per texel, from
     // the texel's own samples, never per tile (a per-tile switch shows as tile-shaped blocks).
-    FfxInt32 outerRing = FfxInt32(kernel.rings);
-    ffxDofGatherRings(gather, kernel, outerRing, outerRing, 0u, true, constants);
+    ffxDofGatherRing(gather, kernel, kernel.rings, kernel.baseMip, 1.0f, 1.0f, true, constants);
     FfxFloat32 mergeAmount = 0.0f;
 #if FFX_DOF_OPTION_MAX_RING_MERGE_LOG > 0
     if (kernel.rings >= 2u && kernel.centerCoc <= -FFX_DOF_IN_FOCUS_RADIUS)
         mergeAmount = ffxDofRingMergeAmount(gather.cocSpread);
 #endif
-    FfxDofBlurResult fullResult = result;
-    if (mergeAmount < 1.0f)
-    {
-        FfxDofGather full = gather;
-        ffxDofGatherRings(full, kernel, outerRing - 1, 0, 0u, false, constants);
-        fullResult = ffxDofFinishGather(full, kernel, kernelRadius, result);
-    }
-#if FFX_DOF_OPTION_MAX_RING_MERGE_LOG > 0
-    if (mergeAmount > 0.0f)
-    {
-        ffxDofGatherRings(gather, kernel, outerRing - 1, 0, FfxUInt32(FFX_DOF_OPTION_MAX_RING_MERGE_LOG), false,
-                          constants);
-        FfxDofBlurResult mergedResult = ffxDofFinishGather(gather, kernel, kernelRadius, result);
-        if (mergeAmount >= 1.0f)
-            return mergedResult;
-        // Between flat and not flat both paths run and are mixed, so the switch is continuous.
-        FfxDofFloat mergedShare = FfxDofFloat(mergeAmount);
-        fullResult.nearColor += (mergedResult.nearColor - fullResult.nearColor) * mergedShare;
-        fullResult.farColor += (mergedResult.farColor - fullResult.farColor) * mergedShare;
-        fullResult.alpha = ffxDofLerp(fullResult.alpha, mergedResult.alpha, mergeAmount);
-    }
-#endif
-    return fullResult;
+    ffxDofGatherInnerRings(gather, kernel, mergeAmount, constants);
+    return ffxDofFinishGather(gather, kernel, kernelRadius, result);
 }
 
 FFX_DOF_INLINE void ffxDofBlur(FfxUInt32x2 groupId, FfxUInt32 localIndex)
