@@ -40,12 +40,6 @@ void ffxDofStoreFarColor(FfxUInt32x2 texel, FfxDofFloat3 color);
 void ffxDofStoreLayerAlpha(FfxUInt32x2 texel, FfxFloat32x2 nearOpacityFarValidity);
 #endif
 
-// Centre of texel `texel` of MIP `mip`, in half-res px.
-FFX_DOF_INLINE FfxFloat32x2 ffxDofMipTexelCenter(FfxInt32x2 texel, FfxUInt32 mip)
-{
-    return (FfxFloat32x2(texel) + FfxFloat32x2(0.5f, 0.5f)) * FfxFloat32(1u << mip);
-}
-
 struct FfxDofBlurResult
 {
     FfxDofFloat3 nearColor;
