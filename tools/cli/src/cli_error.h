@@ -5,6 +5,8 @@
 // text both are made from.
 #pragma once
 
+#include "ffx_dof_imageio.h"
+
 #include <stdexcept>
 #include <string>
 
@@ -32,5 +34,15 @@ public:
 private:
     ExitCode code_;
 };
+
+// Runs an input-reading call, turning the image library's errors into exit code InputFile.
+template <typename Read>
+auto readInput(Read read) {
+    try {
+        return read();
+    } catch (const io::IoError& error) {
+        throw CliError(ExitCode::InputFile, error.what());
+    }
+}
 
 }  // namespace ffxdof::cli

@@ -29,15 +29,6 @@ DepthProjection deviceProjection(const ApplyOptions& options) {
     return projectionFromNearFar(*options.nearPlane, *options.farPlane, options.reverseDepth);
 }
 
-template <typename Read>
-auto readInput(Read read) {
-    try {
-        return read();
-    } catch (const io::IoError& error) {
-        throw CliError(ExitCode::InputFile, error.what());
-    }
-}
-
 }  // namespace
 
 void runApply(const ApplyOptions& options) {

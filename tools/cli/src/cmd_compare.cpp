@@ -10,15 +10,6 @@
 namespace ffxdof::cli {
 namespace {
 
-template <typename Read>
-auto readInput(Read read) {
-    try {
-        return read();
-    } catch (const io::IoError& error) {
-        throw CliError(ExitCode::InputFile, error.what());
-    }
-}
-
 void requireSize(uint32_t width, uint32_t height, const io::ImageRGBA& reference, const std::string& what) {
     if (width != reference.width || height != reference.height) {
         throw CliError(ExitCode::InvalidValue, what + " is " + std::to_string(width) + "x" + std::to_string(height) +
