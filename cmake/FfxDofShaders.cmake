@@ -1,14 +1,17 @@
 # ffx_dof_add_shader_library: every permutation of every pass, compiled by ffx-dof-shaderc at build
 # time into a static library of embedded SPIR-V tables.
 #
-#   ffx_dof_add_shader_library(<target> LANGUAGE glsl|hlsl
+#   ffx_dof_add_shader_library(<target> LANGUAGE glsl|hlsl|dxil
+#       [DXC <program or target>]          LANGUAGE dxil only: the dxc to run (default FFX_DOF_DXC)
 #       [NAMESPACE <c++ namespace>]        default ffxdof::shaders::<language>
 #       [PASSES <pass>...]                 default: every pass of the permutations JSON
 #       [PERMUTATIONS_JSON <file>]         default: global property FFX_DOF_PERMUTATIONS_JSON
-#       [SOURCE_DIR <dir>]                 default: shaders_common/entry (ffx_dof_<pass>.<language>)
+#       [SOURCE_DIR <dir>]                 default: shaders_common/entry (ffx_dof_<pass>.<language>;
+#                                          .hlsl for dxil)
 #       [INCLUDE_DIRS <dir>...]            default: shaders_common
 #       [DEFINES NAME=VALUE...]            plain defines in every permutation
-#       [HLSL_SHIFTS t=N u=N s=N b=N]      HLSL register class -> binding shifts
+#       [HLSL_SHIFTS t=N u=N s=N b=N]      HLSL register class -> binding shifts (SPIR-V only;
+#                                          ignored for dxil, which binds the registers)
 #       [NO_INSTALL])
 #
 # <target> links ffx_dof_shader_table and has <target>.h on its include path, declaring in the
@@ -17,18 +20,43 @@
 # (nullptr for an unknown pass). Only headers a pass really includes trigger its recompilation
 # (the tool writes a depfile).
 #
-# DXIL for the D3D12 backend is not produced by this function: FFX_DOF_HAVE_DXIL is OFF (see
-# docs/permutations.md), and the D3D12 backend reports FFX_DOF_ERROR_UNSUPPORTED.
+# DXIL for the D3D12 backend (end of this file): on Windows, or wherever FFX_DOF_DXC is set, dxc
+# is looked up; when found and the D3D12 backend is built, the target ffx_dof_shaders_dxil is made
+# (LANGUAGE dxil) and FFX_DOF_HAVE_DXIL is ON. Elsewhere there is no DXIL, and the D3D12 backend
+# reports FFX_DOF_ERROR_UNSUPPORTED at context creation. See docs/permutations.md.
 set(FFX_DOF_HAVE_DXIL OFF CACHE INTERNAL "Whether DXIL shader tables are built")
 
 function(ffx_dof_add_shader_library target)
-  cmake_parse_arguments(PARSE_ARGV 1 arg "NO_INSTALL" "LANGUAGE;NAMESPACE;PERMUTATIONS_JSON;SOURCE_DIR"
+  cmake_parse_arguments(PARSE_ARGV 1 arg "NO_INSTALL" "LANGUAGE;DXC;NAMESPACE;PERMUTATIONS_JSON;SOURCE_DIR"
                         "PASSES;INCLUDE_DIRS;DEFINES;HLSL_SHIFTS")
   if(arg_UNPARSED_ARGUMENTS)
     message(FATAL_ERROR "ffx_dof_add_shader_library(${target}): unknown arguments: ${arg_UNPARSED_ARGUMENTS}")
   endif()
-  if(NOT arg_LANGUAGE MATCHES "^(glsl|hlsl)$")
-    message(FATAL_ERROR "ffx_dof_add_shader_library(${target}): LANGUAGE must be glsl or hlsl, got '${arg_LANGUAGE}'")
+  if(NOT arg_LANGUAGE MATCHES "^(glsl|hlsl|dxil)$")
+    message(FATAL_ERROR "ffx_dof_add_shader_library(${target}): LANGUAGE must be glsl, hlsl or dxil, got '${arg_LANGUAGE}'")
+  endif()
+  # DXIL is compiled from the HLSL sources by dxc; the tool needs its path and reads no shifts.
+  set(source_language ${arg_LANGUAGE})
+  set(dxc_args "")
+  set(dxc_depends "")
+  if(arg_LANGUAGE STREQUAL "dxil")
+    set(source_language hlsl)
+    if(NOT arg_DXC)
+      set(arg_DXC "${FFX_DOF_DXC}")
+    endif()
+    if(TARGET "${arg_DXC}")
+      set(dxc_args --dxc "$<TARGET_FILE:${arg_DXC}>")
+      set(dxc_depends "${arg_DXC}")
+    elseif(arg_DXC AND EXISTS "${arg_DXC}")
+      set(dxc_args --dxc "${arg_DXC}")
+      set(dxc_depends "${arg_DXC}")
+    else()
+      message(FATAL_ERROR "ffx_dof_add_shader_library(${target}): LANGUAGE dxil needs DXC (a dxc program or target); "
+                          "'${arg_DXC}' is neither (set FFX_DOF_DXC)")
+    endif()
+    set(arg_HLSL_SHIFTS "")
+  elseif(arg_DXC)
+    message(FATAL_ERROR "ffx_dof_add_shader_library(${target}): DXC is for LANGUAGE dxil only")
   endif()
   if(NOT TARGET ffx-dof-shaderc)
     message(FATAL_ERROR "ffx_dof_add_shader_library(${target}): the ffx-dof-shaderc tool is not part of this build "
@@ -56,7 +84,7 @@ function(ffx_dof_add_shader_library target)
     message(FATAL_ERROR "ffx_dof_add_shader_library(${target}): ${arg_PERMUTATIONS_JSON}: ${json_error}")
   endif()
 
-  set(common_args --language ${arg_LANGUAGE} --namespace ${arg_NAMESPACE})
+  set(common_args --language ${source_language} --namespace ${arg_NAMESPACE} ${dxc_args})
   foreach(dir IN LISTS arg_INCLUDE_DIRS)
     list(APPEND common_args -I ${dir})
   endforeach()
@@ -77,7 +105,7 @@ function(ffx_dof_add_shader_library target)
       continue()
     endif()
     list(APPEND built_passes ${pass})
-    set(source "${arg_SOURCE_DIR}/ffx_dof_${pass}.${arg_LANGUAGE}")
+    set(source "${arg_SOURCE_DIR}/ffx_dof_${pass}.${source_language}")
     if(NOT EXISTS "${source}")
       message(FATAL_ERROR "ffx_dof_add_shader_library(${target}): the source of pass '${pass}' is missing: ${source}")
     endif()
@@ -103,7 +131,7 @@ function(ffx_dof_add_shader_library target)
       OUTPUT "${out_dir}/${stem}.h" "${out_dir}/${stem}.cpp" "${out_dir}/${stem}.json"
       COMMAND ffx-dof-shaderc "${source}" --pass ${pass} ${common_args} ${axis_args} -o "${out_dir}"
               --basename ${stem} --depfile "${out_dir}/${stem}.d"
-      DEPENDS ffx-dof-shaderc "${source}"
+      DEPENDS ffx-dof-shaderc "${source}" ${dxc_depends}
       DEPFILE "${out_dir}/${stem}.d"
       COMMENT "ffx-dof-shaderc: all permutations of ${pass} (${arg_LANGUAGE})"
       VERBATIM)
@@ -169,3 +197,18 @@ const ffxdof::shaders::PassTable* findPassTable(const char* pass) {
     install(TARGETS ${target} EXPORT ffx-dof-targets ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR})
   endif()
 endfunction()
+
+# DXIL for the D3D12 backend, which links ffx_dof_shaders_dxil when it exists (backends/ comes after
+# this file). Not in the MinGW cross build: it has no shader compiler (FFX_DOF_BUILD_VULKAN is off
+# there, so this file is not included).
+if(FFX_DOF_BUILD_DX12 AND (WIN32 OR FFX_DOF_DXC))
+  find_program(FFX_DOF_DXC dxc DOC "dxc, the DirectX shader compiler, for the D3D12 backend's DXIL")
+  if(FFX_DOF_DXC)
+    ffx_dof_add_shader_library(ffx_dof_shaders_dxil LANGUAGE dxil DXC "${FFX_DOF_DXC}")
+    set(FFX_DOF_HAVE_DXIL ON CACHE INTERNAL "Whether DXIL shader tables are built")
+    message(STATUS "ffx-dof: DXIL from ${FFX_DOF_DXC}")
+  else()
+    set(FFX_DOF_HAVE_DXIL OFF CACHE INTERNAL "Whether DXIL shader tables are built")
+    message(STATUS "ffx-dof: dxc not found (set FFX_DOF_DXC): no DXIL, the D3D12 backend will report UNSUPPORTED")
+  endif()
+endif()

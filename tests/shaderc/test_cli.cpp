@@ -1,55 +1,19 @@
 // The command line: bad input gets one line naming the problem, a non-zero exit, and no output.
 #include <catch2/catch.hpp>
 
+#include "run_tool.h"
+
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
-#include <sstream>
 #include <string>
-#include <sys/wait.h>
-#include <unistd.h>
 
 namespace fs = std::filesystem;
+using namespace ffxdof::test;
 
 namespace {
 
-struct RunResult {
-    int exitCode = -1;
-    std::string stderrText;
-};
-
-// Runs the tool with `arguments` (shell-quoted by the caller), capturing stderr.
-RunResult runTool(const std::string& arguments) {
-    // One file per process: CTest runs the test cases of this file in parallel processes.
-    const fs::path errFile = fs::path(FFX_DOF_TEST_WORK_DIR) / ("stderr." + std::to_string(getpid()) + ".txt");
-    fs::create_directories(FFX_DOF_TEST_WORK_DIR);
-    const std::string command =
-        std::string("'") + FFX_DOF_SHADERC_EXE + "' " + arguments + " 2>'" + errFile.string() + "' >/dev/null";
-    const int status = std::system(command.c_str());
-    RunResult result;
-    result.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    std::ifstream in(errFile);
-    std::ostringstream text;
-    text << in.rdbuf();
-    result.stderrText = text.str();
-    return result;
-}
-
-size_t lineCount(const std::string& text) {
-    size_t lines = 0;
-    for (char c : text) lines += c == '\n';
-    return lines;
-}
-
 const std::string kShaders = FFX_DOF_TEST_SHADER_DIR;
-
-fs::path freshOutDir(const char* name) {
-    const fs::path dir = fs::path(FFX_DOF_TEST_WORK_DIR) / name;
-    fs::remove_all(dir);
-    return dir;
-}
-
-bool isEmptyOrAbsent(const fs::path& dir) { return !fs::exists(dir) || fs::is_empty(dir); }
 
 }  // namespace
 

@@ -47,8 +47,9 @@ struct PushConstantMember {
     uint32_t size;
 };
 
-// One unique SPIR-V binary. localSize is the reflected workgroup size; it can differ between
-// blobs of one pass (the wave64 axis changes it), so it lives here and not on the pass.
+// One unique binary: SPIR-V, or for language "dxil" the DXIL container (its bytes as words). localSize is the reflected
+// workgroup size; it can differ between blobs of one pass (the wave64 axis changes it), so it lives here and not on the
+// pass.
 struct Blob {
     const uint32_t* words;
     size_t wordCount;
@@ -64,7 +65,7 @@ struct Axis {
 
 struct PassTable {
     const char* pass;      // "blur"
-    const char* language;  // "glsl" or "hlsl" (both compiled to SPIR-V)
+    const char* language;  // "glsl" or "hlsl" (both compiled to SPIR-V), or "dxil" (HLSL by dxc)
     const Axis* axes;
     uint32_t axisCount;
     const Blob* blobs;  // unique binaries
@@ -73,6 +74,7 @@ struct PassTable {
     uint32_t permutationCount;  // product of the axes' valueCount
     // Union over all permutations: a permutation may leave a resource unused (the optimizer
     // removes it), but no two permutations may give one name different slots or kinds.
+    // DXIL: set = register space, binding = register number; the class (t, u, s, b) is the kind's.
     const Binding* bindings;
     uint32_t bindingCount;
     const PushConstantMember* pushConstantMembers;

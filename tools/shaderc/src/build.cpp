@@ -59,10 +59,29 @@ void mergeReflections(PassBuild& build) {
             }
         }
     }
-    std::map<std::tuple<bool, uint32_t, uint32_t>, const ReflectedBinding*> bySlot;
+    // Vulkan: one binding number space per set (push constants apart). D3D12: one per register
+    // class and space (t, u, s, b; root constants are b registers too).
+    const bool dxil = !build.options.dxc.empty();
+    auto slotClass = [dxil](BindingKind kind) -> char {
+        if (!dxil) return kind == BindingKind::PushConstants ? '1' : '0';  // push constants last
+        switch (kind) {
+            case BindingKind::SampledImage:
+                return 't';
+            case BindingKind::StorageImage:
+            case BindingKind::StorageBuffer:
+                return 'u';
+            case BindingKind::Sampler:
+                return 's';
+            case BindingKind::UniformBuffer:
+            case BindingKind::PushConstants:
+                return 'b';
+        }
+        return '?';
+    };
+    std::map<std::tuple<char, uint32_t, uint32_t>, const ReflectedBinding*> bySlot;
     for (const auto& [name, entry] : byName) {
         const ReflectedBinding& binding = entry.first;
-        const auto slot = std::make_tuple(binding.kind == BindingKind::PushConstants, binding.set, binding.binding);
+        const auto slot = std::make_tuple(slotClass(binding.kind), binding.set, binding.binding);
         auto [it, inserted] = bySlot.emplace(slot, &binding);
         if (!inserted) {
             throw Error("pass '" + build.options.pass + "': permutations disagree on bindings: " +
@@ -107,10 +126,12 @@ PassBuild buildPass(const CompileOptions& options, const std::vector<Axis>& axes
     std::map<std::vector<uint32_t>, uint16_t> unique;
     for (uint32_t p = 0; p < count; ++p) {
         build.dependencies.insert(compiled[p]->openedFiles.begin(), compiled[p]->openedFiles.end());
-        auto [it, inserted] = unique.emplace(compiled[p]->spirv, static_cast<uint16_t>(build.blobs.size()));
+        // DXIL tables store (and deduplicate) the DXIL; the SPIR-V is there for the reflection.
+        std::vector<uint32_t>& blob = options.dxc.empty() ? compiled[p]->spirv : compiled[p]->dxil;
+        auto [it, inserted] = unique.emplace(blob, static_cast<uint16_t>(build.blobs.size()));
         if (inserted) {
             build.blobReflections.push_back(reflect(compiled[p]->spirv));
-            build.blobs.push_back(std::move(compiled[p]->spirv));
+            build.blobs.push_back(std::move(blob));
         }
         build.permutationToBlob.push_back(it->second);
     }

@@ -98,7 +98,7 @@ private:
 };
 
 std::string describePermutation(const CompileOptions& options, const std::vector<Define>& permutation) {
-    std::string text = "pass '" + options.pass + "' (" + languageName(options.language) + "), permutation";
+    std::string text = "pass '" + options.pass + "' (" + tableLanguage(options) + "), permutation";
     if (permutation.empty()) text += " (no axes)";
     for (const Define& define : permutation) text += " " + define.name + "=" + define.value;
     return text;
@@ -171,9 +171,18 @@ CompiledShader compilePermutation(const CompileOptions& options, const std::vect
     const fs::path sourcePath = fs::weakly_canonical(options.source);
     result.openedFiles.insert(sourcePath);
 
+    const bool dxil = !options.dxc.empty();
+    if (dxil && options.language != Language::Hlsl) {
+        throw Error("pass '" + options.pass + "': DXIL (--dxc) needs an HLSL source");
+    }
     std::string preamble;
     for (const Define& define : options.defines) preamble += "#define " + define.name + " " + define.value + "\n";
     for (const Define& define : permutation) preamble += "#define " + define.name + " " + define.value + "\n";
+    if (dxil) {
+        for (const Define& define : dxilReflectionDefines()) {
+            preamble += "#define " + define.name + " " + define.value + "\n";
+        }
+    }
 
     const bool hlsl = options.language == Language::Hlsl;
     glslang::TShader shader(EShLangCompute);
@@ -199,10 +208,12 @@ CompiledShader compilePermutation(const CompileOptions& options, const std::vect
         // images are typeless (Unknown format) as with dxc's default; the device needs
         // shaderStorageImageWriteWithoutFormat, which the Vulkan backend requires anyway.
         shader.setNoStorageFormat(true);
-        shader.setShiftBinding(glslang::EResTexture, options.hlslShifts.texture);
-        shader.setShiftBinding(glslang::EResUav, options.hlslShifts.uav);
-        shader.setShiftBinding(glslang::EResSampler, options.hlslShifts.sampler);
-        shader.setShiftBinding(glslang::EResUbo, options.hlslShifts.constantBuffer);
+        // DXIL binds by register: its reflection must see the registers unshifted.
+        const HlslBindingShifts shifts = dxil ? HlslBindingShifts{} : options.hlslShifts;
+        shader.setShiftBinding(glslang::EResTexture, shifts.texture);
+        shader.setShiftBinding(glslang::EResUav, shifts.uav);
+        shader.setShiftBinding(glslang::EResSampler, shifts.sampler);
+        shader.setShiftBinding(glslang::EResUbo, shifts.constantBuffer);
     }
 
     Includer includer(options, &result.openedFiles);
@@ -239,6 +250,7 @@ CompiledShader compilePermutation(const CompileOptions& options, const std::vect
         throw Error(where + ": spirv-val rejected the binary\n" + validatorMessages);
     }
     result.spirv = std::move(spirv);
+    if (dxil) result.dxil = compileDxil(options, permutation, where);
     return result;
 }
 

@@ -21,6 +21,7 @@ struct Arguments {
     std::string basename;
     std::string cppNamespace = "ffxdof::shaders";
     std::string depfile;
+    std::string dxc;
     unsigned jobs = 0;
 };
 
@@ -64,6 +65,12 @@ int run(const Arguments& args) {
     }
     for (const std::string& define : args.defines) options.defines.push_back(parseDefine(define));
     options.hlslShifts = parseShifts(args.hlslShifts);
+    if (!args.dxc.empty()) {
+        if (options.language != Language::Hlsl) throw Error("--dxc needs an HLSL source (--language hlsl)");
+        // Shifts are the Vulkan mapping of registers; DXIL binds the registers themselves.
+        if (!args.hlslShifts.empty()) throw Error("--hlsl-shift applies to SPIR-V only, not with --dxc");
+        options.dxc = args.dxc;
+    }
     std::vector<Axis> axes;
     for (const std::string& text : args.axes) {
         Axis axis = parseAxis(text);
@@ -83,7 +90,7 @@ int run(const Arguments& args) {
     fs::create_directories(outDir, ec);
     if (!fs::is_directory(outDir, ec)) throw Error("cannot create output folder " + outDir.string());
     const std::string basename =
-        args.basename.empty() ? "ffx_dof_" + args.pass + "_" + languageName(options.language) : args.basename;
+        args.basename.empty() ? "ffx_dof_" + args.pass + "_" + tableLanguage(options) : args.basename;
     EmitOptions emit;
     emit.cppNamespace = args.cppNamespace;
     const fs::path header = outDir / (basename + ".h");
@@ -95,14 +102,16 @@ int run(const Arguments& args) {
     if (!args.depfile.empty()) files.emplace_back(args.depfile, emitDepfile(header, build.dependencies));
     writeFilesAtomically(files);
     std::printf("ffx-dof-shaderc: %s (%s): %zu permutations, %zu unique blobs\n", args.pass.c_str(),
-                languageName(options.language), build.permutationToBlob.size(), build.blobs.size());
+                tableLanguage(options), build.permutationToBlob.size(), build.blobs.size());
     return 0;
 }
 
 }  // namespace
 
 int main(int argc, char** argv) {
-    CLI::App app{"ffx-dof-shaderc: compiles every permutation of one ffx-dof pass to SPIR-V and emits C++ tables"};
+    CLI::App app{
+        "ffx-dof-shaderc: compiles every permutation of one ffx-dof pass to SPIR-V (or DXIL with dxc) and emits C++ "
+        "tables"};
     Arguments args;
     app.add_option("source", args.source, "Pass source (.glsl or .hlsl)")->required();
     app.add_option("--pass", args.pass, "Pass name, used in messages and table names")->required();
@@ -115,6 +124,8 @@ int main(int argc, char** argv) {
     app.add_option("--basename", args.basename, "Output file name stem (default ffx_dof_<pass>_<language>)");
     app.add_option("--namespace", args.cppNamespace, "C++ namespace of the generated table")->capture_default_str();
     app.add_option("--depfile", args.depfile, "Write a Makefile-syntax depfile of every file read");
+    app.add_option("--dxc", args.dxc,
+                   "Emit DXIL (table language \"dxil\") by running this dxc per permutation; HLSL only");
     app.add_option("-j,--jobs", args.jobs, "Worker threads (default: all cores)");
     try {
         app.parse(argc, argv);

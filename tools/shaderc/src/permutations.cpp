@@ -27,6 +27,10 @@ uint32_t parseAxisValue(const std::string& axisText, const std::string& value) {
 
 const char* languageName(Language language) { return language == Language::Glsl ? "glsl" : "hlsl"; }
 
+const char* tableLanguage(const CompileOptions& options) {
+    return options.dxc.empty() ? languageName(options.language) : "dxil";
+}
+
 Language parseLanguage(const std::string& text) {
     if (text == "glsl") return Language::Glsl;
     if (text == "hlsl") return Language::Hlsl;

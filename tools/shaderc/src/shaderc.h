@@ -1,7 +1,9 @@
 // ffx-dof-shaderc as a library: parse the permutation axes, compile every permutation of one pass
 // (glslang, in process, in parallel), optimize (spirv-opt performance recipe) and validate
 // (spirv-val), deduplicate, reflect the bindings (SPIRV-Cross) and emit C++ tables, a JSON
-// manifest and a depfile. main.cpp is only the command line around this.
+// manifest and a depfile. With a dxc path, the tables hold DXIL made by dxc (one subprocess per
+// permutation) instead, with the bindings reflected from the SPIR-V of the same permutation.
+// main.cpp is only the command line around this.
 #pragma once
 
 #include "ffx_dof_shader_table.h"
@@ -74,10 +76,17 @@ struct CompileOptions {
     std::vector<Define> defines;  // plain defines, in every permutation
     HlslBindingShifts hlslShifts;
     bool optimize = true;
+    // Not empty: HLSL only; the blobs are DXIL from this dxc, the table's language is "dxil" and
+    // the SPIR-V is compiled only to reflect the bindings (registers and spaces, not shifted).
+    fs::path dxc;
 };
+
+// The language the emitted table names: "glsl", "hlsl" (both SPIR-V) or "dxil".
+const char* tableLanguage(const CompileOptions& options);
 
 struct CompiledShader {
     std::vector<uint32_t> spirv;
+    std::vector<uint32_t> dxil;      // only with CompileOptions::dxc
     std::set<fs::path> openedFiles;  // the source and every file the includer opened
 };
 
@@ -85,6 +94,16 @@ struct CompiledShader {
 // Needs a live GlslangProcess. Throws Error naming the pass, the defines and the compiler
 // message with source context.
 CompiledShader compilePermutation(const CompileOptions& options, const std::vector<Define>& permutation);
+
+// DXIL (dxil.cpp). The defines that make glslang read the source as dxc does for DXIL (for the
+// reflection of the DXIL tables), the dxc command line of one permutation (program first;
+// SM 6.6 when FFX_DOF_OPTION_WAVE64=1, else 6.2; -enable-16bit-types when FFX_HALF=1), and running
+// it: the container as words, or an Error naming `where` and dxc's messages on one line.
+std::vector<Define> dxilReflectionDefines();
+std::vector<std::string> dxcArguments(const CompileOptions& options, const std::vector<Define>& permutation,
+                                      const fs::path& output);
+std::vector<uint32_t> compileDxil(const CompileOptions& options, const std::vector<Define>& permutation,
+                                  const std::string& where);
 
 struct ReflectedBinding {
     std::string name;
@@ -129,7 +148,8 @@ struct PassBuild {
 // Throws Error for the first failing permutation (lowest index) or disagreeing bindings.
 PassBuild buildPass(const CompileOptions& options, const std::vector<Axis>& axes, unsigned threads);
 
-// Merges the per-blob reflections; throws Error when two permutations disagree on a binding.
+// Merges the per-blob reflections; throws Error when two permutations disagree on a binding. For
+// DXIL, slots are per register class (t0 and u0 are different slots).
 void mergeReflections(PassBuild& build);
 
 struct EmitOptions {
