@@ -104,7 +104,7 @@ TEST_CASE("dxil: the command line writes a dxil table", "[dxil][cli]") {
     for (const auto& entry : fs::directory_iterator(out)) CHECK(entry.path().extension() != ".tmp");
 }
 
-TEST_CASE("dxil: a dxc failure is one line naming pass, permutation and dxc's message; no output", "[dxil][cli]") {
+TEST_CASE("dxil: a dxc failure is one line naming pass, permutation and dxc's message, and no output", "[dxil][cli]") {
     const fs::path out = freshOutDir("dxil_fail");
     fs::create_directories(out);
     std::ofstream(out / "ffx_dof_test_dxil.h") << "previous";
