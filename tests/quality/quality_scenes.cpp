@@ -129,4 +129,16 @@ GateResult runGate(vkrun::Device& device, const SceneRender& render, bool inPlac
     return result;
 }
 
+PointBokeh measurePointBokeh(vkrun::Device& device) {
+    PointBokeh bokeh{renderScene("point"), {}, {}, {}};
+    bokeh.result = runGate(device, bokeh.render);
+    const double expectedRadius =
+        std::abs(bokeh.render.setup.camera.cocRadiusPixels(bokeh.render.setup.scene.primitives[0].center.z));
+    const double inputEnergy = metrics::measureBokeh(bokeh.render.pinhole.color).energy;
+    const metrics::BokehMeasurement truth = metrics::measureBokeh(bokeh.render.truth);
+    bokeh.truth = metrics::checkBokeh(truth, expectedRadius, truth.energy);
+    bokeh.ours = metrics::checkBokeh(metrics::measureBokeh(bokeh.result.ours), expectedRadius, inputEnergy);
+    return bokeh;
+}
+
 }  // namespace ffxdof::quality

@@ -62,4 +62,14 @@ struct GateResult {
 // inPlace: the output is the color image itself (FFX_DOF_OPTION_COMBINE_IN_PLACE).
 GateResult runGate(vkrun::Device& device, const SceneRender& render, bool inPlace = false);
 
+// The single bright point far behind focus (scene "point") through ffx-dof, measured against the
+// thin-lens radius; the energy expected is the input's (ffx-dof spreads what the pinhole image has).
+struct PointBokeh {
+    SceneRender render;
+    GateResult result;
+    metrics::BokehCheck truth;
+    metrics::BokehCheck ours;
+};
+PointBokeh measurePointBokeh(vkrun::Device& device);
+
 }  // namespace ffxdof::quality
