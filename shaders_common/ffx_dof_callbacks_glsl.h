@@ -11,29 +11,17 @@
 #define FFX_DOF_BINDING_UAV_IMAGE(index, format) layout(set = 0, binding = FFX_DOF_UAV_IMAGE_BASE + (index), format)
 #define FFX_DOF_BINDING_UAV_BUFFER(index) layout(set = 0, binding = FFX_DOF_UAV_BUFFER_BASE + (index), std430)
 
-layout(push_constant) uniform FfxDofPushConstants
-{
-    FfxDofConstants ffxDofPushedConstants;
-};
-FfxDofConstants ffxDofGetConstants()
-{
-    return ffxDofPushedConstants;
-}
+layout(push_constant) uniform FfxDofPushConstants { FfxDofConstants ffxDofPushedConstants; };
+FfxDofConstants ffxDofGetConstants() { return ffxDofPushedConstants; }
 
 #if FFX_DOF_USES_INPUT_COLOR
 FFX_DOF_BINDING_SRV(FFX_DOF_SRV_INPUT_COLOR) uniform texture2D ffxDofInputColor;
-FfxFloat32x4 ffxDofLoadInputColor(FfxUInt32x2 pixel)
-{
-    return texelFetch(ffxDofInputColor, ivec2(pixel), 0);
-}
+FfxFloat32x4 ffxDofLoadInputColor(FfxUInt32x2 pixel) { return texelFetch(ffxDofInputColor, ivec2(pixel), 0); }
 #endif
 
 #if FFX_DOF_USES_INPUT_DEPTH
 FFX_DOF_BINDING_SRV(FFX_DOF_SRV_INPUT_DEPTH) uniform texture2D ffxDofInputDepth;
-FfxFloat32 ffxDofLoadInputDepth(FfxUInt32x2 pixel)
-{
-    return texelFetch(ffxDofInputDepth, ivec2(pixel), 0).x;
-}
+FfxFloat32 ffxDofLoadInputDepth(FfxUInt32x2 pixel) { return texelFetch(ffxDofInputDepth, ivec2(pixel), 0).x; }
 #endif
 
 #if FFX_DOF_USES_COLOR_MIPS
@@ -47,26 +35,17 @@ FfxDofFloat3 ffxDofLoadColorMip(FfxInt32x2 texel, FfxUInt32 mip)
 
 #if FFX_DOF_USES_COC_MIPS
 FFX_DOF_BINDING_SRV(FFX_DOF_SRV_COC_MIPS) uniform texture2D ffxDofCocMips;
-FfxFloat32 ffxDofLoadCocMip(FfxInt32x2 texel, FfxUInt32 mip)
-{
-    return texelFetch(ffxDofCocMips, texel, int(mip)).x;
-}
+FfxFloat32 ffxDofLoadCocMip(FfxInt32x2 texel, FfxUInt32 mip) { return texelFetch(ffxDofCocMips, texel, int(mip)).x; }
 #endif
 
 #if FFX_DOF_USES_TILES
 FFX_DOF_BINDING_SRV(FFX_DOF_SRV_TILES) uniform texture2D ffxDofTiles;
-FfxFloat32x2 ffxDofLoadTile(FfxUInt32x2 tile)
-{
-    return texelFetch(ffxDofTiles, ivec2(tile), 0).xy;
-}
+FfxFloat32x2 ffxDofLoadTile(FfxUInt32x2 tile) { return texelFetch(ffxDofTiles, ivec2(tile), 0).xy; }
 #endif
 
 #if FFX_DOF_USES_DILATED_TILES
 FFX_DOF_BINDING_SRV(FFX_DOF_SRV_DILATED_TILES) uniform texture2D ffxDofDilatedTiles;
-FfxFloat32x2 ffxDofLoadDilatedTile(FfxUInt32x2 tile)
-{
-    return texelFetch(ffxDofDilatedTiles, ivec2(tile), 0).xy;
-}
+FfxFloat32x2 ffxDofLoadDilatedTile(FfxUInt32x2 tile) { return texelFetch(ffxDofDilatedTiles, ivec2(tile), 0).xy; }
 #endif
 
 #if FFX_DOF_USES_LAYERS
@@ -83,10 +62,7 @@ FfxDofFloat3 ffxDofLoadFarColor(FfxInt32x2 texel)
     vec4 color = texelFetch(ffxDofFarColor, texel, 0);
     return FfxDofFloat3(color.x, color.y, color.z);
 }
-FfxFloat32x2 ffxDofLoadLayerAlpha(FfxInt32x2 texel)
-{
-    return texelFetch(ffxDofLayerAlpha, texel, 0).xy;
-}
+FfxFloat32x2 ffxDofLoadLayerAlpha(FfxInt32x2 texel) { return texelFetch(ffxDofLayerAlpha, texel, 0).xy; }
 #endif
 
 #if FFX_DOF_USES_RW_MIPS
@@ -189,23 +165,14 @@ void ffxDofStoreOutput(FfxUInt32x2 pixel, FfxFloat32x4 color)
 #endif
 
 #if FFX_DOF_USES_GLOBALS
-FFX_DOF_BINDING_UAV_BUFFER(FFX_DOF_UAV_BUFFER_GLOBALS) buffer FfxDofGlobals
-{
-    uint ffxDofGlobalMaxRadiusBits;
-};
-FfxFloat32 ffxDofLoadGlobalMaxRadius()
-{
-    return uintBitsToFloat(ffxDofGlobalMaxRadiusBits);
-}
+FFX_DOF_BINDING_UAV_BUFFER(FFX_DOF_UAV_BUFFER_GLOBALS) buffer FfxDofGlobals { uint ffxDofGlobalMaxRadiusBits; };
+FfxFloat32 ffxDofLoadGlobalMaxRadius() { return uintBitsToFloat(ffxDofGlobalMaxRadiusBits); }
 void ffxDofAtomicMaxGlobalRadius(FfxFloat32 radius)
 {
     // Non-negative floats order like their bit patterns.
     atomicMax(ffxDofGlobalMaxRadiusBits, floatBitsToUint(max(radius, 0.0f)));
 }
-void ffxDofResetGlobals()
-{
-    ffxDofGlobalMaxRadiusBits = 0u;
-}
+void ffxDofResetGlobals() { ffxDofGlobalMaxRadiusBits = 0u; }
 #endif
 
 #endif  // FFX_DOF_CALLBACKS_GLSL_H

@@ -24,14 +24,8 @@
 #define FFX_DOF_WAVE_SIZE_ATTRIBUTE
 #endif
 
-[[vk::push_constant]] cbuffer FfxDofConstantBuffer
-{
-    FfxDofConstants ffxDofPushedConstants;
-};
-FfxDofConstants ffxDofGetConstants()
-{
-    return ffxDofPushedConstants;
-}
+[[vk::push_constant]] cbuffer FfxDofConstantBuffer { FfxDofConstants ffxDofPushedConstants; };
+FfxDofConstants ffxDofGetConstants() { return ffxDofPushedConstants; }
 
 // In place, D3D12 cannot have the color image as SRV and UAV at once: the composite pass reads the
 // input through the output UAV (ffxDofLoadInputColor below, next to the output). Vulkan (SPIR-V from
@@ -44,23 +38,20 @@ FfxDofConstants ffxDofGetConstants()
 #define FFX_DOF_INPUT_COLOR_THROUGH_OUTPUT 0
 #endif
 #if FFX_DOF_USES_INPUT_COLOR && !FFX_DOF_INPUT_COLOR_THROUGH_OUTPUT
-FFX_DOF_BINDING_SRV(FFX_DOF_SRV_INPUT_COLOR) Texture2D<float4> ffxDofInputColor : FFX_DOF_HLSL_REGISTER(t, FFX_DOF_SRV_INPUT_COLOR);
-FfxFloat32x4 ffxDofLoadInputColor(FfxUInt32x2 pixel)
-{
-    return ffxDofInputColor.Load(int3(pixel, 0));
-}
+FFX_DOF_BINDING_SRV(FFX_DOF_SRV_INPUT_COLOR)
+Texture2D<float4> ffxDofInputColor : FFX_DOF_HLSL_REGISTER(t, FFX_DOF_SRV_INPUT_COLOR);
+FfxFloat32x4 ffxDofLoadInputColor(FfxUInt32x2 pixel) { return ffxDofInputColor.Load(int3(pixel, 0)); }
 #endif
 
 #if FFX_DOF_USES_INPUT_DEPTH
-FFX_DOF_BINDING_SRV(FFX_DOF_SRV_INPUT_DEPTH) Texture2D<float> ffxDofInputDepth : FFX_DOF_HLSL_REGISTER(t, FFX_DOF_SRV_INPUT_DEPTH);
-FfxFloat32 ffxDofLoadInputDepth(FfxUInt32x2 pixel)
-{
-    return ffxDofInputDepth.Load(int3(pixel, 0));
-}
+FFX_DOF_BINDING_SRV(FFX_DOF_SRV_INPUT_DEPTH)
+Texture2D<float> ffxDofInputDepth : FFX_DOF_HLSL_REGISTER(t, FFX_DOF_SRV_INPUT_DEPTH);
+FfxFloat32 ffxDofLoadInputDepth(FfxUInt32x2 pixel) { return ffxDofInputDepth.Load(int3(pixel, 0)); }
 #endif
 
 #if FFX_DOF_USES_COLOR_MIPS
-FFX_DOF_BINDING_SRV(FFX_DOF_SRV_COLOR_MIPS) Texture2D<float3> ffxDofColorMips : FFX_DOF_HLSL_REGISTER(t, FFX_DOF_SRV_COLOR_MIPS);
+FFX_DOF_BINDING_SRV(FFX_DOF_SRV_COLOR_MIPS)
+Texture2D<float3> ffxDofColorMips : FFX_DOF_HLSL_REGISTER(t, FFX_DOF_SRV_COLOR_MIPS);
 FfxDofFloat3 ffxDofLoadColorMip(FfxInt32x2 texel, FfxUInt32 mip)
 {
     return FfxDofFloat3(ffxDofColorMips.Load(int3(texel, int(mip))));
@@ -68,61 +59,56 @@ FfxDofFloat3 ffxDofLoadColorMip(FfxInt32x2 texel, FfxUInt32 mip)
 #endif
 
 #if FFX_DOF_USES_COC_MIPS
-FFX_DOF_BINDING_SRV(FFX_DOF_SRV_COC_MIPS) Texture2D<float> ffxDofCocMips : FFX_DOF_HLSL_REGISTER(t, FFX_DOF_SRV_COC_MIPS);
-FfxFloat32 ffxDofLoadCocMip(FfxInt32x2 texel, FfxUInt32 mip)
-{
-    return ffxDofCocMips.Load(int3(texel, int(mip)));
-}
+FFX_DOF_BINDING_SRV(FFX_DOF_SRV_COC_MIPS)
+Texture2D<float> ffxDofCocMips : FFX_DOF_HLSL_REGISTER(t, FFX_DOF_SRV_COC_MIPS);
+FfxFloat32 ffxDofLoadCocMip(FfxInt32x2 texel, FfxUInt32 mip) { return ffxDofCocMips.Load(int3(texel, int(mip))); }
 #endif
 
 #if FFX_DOF_USES_TILES
 FFX_DOF_BINDING_SRV(FFX_DOF_SRV_TILES) Texture2D<float2> ffxDofTiles : FFX_DOF_HLSL_REGISTER(t, FFX_DOF_SRV_TILES);
-FfxFloat32x2 ffxDofLoadTile(FfxUInt32x2 tile)
-{
-    return ffxDofTiles.Load(int3(tile, 0));
-}
+FfxFloat32x2 ffxDofLoadTile(FfxUInt32x2 tile) { return ffxDofTiles.Load(int3(tile, 0)); }
 #endif
 
 #if FFX_DOF_USES_DILATED_TILES
-FFX_DOF_BINDING_SRV(FFX_DOF_SRV_DILATED_TILES) Texture2D<float2> ffxDofDilatedTiles : FFX_DOF_HLSL_REGISTER(t, FFX_DOF_SRV_DILATED_TILES);
-FfxFloat32x2 ffxDofLoadDilatedTile(FfxUInt32x2 tile)
-{
-    return ffxDofDilatedTiles.Load(int3(tile, 0));
-}
+FFX_DOF_BINDING_SRV(FFX_DOF_SRV_DILATED_TILES)
+Texture2D<float2> ffxDofDilatedTiles : FFX_DOF_HLSL_REGISTER(t, FFX_DOF_SRV_DILATED_TILES);
+FfxFloat32x2 ffxDofLoadDilatedTile(FfxUInt32x2 tile) { return ffxDofDilatedTiles.Load(int3(tile, 0)); }
 #endif
 
 #if FFX_DOF_USES_LAYERS
-FFX_DOF_BINDING_SRV(FFX_DOF_SRV_NEAR_COLOR) Texture2D<float3> ffxDofNearColor : FFX_DOF_HLSL_REGISTER(t, FFX_DOF_SRV_NEAR_COLOR);
-FFX_DOF_BINDING_SRV(FFX_DOF_SRV_FAR_COLOR) Texture2D<float3> ffxDofFarColor : FFX_DOF_HLSL_REGISTER(t, FFX_DOF_SRV_FAR_COLOR);
-FFX_DOF_BINDING_SRV(FFX_DOF_SRV_LAYER_ALPHA) Texture2D<float2> ffxDofLayerAlpha : FFX_DOF_HLSL_REGISTER(t, FFX_DOF_SRV_LAYER_ALPHA);
-FfxDofFloat3 ffxDofLoadNearColor(FfxInt32x2 texel)
-{
-    return FfxDofFloat3(ffxDofNearColor.Load(int3(texel, 0)));
-}
-FfxDofFloat3 ffxDofLoadFarColor(FfxInt32x2 texel)
-{
-    return FfxDofFloat3(ffxDofFarColor.Load(int3(texel, 0)));
-}
-FfxFloat32x2 ffxDofLoadLayerAlpha(FfxInt32x2 texel)
-{
-    return ffxDofLayerAlpha.Load(int3(texel, 0));
-}
+FFX_DOF_BINDING_SRV(FFX_DOF_SRV_NEAR_COLOR)
+Texture2D<float3> ffxDofNearColor : FFX_DOF_HLSL_REGISTER(t, FFX_DOF_SRV_NEAR_COLOR);
+FFX_DOF_BINDING_SRV(FFX_DOF_SRV_FAR_COLOR)
+Texture2D<float3> ffxDofFarColor : FFX_DOF_HLSL_REGISTER(t, FFX_DOF_SRV_FAR_COLOR);
+FFX_DOF_BINDING_SRV(FFX_DOF_SRV_LAYER_ALPHA)
+Texture2D<float2> ffxDofLayerAlpha : FFX_DOF_HLSL_REGISTER(t, FFX_DOF_SRV_LAYER_ALPHA);
+FfxDofFloat3 ffxDofLoadNearColor(FfxInt32x2 texel) { return FfxDofFloat3(ffxDofNearColor.Load(int3(texel, 0))); }
+FfxDofFloat3 ffxDofLoadFarColor(FfxInt32x2 texel) { return FfxDofFloat3(ffxDofFarColor.Load(int3(texel, 0))); }
+FfxFloat32x2 ffxDofLoadLayerAlpha(FfxInt32x2 texel) { return ffxDofLayerAlpha.Load(int3(texel, 0)); }
 #endif
 
 #if FFX_DOF_USES_RW_MIPS
-FFX_DOF_BINDING_UAV_IMAGE(FFX_DOF_UAV_COLOR_MIP0) RWTexture2D<float3> ffxDofColorMip0 : FFX_DOF_HLSL_REGISTER(u, FFX_DOF_UAV_COLOR_MIP0);
-FFX_DOF_BINDING_UAV_IMAGE(FFX_DOF_UAV_COC_MIP0) RWTexture2D<float> ffxDofCocMip0 : FFX_DOF_HLSL_REGISTER(u, FFX_DOF_UAV_COC_MIP0);
+FFX_DOF_BINDING_UAV_IMAGE(FFX_DOF_UAV_COLOR_MIP0)
+RWTexture2D<float3> ffxDofColorMip0 : FFX_DOF_HLSL_REGISTER(u, FFX_DOF_UAV_COLOR_MIP0);
+FFX_DOF_BINDING_UAV_IMAGE(FFX_DOF_UAV_COC_MIP0)
+RWTexture2D<float> ffxDofCocMip0 : FFX_DOF_HLSL_REGISTER(u, FFX_DOF_UAV_COC_MIP0);
 #if FFX_DOF_OPTION_MAX_MIP > 1
-FFX_DOF_BINDING_UAV_IMAGE(FFX_DOF_UAV_COLOR_MIP1) RWTexture2D<float3> ffxDofColorMip1 : FFX_DOF_HLSL_REGISTER(u, FFX_DOF_UAV_COLOR_MIP1);
-FFX_DOF_BINDING_UAV_IMAGE(FFX_DOF_UAV_COC_MIP1) RWTexture2D<float> ffxDofCocMip1 : FFX_DOF_HLSL_REGISTER(u, FFX_DOF_UAV_COC_MIP1);
+FFX_DOF_BINDING_UAV_IMAGE(FFX_DOF_UAV_COLOR_MIP1)
+RWTexture2D<float3> ffxDofColorMip1 : FFX_DOF_HLSL_REGISTER(u, FFX_DOF_UAV_COLOR_MIP1);
+FFX_DOF_BINDING_UAV_IMAGE(FFX_DOF_UAV_COC_MIP1)
+RWTexture2D<float> ffxDofCocMip1 : FFX_DOF_HLSL_REGISTER(u, FFX_DOF_UAV_COC_MIP1);
 #endif
 #if FFX_DOF_OPTION_MAX_MIP > 2
-FFX_DOF_BINDING_UAV_IMAGE(FFX_DOF_UAV_COLOR_MIP2) RWTexture2D<float3> ffxDofColorMip2 : FFX_DOF_HLSL_REGISTER(u, FFX_DOF_UAV_COLOR_MIP2);
-FFX_DOF_BINDING_UAV_IMAGE(FFX_DOF_UAV_COC_MIP2) RWTexture2D<float> ffxDofCocMip2 : FFX_DOF_HLSL_REGISTER(u, FFX_DOF_UAV_COC_MIP2);
+FFX_DOF_BINDING_UAV_IMAGE(FFX_DOF_UAV_COLOR_MIP2)
+RWTexture2D<float3> ffxDofColorMip2 : FFX_DOF_HLSL_REGISTER(u, FFX_DOF_UAV_COLOR_MIP2);
+FFX_DOF_BINDING_UAV_IMAGE(FFX_DOF_UAV_COC_MIP2)
+RWTexture2D<float> ffxDofCocMip2 : FFX_DOF_HLSL_REGISTER(u, FFX_DOF_UAV_COC_MIP2);
 #endif
 #if FFX_DOF_OPTION_MAX_MIP > 3
-FFX_DOF_BINDING_UAV_IMAGE(FFX_DOF_UAV_COLOR_MIP3) RWTexture2D<float3> ffxDofColorMip3 : FFX_DOF_HLSL_REGISTER(u, FFX_DOF_UAV_COLOR_MIP3);
-FFX_DOF_BINDING_UAV_IMAGE(FFX_DOF_UAV_COC_MIP3) RWTexture2D<float> ffxDofCocMip3 : FFX_DOF_HLSL_REGISTER(u, FFX_DOF_UAV_COC_MIP3);
+FFX_DOF_BINDING_UAV_IMAGE(FFX_DOF_UAV_COLOR_MIP3)
+RWTexture2D<float3> ffxDofColorMip3 : FFX_DOF_HLSL_REGISTER(u, FFX_DOF_UAV_COLOR_MIP3);
+FFX_DOF_BINDING_UAV_IMAGE(FFX_DOF_UAV_COC_MIP3)
+RWTexture2D<float> ffxDofCocMip3 : FFX_DOF_HLSL_REGISTER(u, FFX_DOF_UAV_COC_MIP3);
 #endif
 void ffxDofStoreColorMip(FfxUInt32 mip, FfxUInt32x2 texel, FfxDofFloat3 color)
 {
@@ -162,33 +148,26 @@ void ffxDofStoreCocMip(FfxUInt32 mip, FfxUInt32x2 texel, FfxFloat32 coc)
 #endif
 
 #if FFX_DOF_USES_RW_TILES
-FFX_DOF_BINDING_UAV_IMAGE(FFX_DOF_UAV_TILES) RWTexture2D<float2> ffxDofRwTiles : FFX_DOF_HLSL_REGISTER(u, FFX_DOF_UAV_TILES);
-void ffxDofStoreTile(FfxUInt32x2 tile, FfxFloat32x2 cocMinMax)
-{
-    ffxDofRwTiles[tile] = cocMinMax;
-}
+FFX_DOF_BINDING_UAV_IMAGE(FFX_DOF_UAV_TILES)
+RWTexture2D<float2> ffxDofRwTiles : FFX_DOF_HLSL_REGISTER(u, FFX_DOF_UAV_TILES);
+void ffxDofStoreTile(FfxUInt32x2 tile, FfxFloat32x2 cocMinMax) { ffxDofRwTiles[tile] = cocMinMax; }
 #endif
 
 #if FFX_DOF_USES_RW_DILATED_TILES
-FFX_DOF_BINDING_UAV_IMAGE(FFX_DOF_UAV_DILATED_TILES) RWTexture2D<float2> ffxDofRwDilatedTiles : FFX_DOF_HLSL_REGISTER(u, FFX_DOF_UAV_DILATED_TILES);
-void ffxDofStoreDilatedTile(FfxUInt32x2 tile, FfxFloat32x2 farNear)
-{
-    ffxDofRwDilatedTiles[tile] = farNear;
-}
+FFX_DOF_BINDING_UAV_IMAGE(FFX_DOF_UAV_DILATED_TILES)
+RWTexture2D<float2> ffxDofRwDilatedTiles : FFX_DOF_HLSL_REGISTER(u, FFX_DOF_UAV_DILATED_TILES);
+void ffxDofStoreDilatedTile(FfxUInt32x2 tile, FfxFloat32x2 farNear) { ffxDofRwDilatedTiles[tile] = farNear; }
 #endif
 
 #if FFX_DOF_USES_RW_LAYERS
-FFX_DOF_BINDING_UAV_IMAGE(FFX_DOF_UAV_NEAR_COLOR) RWTexture2D<float3> ffxDofRwNearColor : FFX_DOF_HLSL_REGISTER(u, FFX_DOF_UAV_NEAR_COLOR);
-FFX_DOF_BINDING_UAV_IMAGE(FFX_DOF_UAV_FAR_COLOR) RWTexture2D<float3> ffxDofRwFarColor : FFX_DOF_HLSL_REGISTER(u, FFX_DOF_UAV_FAR_COLOR);
-FFX_DOF_BINDING_UAV_IMAGE(FFX_DOF_UAV_LAYER_ALPHA) RWTexture2D<float2> ffxDofRwLayerAlpha : FFX_DOF_HLSL_REGISTER(u, FFX_DOF_UAV_LAYER_ALPHA);
-void ffxDofStoreNearColor(FfxUInt32x2 texel, FfxDofFloat3 color)
-{
-    ffxDofRwNearColor[texel] = float3(color);
-}
-void ffxDofStoreFarColor(FfxUInt32x2 texel, FfxDofFloat3 color)
-{
-    ffxDofRwFarColor[texel] = float3(color);
-}
+FFX_DOF_BINDING_UAV_IMAGE(FFX_DOF_UAV_NEAR_COLOR)
+RWTexture2D<float3> ffxDofRwNearColor : FFX_DOF_HLSL_REGISTER(u, FFX_DOF_UAV_NEAR_COLOR);
+FFX_DOF_BINDING_UAV_IMAGE(FFX_DOF_UAV_FAR_COLOR)
+RWTexture2D<float3> ffxDofRwFarColor : FFX_DOF_HLSL_REGISTER(u, FFX_DOF_UAV_FAR_COLOR);
+FFX_DOF_BINDING_UAV_IMAGE(FFX_DOF_UAV_LAYER_ALPHA)
+RWTexture2D<float2> ffxDofRwLayerAlpha : FFX_DOF_HLSL_REGISTER(u, FFX_DOF_UAV_LAYER_ALPHA);
+void ffxDofStoreNearColor(FfxUInt32x2 texel, FfxDofFloat3 color) { ffxDofRwNearColor[texel] = float3(color); }
+void ffxDofStoreFarColor(FfxUInt32x2 texel, FfxDofFloat3 color) { ffxDofRwFarColor[texel] = float3(color); }
 void ffxDofStoreLayerAlpha(FfxUInt32x2 texel, FfxFloat32x2 nearOpacityFarValidity)
 {
     ffxDofRwLayerAlpha[texel] = nearOpacityFarValidity;
@@ -196,7 +175,8 @@ void ffxDofStoreLayerAlpha(FfxUInt32x2 texel, FfxFloat32x2 nearOpacityFarValidit
 #endif
 
 #if FFX_DOF_USES_RW_OUTPUT
-FFX_DOF_BINDING_UAV_IMAGE(FFX_DOF_UAV_OUTPUT) RWTexture2D<float4> ffxDofOutput : FFX_DOF_HLSL_REGISTER(u, FFX_DOF_UAV_OUTPUT);
+FFX_DOF_BINDING_UAV_IMAGE(FFX_DOF_UAV_OUTPUT)
+RWTexture2D<float4> ffxDofOutput : FFX_DOF_HLSL_REGISTER(u, FFX_DOF_UAV_OUTPUT);
 void ffxDofStoreOutput(FfxUInt32x2 pixel, FfxFloat32x4 color)
 {
     if ((ffxDofPushedConstants.outputFlags & FFX_DOF_OUTPUT_FLAG_ENCODE_SRGB) != 0u)
@@ -217,20 +197,14 @@ FfxFloat32x4 ffxDofLoadInputColor(FfxUInt32x2 pixel)
 
 #if FFX_DOF_USES_GLOBALS
 FFX_DOF_BINDING_UAV_BUFFER(FFX_DOF_UAV_BUFFER_GLOBALS) RWStructuredBuffer<uint> ffxDofGlobals : register(u0, space1);
-FfxFloat32 ffxDofLoadGlobalMaxRadius()
-{
-    return asfloat(ffxDofGlobals[0]);
-}
+FfxFloat32 ffxDofLoadGlobalMaxRadius() { return asfloat(ffxDofGlobals[0]); }
 void ffxDofAtomicMaxGlobalRadius(FfxFloat32 radius)
 {
     // Non-negative floats order like their bit patterns.
     uint previous;
     InterlockedMax(ffxDofGlobals[0], asuint(max(radius, 0.0f)), previous);
 }
-void ffxDofResetGlobals()
-{
-    ffxDofGlobals[0] = 0u;
-}
+void ffxDofResetGlobals() { ffxDofGlobals[0] = 0u; }
 #endif
 
 #endif  // FFX_DOF_CALLBACKS_HLSL_H

@@ -75,7 +75,7 @@
 // Signed CoC radius of a depth value, always in 32-bit: rounding depth to 16 bits first would move
 // in-focus pixels next to the near plane out of focus.
 FFX_DOF_INLINE FfxFloat32 ffxDofCocFromDepth(FfxFloat32 depth, FfxFloat32 cocScale, FfxFloat32 cocBias,
-                                            FfxFloat32 cocLimit)
+                                             FfxFloat32 cocLimit)
 {
     return clamp(depth * cocScale + cocBias, -cocLimit, cocLimit);
 }
@@ -223,10 +223,7 @@ FFX_DOF_INLINE FfxInt32 ffxDofDilateTileRange(FfxFloat32 globalMaxRadius)
 // ---- Kernel shape: the only two functions that know it is circular -----------------------------
 
 // Samples in ring `ring` (ring 0 is the centre sample).
-FFX_DOF_INLINE FfxUInt32 ffxDofRingSampleCount(FfxUInt32 ring)
-{
-    return ring == 0u ? 1u : 6u * ring;
-}
+FFX_DOF_INLINE FfxUInt32 ffxDofRingSampleCount(FfxUInt32 ring) { return ring == 0u ? 1u : 6u * ring; }
 
 // Offset of sample `sampleIndex` of ring `ring`, in units of the ring spacing (so ring r lies at
 // distance r). Odd rings are turned by half a sample so that neighbouring rings interleave.
@@ -302,10 +299,7 @@ FFX_DOF_INLINE FfxFloat32 ffxDofReach(FfxFloat32 absRadius, FfxFloat32 distance)
 
 // A sample spreads its energy over its disc: weight proportional to the inverse disc area,
 // normalized so that a radius of half a pixel or less weighs 4.
-FFX_DOF_INLINE FfxFloat32 ffxDofAreaWeight(FfxFloat32 absRadius)
-{
-    return 1.0f / max(absRadius * absRadius, 0.25f);
-}
+FFX_DOF_INLINE FfxFloat32 ffxDofAreaWeight(FfxFloat32 absRadius) { return 1.0f / max(absRadius * absRadius, 0.25f); }
 
 // A set of far-field samples (one ring, or all rings outside it).
 struct FfxDofBucket
@@ -381,7 +375,7 @@ FFX_DOF_INLINE void ffxDofSort2(FFX_DOF_INOUT(FfxFloat32) a, FFX_DOF_INOUT(FfxFl
     a = lo;
 }
 FFX_DOF_INLINE FfxFloat32 ffxDofMedian9(FfxFloat32 p0, FfxFloat32 p1, FfxFloat32 p2, FfxFloat32 p3, FfxFloat32 p4,
-                                       FfxFloat32 p5, FfxFloat32 p6, FfxFloat32 p7, FfxFloat32 p8)
+                                        FfxFloat32 p5, FfxFloat32 p6, FfxFloat32 p7, FfxFloat32 p8)
 {
     ffxDofSort2(p1, p2);
     ffxDofSort2(p4, p5);
@@ -453,14 +447,12 @@ FFX_DOF_INLINE FfxFloat32 ffxDofUpsampleCocWeight(FfxFloat32 tapCoc, FfxFloat32 
 // (FFX_DOF_FIXED_BLUR_VARIANCE) is mixed into the input until it alone is right, then the far layer
 // (the disc plus FFX_DOF_FAR_LAYER_EXTRA_VARIANCE from half-res processing) into the fixed blur.
 // Any other choice blurs the small radii behind the focus too little or too much.
-FFX_DOF_INLINE FfxFloat32 ffxDofDiscVariance(FfxFloat32 absCoc)
-{
-    return 0.25f * absCoc * absCoc;
-}
+FFX_DOF_INLINE FfxFloat32 ffxDofDiscVariance(FfxFloat32 absCoc) { return 0.25f * absCoc * absCoc; }
 FFX_DOF_INLINE FfxFloat32 ffxDofFixedBlurBlend(FfxFloat32 absCoc, FfxFloat32 nearOpacity)
 {
-    return nearOpacity > FFX_DOF_NEAR_BLOCKS_FIXED_BLUR ? 0.0f
-                                                        : ffxDofSaturate(ffxDofDiscVariance(absCoc) / FFX_DOF_FIXED_BLUR_VARIANCE);
+    return nearOpacity > FFX_DOF_NEAR_BLOCKS_FIXED_BLUR
+               ? 0.0f
+               : ffxDofSaturate(ffxDofDiscVariance(absCoc) / FFX_DOF_FIXED_BLUR_VARIANCE);
 }
 FFX_DOF_INLINE FfxFloat32 ffxDofFarBlend(FfxFloat32 absCoc, FfxFloat32 farValidity)
 {

@@ -90,12 +90,12 @@ FFX_DOF_INLINE void ffxDofPostFilterTexel(FfxUInt32 index)
             bestIndex = raw;
         }
     }
-    FfxFloat32 nearMedian = ffxDofMedian9(nearLuminance[0], nearLuminance[1], nearLuminance[2], nearLuminance[3],
-                                          nearLuminance[4], nearLuminance[5], nearLuminance[6], nearLuminance[7],
-                                          nearLuminance[8]);
-    FfxFloat32 farMedian = ffxDofMedian9(farLuminance[0], farLuminance[1], farLuminance[2], farLuminance[3],
-                                         farLuminance[4], farLuminance[5], farLuminance[6], farLuminance[7],
-                                         farLuminance[8]);
+    FfxFloat32 nearMedian =
+        ffxDofMedian9(nearLuminance[0], nearLuminance[1], nearLuminance[2], nearLuminance[3], nearLuminance[4],
+                      nearLuminance[5], nearLuminance[6], nearLuminance[7], nearLuminance[8]);
+    FfxFloat32 farMedian =
+        ffxDofMedian9(farLuminance[0], farLuminance[1], farLuminance[2], farLuminance[3], farLuminance[4],
+                      farLuminance[5], farLuminance[6], farLuminance[7], farLuminance[8]);
     FfxDofFloat3 nearColor = ffxDofSharedRawNear[centerAlpha.x > 0.0f ? center : bestIndex];
     if (centerAlpha.x > 0.0f)
         nearColor = nearColor * FfxDofFloat(ffxDofMedianGain(nearCenterLuminance, nearMedian));
@@ -113,7 +113,8 @@ FFX_DOF_INLINE void ffxDofPostFilterTexel(FfxUInt32 index)
 FFX_DOF_INLINE FfxFloat32x4 ffxDofCompositeInput(FfxUInt32x2 pixel, FfxUInt32x2 ownPixel)
 {
     FfxUInt32x2 tileOrigin = (ownPixel / 16u) * 16u;
-    if (pixel.x >= tileOrigin.x && pixel.y >= tileOrigin.y && pixel.x < tileOrigin.x + 16u && pixel.y < tileOrigin.y + 16u)
+    if (pixel.x >= tileOrigin.x && pixel.y >= tileOrigin.y && pixel.x < tileOrigin.x + 16u &&
+        pixel.y < tileOrigin.y + 16u)
         return ffxDofSharedInput[(pixel.y - tileOrigin.y) * 16u + pixel.x - tileOrigin.x];
     FfxDofFloat3 color = ffxDofLoadColorMip(FfxInt32x2(pixel / 2u), 0u);
     return FfxFloat32x4(FfxFloat32(color.x), FfxFloat32(color.y), FfxFloat32(color.z), 1.0f);
@@ -164,12 +165,14 @@ FFX_DOF_INLINE FfxFloat32x3 ffxDofFixedBlur(FfxDofQuadNeighbourhood neighbourhoo
 }
 
 // The composed color of one full-res pixel, `inQuad` (0..1 each way) in its invocation's quad;
-// `filteredOrigin` is the half-res texel at filtered index 0. Returns false (and leaves `color` alone) when the pixel keeps its input value.
-FFX_DOF_INLINE FfxBoolean ffxDofComposePixel(FfxUInt32x2 pixel, FfxUInt32x2 inQuad, FfxInt32x2 filteredOrigin, FfxDofConstants constants,
-                                             FfxDofQuadNeighbourhood neighbourhood, FFX_DOF_INOUT(FfxFloat32x4) color)
+// `filteredOrigin` is the half-res texel at filtered index 0. Returns false (and leaves `color` alone) when the pixel
+// keeps its input value.
+FFX_DOF_INLINE FfxBoolean ffxDofComposePixel(FfxUInt32x2 pixel, FfxUInt32x2 inQuad, FfxInt32x2 filteredOrigin,
+                                             FfxDofConstants constants, FfxDofQuadNeighbourhood neighbourhood,
+                                             FFX_DOF_INOUT(FfxFloat32x4) color)
 {
-    FfxFloat32 coc = ffxDofCocFromDepth(ffxDofLoadInputDepth(pixel), constants.cocScale, constants.cocBias,
-                                        constants.cocLimit);
+    FfxFloat32 coc =
+        ffxDofCocFromDepth(ffxDofLoadInputDepth(pixel), constants.cocScale, constants.cocBias, constants.cocLimit);
     FfxInt32x2 topLeft;
     FfxFloat32x2 fraction = ffxDofUpsamplePosition(pixel, topLeft);
     FfxInt32x2 local = topLeft - filteredOrigin;
@@ -250,23 +253,32 @@ FFX_DOF_INLINE void ffxDofComposite(FfxUInt32x2 groupId, FfxUInt32 localIndex)
     {
         FfxUInt32x2 pixel = quad + FfxUInt32x2(k & 1u, k >> 1u);
         if (pixel.x < constants.fullSize.x && pixel.y < constants.fullSize.y)
-            ffxDofSharedInput[(pixel.y - groupId.y * 16u) * 16u + pixel.x - groupId.x * 16u] = ffxDofLoadInputColor(pixel);
+            ffxDofSharedInput[(pixel.y - groupId.y * 16u) * 16u + pixel.x - groupId.x * 16u] =
+                ffxDofLoadInputColor(pixel);
     }
 #endif
     FfxInt32x2 tileOrigin = FfxInt32x2(groupId * FfxUInt32(FFX_DOF_TILE_SIZE));
-    for (FfxUInt32 index = localIndex; index < FfxUInt32(FFX_DOF_RAW_SIDE * FFX_DOF_RAW_SIDE); index += FfxUInt32(FFX_DOF_GROUP_THREADS))
+    for (FfxUInt32 index = localIndex; index < FfxUInt32(FFX_DOF_RAW_SIDE * FFX_DOF_RAW_SIDE);
+         index += FfxUInt32(FFX_DOF_GROUP_THREADS))
     {
-        FfxInt32x2 texel = ffxDofClampHalfTexel(tileOrigin - FfxInt32x2(2, 2) + FfxInt32x2(FfxInt32(index % FfxUInt32(FFX_DOF_RAW_SIDE)), FfxInt32(index / FfxUInt32(FFX_DOF_RAW_SIDE))), constants.halfSize);
+        FfxInt32x2 texel = ffxDofClampHalfTexel(tileOrigin - FfxInt32x2(2, 2) +
+                                                    FfxInt32x2(FfxInt32(index % FfxUInt32(FFX_DOF_RAW_SIDE)),
+                                                               FfxInt32(index / FfxUInt32(FFX_DOF_RAW_SIDE))),
+                                                constants.halfSize);
         ffxDofSharedRawNear[index] = ffxDofLoadNearColor(texel);
         ffxDofSharedRawFar[index] = ffxDofLoadFarColor(texel);
         ffxDofSharedRawAlpha[index] = ffxDofLoadLayerAlpha(texel);
     }
     ffxDofGroupBarrier();
     FfxInt32x2 filteredOrigin = tileOrigin - FfxInt32x2(1, 1);
-    for (FfxUInt32 index = localIndex; index < FfxUInt32(FFX_DOF_FILTERED_SIDE * FFX_DOF_FILTERED_SIDE); index += FfxUInt32(FFX_DOF_GROUP_THREADS))
+    for (FfxUInt32 index = localIndex; index < FfxUInt32(FFX_DOF_FILTERED_SIDE * FFX_DOF_FILTERED_SIDE);
+         index += FfxUInt32(FFX_DOF_GROUP_THREADS))
     {
         ffxDofPostFilterTexel(index);
-        FfxInt32x2 texel = ffxDofClampHalfTexel(filteredOrigin + FfxInt32x2(FfxInt32(index % FfxUInt32(FFX_DOF_FILTERED_SIDE)), FfxInt32(index / FfxUInt32(FFX_DOF_FILTERED_SIDE))), constants.halfSize);
+        FfxInt32x2 texel =
+            ffxDofClampHalfTexel(filteredOrigin + FfxInt32x2(FfxInt32(index % FfxUInt32(FFX_DOF_FILTERED_SIDE)),
+                                                             FfxInt32(index / FfxUInt32(FFX_DOF_FILTERED_SIDE))),
+                                 constants.halfSize);
         ffxDofSharedCoc[index] = ffxDofLoadCocMip(texel, 0u);
     }
     ffxDofGroupBarrier();

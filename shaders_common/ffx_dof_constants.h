@@ -11,21 +11,21 @@
 
 struct FfxDofConstants
 {
-    FfxFloat32   cocScale;          // radius (half-res px) = depth * cocScale + cocBias
-    FfxFloat32   cocBias;
-    FfxFloat32   cocLimit;          // largest |radius|, half-res px (cocLimitFactor * height / 2)
-    FfxUInt32    maxRings;          // quality: upper bound on kernel rings
-    FfxUInt32x2  fullSize;          // input/output size, px
-    FfxUInt32x2  halfSize;          // size of MIP 0 of the half-resolution images: ceil(fullSize / 2)
-    FfxUInt32x2  tileCount;         // tiles of FFX_DOF_TILE_SIZE x FFX_DOF_TILE_SIZE half-res px
-    FfxFloat32x2 halfTexelSize;     // 1 / halfSize
-    FfxFloat32x2 fullTexelSize;     // 1 / fullSize
-    FfxUInt32    frameIndex;        // increments every dispatch; seeds the kernel jitter
-    FfxUInt32    outputFlags;       // FFX_DOF_OUTPUT_FLAG_* bits
+    FfxFloat32 cocScale;  // radius (half-res px) = depth * cocScale + cocBias
+    FfxFloat32 cocBias;
+    FfxFloat32 cocLimit;         // largest |radius|, half-res px (cocLimitFactor * height / 2)
+    FfxUInt32 maxRings;          // quality: upper bound on kernel rings
+    FfxUInt32x2 fullSize;        // input/output size, px
+    FfxUInt32x2 halfSize;        // size of MIP 0 of the half-resolution images: ceil(fullSize / 2)
+    FfxUInt32x2 tileCount;       // tiles of FFX_DOF_TILE_SIZE x FFX_DOF_TILE_SIZE half-res px
+    FfxFloat32x2 halfTexelSize;  // 1 / halfSize
+    FfxFloat32x2 fullTexelSize;  // 1 / fullSize
+    FfxUInt32 frameIndex;        // increments every dispatch; seeds the kernel jitter
+    FfxUInt32 outputFlags;       // FFX_DOF_OUTPUT_FLAG_* bits
 };
 
 // Bits of FfxDofConstants::outputFlags.
-#define FFX_DOF_OUTPUT_FLAG_ENCODE_SRGB 1u   // the output view is UNORM over an sRGB image: encode in shader
+#define FFX_DOF_OUTPUT_FLAG_ENCODE_SRGB 1u  // the output view is UNORM over an sRGB image: encode in shader
 
 #if defined(FFX_CPU)
 static_assert(sizeof(FfxDofConstants) == 64, "FfxDofConstants layout changed: update the offset checks");
@@ -38,4 +38,4 @@ static_assert(offsetof(FfxDofConstants, frameIndex) == 56, "FfxDofConstants::fra
 static_assert(offsetof(FfxDofConstants, outputFlags) == 60, "FfxDofConstants::outputFlags offset");
 #endif
 
-#endif // FFX_DOF_CONSTANTS_H
+#endif  // FFX_DOF_CONSTANTS_H

@@ -38,14 +38,19 @@ FFX_DOF_INLINE void ffxDofDownsampleColor(FfxUInt32x2 groupId, FfxUInt32 localIn
     FfxUInt32x2 pixel1 = min(quad + FfxUInt32x2(1u, 0u), lastPixel);
     FfxUInt32x2 pixel2 = min(quad + FfxUInt32x2(0u, 1u), lastPixel);
     FfxUInt32x2 pixel3 = min(quad + FfxUInt32x2(1u, 1u), lastPixel);
-    FfxFloat32 coc0 = ffxDofCocFromDepth(ffxDofLoadInputDepth(pixel0), constants.cocScale, constants.cocBias, constants.cocLimit);
-    FfxFloat32 coc1 = ffxDofCocFromDepth(ffxDofLoadInputDepth(pixel1), constants.cocScale, constants.cocBias, constants.cocLimit);
-    FfxFloat32 coc2 = ffxDofCocFromDepth(ffxDofLoadInputDepth(pixel2), constants.cocScale, constants.cocBias, constants.cocLimit);
-    FfxFloat32 coc3 = ffxDofCocFromDepth(ffxDofLoadInputDepth(pixel3), constants.cocScale, constants.cocBias, constants.cocLimit);
+    FfxFloat32 coc0 =
+        ffxDofCocFromDepth(ffxDofLoadInputDepth(pixel0), constants.cocScale, constants.cocBias, constants.cocLimit);
+    FfxFloat32 coc1 =
+        ffxDofCocFromDepth(ffxDofLoadInputDepth(pixel1), constants.cocScale, constants.cocBias, constants.cocLimit);
+    FfxFloat32 coc2 =
+        ffxDofCocFromDepth(ffxDofLoadInputDepth(pixel2), constants.cocScale, constants.cocBias, constants.cocLimit);
+    FfxFloat32 coc3 =
+        ffxDofCocFromDepth(ffxDofLoadInputDepth(pixel3), constants.cocScale, constants.cocBias, constants.cocLimit);
     FfxDofFloat3 color;
     FfxFloat32 coc;
-    ffxDofBilateralReduce(ffxDofLoadInputColorRgb(pixel0), ffxDofLoadInputColorRgb(pixel1), ffxDofLoadInputColorRgb(pixel2),
-                          ffxDofLoadInputColorRgb(pixel3), coc0, coc1, coc2, coc3, color, coc);
+    ffxDofBilateralReduce(ffxDofLoadInputColorRgb(pixel0), ffxDofLoadInputColorRgb(pixel1),
+                          ffxDofLoadInputColorRgb(pixel2), ffxDofLoadInputColorRgb(pixel3), coc0, coc1, coc2, coc3,
+                          color, coc);
     if (texel.x < constants.halfSize.x && texel.y < constants.halfSize.y)
     {
         ffxDofStoreColorMip(0u, texel, ffxDofRoundForPackedColor(color));
@@ -73,7 +78,8 @@ FFX_DOF_INLINE void ffxDofDownsampleColor(FfxUInt32x2 groupId, FfxUInt32 localIn
                                   ffxDofSharedMipCoc[i2], ffxDofSharedMipCoc[i3], color, coc);
             ffxDofSharedMipColor[i0] = color;
             ffxDofSharedMipCoc[i0] = coc;
-            FfxUInt32x2 mipTexel = groupId * (FfxUInt32(FFX_DOF_TILE_SIZE) >> mip) + FfxUInt32x2(local.x >> mip, local.y >> mip);
+            FfxUInt32x2 mipTexel =
+                groupId * (FfxUInt32(FFX_DOF_TILE_SIZE) >> mip) + FfxUInt32x2(local.x >> mip, local.y >> mip);
             FfxUInt32x2 mipSize = ffxDofMipSize(constants.halfSize, mip);
             if (mipTexel.x < mipSize.x && mipTexel.y < mipSize.y)
             {

@@ -54,8 +54,10 @@ FFX_DOF_INLINE void ffxDofDownsampleDepth(FfxUInt32x2 groupId, FfxUInt32 localIn
     FfxFloat32 depth1 = ffxDofLoadInputDepth(min(quad + FfxUInt32x2(1u, 0u), lastPixel));
     FfxFloat32 depth2 = ffxDofLoadInputDepth(min(quad + FfxUInt32x2(0u, 1u), lastPixel));
     FfxFloat32 depth3 = ffxDofLoadInputDepth(min(quad + FfxUInt32x2(1u, 1u), lastPixel));
-    FfxFloat32 nearDepth = ffxDofWaveNearestDepth(ffxDofNearerDepth(ffxDofNearerDepth(depth0, depth1), ffxDofNearerDepth(depth2, depth3)));
-    FfxFloat32 farDepth = ffxDofWaveFarthestDepth(ffxDofFartherDepth(ffxDofFartherDepth(depth0, depth1), ffxDofFartherDepth(depth2, depth3)));
+    FfxFloat32 nearDepth =
+        ffxDofWaveNearestDepth(ffxDofNearerDepth(ffxDofNearerDepth(depth0, depth1), ffxDofNearerDepth(depth2, depth3)));
+    FfxFloat32 farDepth = ffxDofWaveFarthestDepth(
+        ffxDofFartherDepth(ffxDofFartherDepth(depth0, depth1), ffxDofFartherDepth(depth2, depth3)));
     if (ffxDofWaveIsFirstLane())
     {
         FfxUInt32 wave = ffxDofWaveIndex(localIndex);

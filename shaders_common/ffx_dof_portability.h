@@ -238,27 +238,33 @@ void ffxDofCpuGroupBarrier();
 #define ffxDofGroupBarrier() ffxDofCpuGroupBarrier()
 
 template <typename T>
-inline T ffxDofSaturate(T x) {
+inline T ffxDofSaturate(T x)
+{
     return glm::clamp(x, T(0.0f), T(1.0f));
 }
 template <typename T>
-inline T ffxDofRcp(T x) {
+inline T ffxDofRcp(T x)
+{
     return T(1.0f) / x;
 }
 template <typename T, typename U>
-inline T ffxDofLerp(T a, T b, U t) {
+inline T ffxDofLerp(T a, T b, U t)
+{
     return glm::mix(a, b, t);
 }
 template <typename T>
-inline T ffxDofFract(T x) {
+inline T ffxDofFract(T x)
+{
     return glm::fract(x);
 }
-inline uint32_t ffxDofAsUInt(float x) {
+inline uint32_t ffxDofAsUInt(float x)
+{
     uint32_t bits;
     std::memcpy(&bits, &x, sizeof bits);
     return bits;
 }
-inline float ffxDofAsFloat(uint32_t bits) {
+inline float ffxDofAsFloat(uint32_t bits)
+{
     float x;
     std::memcpy(&x, &bits, sizeof x);
     return x;

@@ -27,7 +27,7 @@
 #ifndef FFX_DOF_RESOURCES_H
 #define FFX_DOF_RESOURCES_H
 
-#define FFX_DOF_TILE_SIZE 8   // half-resolution pixels per tile side (16 full-resolution pixels)
+#define FFX_DOF_TILE_SIZE 8  // half-resolution pixels per tile side (16 full-resolution pixels)
 
 #define FFX_DOF_SRV_BASE 0
 #define FFX_DOF_UAV_IMAGE_BASE 16
@@ -35,34 +35,34 @@
 #define FFX_DOF_SAMPLER_BASE 48
 
 // Sampled textures
-#define FFX_DOF_SRV_INPUT_COLOR     0
-#define FFX_DOF_SRV_INPUT_DEPTH     1
-#define FFX_DOF_SRV_COLOR_MIPS      2
-#define FFX_DOF_SRV_COC_MIPS        3
-#define FFX_DOF_SRV_TILES           4
-#define FFX_DOF_SRV_DILATED_TILES   5
-#define FFX_DOF_SRV_NEAR_COLOR      6
-#define FFX_DOF_SRV_FAR_COLOR       7
-#define FFX_DOF_SRV_LAYER_ALPHA     8
+#define FFX_DOF_SRV_INPUT_COLOR 0
+#define FFX_DOF_SRV_INPUT_DEPTH 1
+#define FFX_DOF_SRV_COLOR_MIPS 2
+#define FFX_DOF_SRV_COC_MIPS 3
+#define FFX_DOF_SRV_TILES 4
+#define FFX_DOF_SRV_DILATED_TILES 5
+#define FFX_DOF_SRV_NEAR_COLOR 6
+#define FFX_DOF_SRV_FAR_COLOR 7
+#define FFX_DOF_SRV_LAYER_ALPHA 8
 
 // Storage images (one slot per MIP level written)
-#define FFX_DOF_UAV_COLOR_MIP0      0
-#define FFX_DOF_UAV_COLOR_MIP1      1
-#define FFX_DOF_UAV_COLOR_MIP2      2
-#define FFX_DOF_UAV_COLOR_MIP3      3
-#define FFX_DOF_UAV_COC_MIP0        4
-#define FFX_DOF_UAV_COC_MIP1        5
-#define FFX_DOF_UAV_COC_MIP2        6
-#define FFX_DOF_UAV_COC_MIP3        7
-#define FFX_DOF_UAV_TILES           8
-#define FFX_DOF_UAV_DILATED_TILES   9
-#define FFX_DOF_UAV_NEAR_COLOR      10
-#define FFX_DOF_UAV_FAR_COLOR       11
-#define FFX_DOF_UAV_LAYER_ALPHA     12
-#define FFX_DOF_UAV_OUTPUT          13
+#define FFX_DOF_UAV_COLOR_MIP0 0
+#define FFX_DOF_UAV_COLOR_MIP1 1
+#define FFX_DOF_UAV_COLOR_MIP2 2
+#define FFX_DOF_UAV_COLOR_MIP3 3
+#define FFX_DOF_UAV_COC_MIP0 4
+#define FFX_DOF_UAV_COC_MIP1 5
+#define FFX_DOF_UAV_COC_MIP2 6
+#define FFX_DOF_UAV_COC_MIP3 7
+#define FFX_DOF_UAV_TILES 8
+#define FFX_DOF_UAV_DILATED_TILES 9
+#define FFX_DOF_UAV_NEAR_COLOR 10
+#define FFX_DOF_UAV_FAR_COLOR 11
+#define FFX_DOF_UAV_LAYER_ALPHA 12
+#define FFX_DOF_UAV_OUTPUT 13
 
 // Storage buffers
-#define FFX_DOF_UAV_BUFFER_GLOBALS  0
+#define FFX_DOF_UAV_BUFFER_GLOBALS 0
 
 // Samplers. LINEAR_CLAMP: min/mag filter linear, mipmap mode NEAREST, address mode clamp-to-edge on
 // u, v and w, no anisotropy, no compare, LOD range [0, FFX_DOF_OPTION_MAX_MIP - 1]. The shaders always
@@ -97,4 +97,4 @@
 #define FFX_DOF_COMPOSITE_DOMAIN FFX_DOF_DOMAIN_FULL_RES
 #define FFX_DOF_COMPOSITE_GROUP_EXTENT 16
 
-#endif // FFX_DOF_RESOURCES_H
+#endif  // FFX_DOF_RESOURCES_H

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Builds everything and runs every test: the README's test command, and what CI runs.
-#   1. installs missing Debian packages (tools/setup.sh),
+#   1. installs missing Debian packages (tools/setup.sh) and checks formatting (tools/check-format.sh),
 #   2. Release build + every CTest test (CPU tests, Vulkan tests on lavapipe with validation, and
 #      the install tree consumed by a separate project through find_package),
 #   3. the host-code tests again under AddressSanitizer + UndefinedBehaviorSanitizer,
@@ -14,6 +14,9 @@ if [ -z "${XDG_RUNTIME_DIR:-}" ] || [ ! -w "${XDG_RUNTIME_DIR}" ]; then
 fi
 jobs="$(nproc)"
 step() { printf '\n== %s (%ss elapsed)\n' "$1" "$SECONDS"; }
+
+step "formatting (clang-format)"
+bash tools/check-format.sh
 
 step "configure + build (Release)"
 cmake --preset default >/dev/null

@@ -45,14 +45,14 @@ typedef enum FfxDofErrorCode {
     FFX_DOF_ERROR_INVALID_QUALITY = -3,      /**< quality is 0 or above FFX_DOF_MAX_QUALITY */
     FFX_DOF_ERROR_INVALID_COC_LIMIT = -4,    /**< cocLimitFactor is negative, NaN or infinite */
     FFX_DOF_ERROR_INVALID_FLAGS = -5,        /**< a flag bit that is not one of FfxDofInitializationFlagBits */
-    FFX_DOF_ERROR_INVALID_RESOURCE = -6,     /**< a null image, an unsupported format, or a size that is not the context's */
+    FFX_DOF_ERROR_INVALID_RESOURCE = -6,     /**< a null image, an unsupported format or the wrong size */
     FFX_DOF_ERROR_OUTPUT_ALIASES_INPUT = -7, /**< output is the color image but FFX_DOF_OUTPUT_PRE_INIT is not set */
     FFX_DOF_ERROR_INVALID_CONTEXT = -8,      /**< the context was destroyed or never created */
     FFX_DOF_ERROR_INVALID_ARGUMENT = -9,     /**< another field is out of range (for example a non-finite cocScale) */
-    FFX_DOF_ERROR_UNSUPPORTED = -10,         /**< the device lacks a required feature, or no shader binaries exist for it */
-    FFX_DOF_ERROR_OUT_OF_MEMORY = -11,       /**< a host or device allocation failed */
-    FFX_DOF_ERROR_BACKEND = -12,             /**< the graphics API returned an error; see ffxDofGetLastErrorMessage */
-    FFX_DOF_ERROR_BACKEND_IN_USE = -13       /**< the backend still has live contexts */
+    FFX_DOF_ERROR_UNSUPPORTED = -10,   /**< the device lacks a required feature, or no shader binaries exist for it */
+    FFX_DOF_ERROR_OUT_OF_MEMORY = -11, /**< a host or device allocation failed */
+    FFX_DOF_ERROR_BACKEND = -12,       /**< the graphics API returned an error; see ffxDofGetLastErrorMessage */
+    FFX_DOF_ERROR_BACKEND_IN_USE = -13 /**< the backend still has live contexts */
 } FfxDofErrorCode;
 
 /** Bits of FfxDofContextDescription::flags. */
@@ -87,13 +87,13 @@ typedef void* FfxDofCommandList;
 /** An engine-owned image, described for one dispatch. Make it with ffxDofGetResourceVK or
  *  ffxDofGetResourceDX12; the fields are the API's own values. */
 typedef struct FfxDofResource {
-    uint64_t handle;     /**< VkImage, or ID3D12Resource* cast to an integer; 0 is invalid */
-    uint32_t format;     /**< VkFormat or DXGI_FORMAT of the image (or of the view to use) */
-    uint32_t width;      /**< in pixels; must equal FfxDofContextDescription::resolution */
+    uint64_t handle; /**< VkImage, or ID3D12Resource* cast to an integer; 0 is invalid */
+    uint32_t format; /**< VkFormat or DXGI_FORMAT of the image (or of the view to use) */
+    uint32_t width;  /**< in pixels; must equal FfxDofContextDescription::resolution */
     uint32_t height;
-    uint32_t state;      /**< VkImageLayout or D3D12_RESOURCE_STATES the image is in before the
-                              dispatch; the effect leaves it in the same state */
-    uint32_t flags;      /**< backend-specific bits, see ffx_dof_vk.h / ffx_dof_dx12.h */
+    uint32_t state; /**< VkImageLayout or D3D12_RESOURCE_STATES the image is in before the
+                         dispatch; the effect leaves it in the same state */
+    uint32_t flags; /**< backend-specific bits, see ffx_dof_vk.h / ffx_dof_dx12.h */
 } FfxDofResource;
 
 /** Parameters fixed for the lifetime of a context. Zero-initialise, then set every field. */

@@ -24,10 +24,10 @@ typedef enum FfxDofBackendFlagBitsDX12 {
 } FfxDofBackendFlagBitsDX12;
 
 typedef struct FfxDofBackendDescriptionDX12 {
-    ID3D12Device* device;        /**< the engine's; the backend holds a reference until destroyed */
-    uint32_t maxFramesInFlight;  /**< dispatches the GPU may still be executing when the next is
-                                      recorded; 0 means 3 */
-    uint32_t flags;              /**< FfxDofBackendFlagBitsDX12 */
+    ID3D12Device* device;       /**< the engine's; the backend holds a reference until destroyed */
+    uint32_t maxFramesInFlight; /**< dispatches the GPU may still be executing when the next is
+                                     recorded; 0 means 3 */
+    uint32_t flags;             /**< FfxDofBackendFlagBitsDX12 */
 } FfxDofBackendDescriptionDX12;
 
 /** Creates a D3D12 backend. Returns FFX_DOF_ERROR_UNSUPPORTED when this build carries no DXIL

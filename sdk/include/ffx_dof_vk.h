@@ -33,21 +33,21 @@ typedef enum FfxDofResourceFlagBitsVK {
 } FfxDofResourceFlagBitsVK;
 
 typedef struct FfxDofBackendDescriptionVK {
-    VkInstance instance;                         /**< the engine's; outlives the backend */
+    VkInstance instance; /**< the engine's; outlives the backend */
     VkPhysicalDevice physicalDevice;
-    VkDevice device;                             /**< created with the features listed in docs/integration-vulkan.md */
+    VkDevice device; /**< created with the features listed in docs/integration-vulkan.md */
     PFN_vkGetInstanceProcAddr vkGetInstanceProcAddr; /**< all other entry points are loaded from these */
     PFN_vkGetDeviceProcAddr vkGetDeviceProcAddr;
     const VkAllocationCallbacks* allocationCallbacks; /**< optional; used for every object the backend creates */
-    VkPipelineCache pipelineCache;               /**< optional; VK_NULL_HANDLE makes a private one */
-    uint32_t maxFramesInFlight;                  /**< dispatches the GPU may still be executing when the
-                                                      next is recorded; 0 means 3 */
-    uint32_t flags;                              /**< FfxDofBackendFlagBitsVK */
+    VkPipelineCache pipelineCache;                    /**< optional; VK_NULL_HANDLE makes a private one */
+    uint32_t maxFramesInFlight;                       /**< dispatches the GPU may still be executing when the
+                                                           next is recorded; 0 means 3 */
+    uint32_t flags;                                   /**< FfxDofBackendFlagBitsVK */
     /** Which device features the engine enabled at vkCreateDevice. The backend uses the 16-bit
      *  shaders only when both are VK_TRUE, and wave64 only with subgroupSizeControl. */
-    VkBool32 shaderFloat16Enabled;               /**< VkPhysicalDeviceShaderFloat16Int8Features::shaderFloat16 */
-    VkBool32 storage16BitEnabled;                /**< VkPhysicalDevice16BitStorageFeatures::storageBuffer16BitAccess */
-    VkBool32 subgroupSizeControlEnabled;         /**< VkPhysicalDeviceSubgroupSizeControlFeatures::subgroupSizeControl */
+    VkBool32 shaderFloat16Enabled;       /**< VkPhysicalDeviceShaderFloat16Int8Features::shaderFloat16 */
+    VkBool32 storage16BitEnabled;        /**< VkPhysicalDevice16BitStorageFeatures::storageBuffer16BitAccess */
+    VkBool32 subgroupSizeControlEnabled; /**< VkPhysicalDeviceSubgroupSizeControlFeatures::subgroupSizeControl */
 } FfxDofBackendDescriptionVK;
 
 /** Creates a Vulkan backend. *pBackend is set to NULL on failure. */

@@ -27,9 +27,9 @@ struct DispatchPlan {
     FfxDofResource depth{};
     FfxDofResource output{};
     FfxDofConstants constants{};
-    PassGrid passes[kPassCount]{};      // workgroup counts, in pipeline order
-    PermutationOptions options{};       // API-neutral option values; the backend adds half/wave64
-    bool outputIsColor = false;         // in-place: output and color are the same image
+    PassGrid passes[kPassCount]{};  // workgroup counts, in pipeline order
+    PermutationOptions options{};   // API-neutral option values; the backend adds half/wave64
+    bool outputIsColor = false;     // in-place: output and color are the same image
 };
 
 // The per-context half of a backend: internal images, descriptors, and recording.

@@ -36,12 +36,12 @@ CocLine cocLine(double aperture, double focus, double focalLength, double conver
 
 }  // namespace
 
-extern "C" float ffxDofCalculateCocScale(float aperture, float focus, float focalLength, float conversion,
-                                         float proj33, float proj34, float proj43) {
+extern "C" float ffxDofCalculateCocScale(float aperture, float focus, float focalLength, float conversion, float proj33,
+                                         float proj34, float proj43) {
     return static_cast<float>(cocLine(aperture, focus, focalLength, conversion, proj33, proj34, proj43).scale);
 }
 
-extern "C" float ffxDofCalculateCocBias(float aperture, float focus, float focalLength, float conversion,
-                                        float proj33, float proj34, float proj43) {
+extern "C" float ffxDofCalculateCocBias(float aperture, float focus, float focalLength, float conversion, float proj33,
+                                        float proj34, float proj43) {
     return static_cast<float>(cocLine(aperture, focus, focalLength, conversion, proj33, proj34, proj43).bias);
 }

@@ -120,7 +120,8 @@ extern "C" FfxDofErrorCode ffxDofContextCreate(FfxDofContext* pContext,
         return fail(FFX_DOF_ERROR_INVALID_COC_LIMIT, "cocLimitFactor %g must be finite and >= 0",
                     static_cast<double>(desc.cocLimitFactor));
     if (desc.backendInterface == nullptr)
-        return fail(FFX_DOF_ERROR_INVALID_POINTER, "backendInterface is NULL (create one with ffxDofBackendCreateVK/DX12)");
+        return fail(FFX_DOF_ERROR_INVALID_POINTER,
+                    "backendInterface is NULL (create one with ffxDofBackendCreateVK/DX12)");
 
     std::unique_ptr<FfxDofContext_T> context(new (std::nothrow) FfxDofContext_T);
     if (!context) return fail(FFX_DOF_ERROR_OUT_OF_MEMORY, "allocating the context failed");
@@ -154,8 +155,8 @@ extern "C" FfxDofErrorCode ffxDofContextDispatch(FfxDofContext* pContext,
     if (desc.commandList == nullptr) return fail(FFX_DOF_ERROR_INVALID_POINTER, "commandList is NULL");
 
     const FfxDofDimensions2D size = context->config.resolution;
-    for (const auto& [resource, name] : {std::pair{&desc.color, "color"}, std::pair{&desc.depth, "depth"},
-                                         std::pair{&desc.output, "output"}}) {
+    for (const auto& [resource, name] :
+         {std::pair{&desc.color, "color"}, std::pair{&desc.depth, "depth"}, std::pair{&desc.output, "output"}}) {
         if (const FfxDofErrorCode status = checkResource(*resource, name, size); status != FFX_DOF_OK) return status;
     }
     if (desc.output.handle == desc.depth.handle)

@@ -27,8 +27,7 @@ ProjectionTerms glStandard(double n, double f) { return {-(f + n) / (f - n), -2.
 ProjectionTerms glWindowTerms(const ProjectionTerms& gl) { return {0.5 * (gl.p33 + gl.p43), 0.5 * gl.p34, gl.p43}; }
 
 // Thin lens, all distances positive, result in half-resolution pixels, near field positive.
-double thinLensRadius(double aperture, double focusDistance, double focalLength, double conversion,
-                      double distance) {
+double thinLensRadius(double aperture, double focusDistance, double focalLength, double conversion, double distance) {
     return conversion * aperture * focalLength * (focusDistance - distance) /
            (distance * (focusDistance - focalLength));
 }
@@ -40,7 +39,7 @@ struct Camera {
 Camera randomCamera(std::mt19937& rng) {
     auto uniform = [&](double a, double b) { return std::uniform_real_distribution<double>(a, b)(rng); };
     Camera c;
-    c.focalLength = uniform(0.018, 0.2);                       // 18..200 mm
+    c.focalLength = uniform(0.018, 0.2);  // 18..200 mm
     const double fstop = uniform(1.2, 16.0);
     c.aperture = c.focalLength / (2.0 * fstop);
     const double sensorWidth = uniform(0.012, 0.036);
@@ -62,7 +61,8 @@ void checkCamera(const Camera& c, const ProjectionTerms& terms, double focusSign
                                               float(terms.p33), float(terms.p34), float(terms.p43));
     REQUIRE(std::isfinite(scale));
     REQUIRE(std::isfinite(bias));
-    const double infinityRadius = std::fabs(c.conversion * c.aperture * c.focalLength / (c.focusDistance - c.focalLength));
+    const double infinityRadius =
+        std::fabs(c.conversion * c.aperture * c.focalLength / (c.focusDistance - c.focalLength));
     std::uniform_real_distribution<double> logDistance(std::log(c.nearPlane), std::log(c.farPlane));
     for (int i = 0; i < 64; ++i) {
         const double distance = std::exp(logDistance(rng));
@@ -107,8 +107,8 @@ TEST_CASE("worked example of docs/coc.md: 50 mm f/2 focused at 2 m, 1920 px over
     CHECK(bias == Approx(162.3932).epsilon(1e-5));
     // The same camera with reversed depth: only the line changes, the radii do not.
     const ProjectionTerms reversed = d3dReversed(0.1, 100.0);
-    const float reversedScale = ffxDofCalculateCocScale(aperture, focus, focalLength, conversion,
-                                                        float(reversed.p33), float(reversed.p34), float(reversed.p43));
+    const float reversedScale = ffxDofCalculateCocScale(aperture, focus, focalLength, conversion, float(reversed.p33),
+                                                        float(reversed.p34), float(reversed.p43));
     const float reversedBias = ffxDofCalculateCocBias(aperture, focus, focalLength, conversion, float(reversed.p33),
                                                       float(reversed.p34), float(reversed.p43));
     CHECK(reversedScale == Approx(170.7692).epsilon(1e-5));
@@ -123,13 +123,13 @@ TEST_CASE("worked example of docs/coc.md: 50 mm f/2 focused at 2 m, 1920 px over
 TEST_CASE("impossible lenses give NaN, which dispatch rejects") {
     const ProjectionTerms terms = d3dStandard(0.1, 100.0);
     // Focus closer than the focal length.
-    CHECK(std::isnan(ffxDofCalculateCocScale(0.01f, -0.04f, 0.05f, 1000.0f, float(terms.p33), float(terms.p34),
-                                             float(terms.p43))));
+    CHECK(std::isnan(
+        ffxDofCalculateCocScale(0.01f, -0.04f, 0.05f, 1000.0f, float(terms.p33), float(terms.p34), float(terms.p43))));
     // Not a perspective projection (p34 = 0).
     CHECK(std::isnan(ffxDofCalculateCocBias(0.01f, -2.0f, 0.05f, 1000.0f, 1.0f, 0.0f, -1.0f)));
     // Negative aperture.
-    CHECK(std::isnan(ffxDofCalculateCocBias(-0.01f, -2.0f, 0.05f, 1000.0f, float(terms.p33), float(terms.p34),
-                                            float(terms.p43))));
+    CHECK(std::isnan(
+        ffxDofCalculateCocBias(-0.01f, -2.0f, 0.05f, 1000.0f, float(terms.p33), float(terms.p34), float(terms.p43))));
 }
 
 TEST_CASE("a zero aperture gives zero CoC everywhere") {

@@ -56,9 +56,7 @@ TEST_CASE_METHOD(Fixture, "a valid description creates a context and reaches the
 }
 
 TEST_CASE_METHOD(Fixture, "context creation rejects each invalid description with its own code") {
-    SECTION("null pContext") {
-        CHECK(ffxDofContextCreate(nullptr, &description) == FFX_DOF_ERROR_INVALID_POINTER);
-    }
+    SECTION("null pContext") { CHECK(ffxDofContextCreate(nullptr, &description) == FFX_DOF_ERROR_INVALID_POINTER); }
     SECTION("null description, and the handle is cleared") {
         context = reinterpret_cast<FfxDofContext>(&commandListStorage);  // garbage the call must overwrite
         CHECK(ffxDofContextCreate(&context, nullptr) == FFX_DOF_ERROR_INVALID_POINTER);
@@ -209,11 +207,20 @@ TEST_CASE_METHOD(Fixture, "a backend with live contexts is not destroyed") {
 }
 
 TEST_CASE("every error code has its own description") {
-    const FfxDofErrorCode codes[] = {
-        FFX_DOF_OK, FFX_DOF_ERROR_INVALID_POINTER, FFX_DOF_ERROR_INVALID_RESOLUTION, FFX_DOF_ERROR_INVALID_QUALITY,
-        FFX_DOF_ERROR_INVALID_COC_LIMIT, FFX_DOF_ERROR_INVALID_FLAGS, FFX_DOF_ERROR_INVALID_RESOURCE,
-        FFX_DOF_ERROR_OUTPUT_ALIASES_INPUT, FFX_DOF_ERROR_INVALID_CONTEXT, FFX_DOF_ERROR_INVALID_ARGUMENT,
-        FFX_DOF_ERROR_UNSUPPORTED, FFX_DOF_ERROR_OUT_OF_MEMORY, FFX_DOF_ERROR_BACKEND, FFX_DOF_ERROR_BACKEND_IN_USE};
+    const FfxDofErrorCode codes[] = {FFX_DOF_OK,
+                                     FFX_DOF_ERROR_INVALID_POINTER,
+                                     FFX_DOF_ERROR_INVALID_RESOLUTION,
+                                     FFX_DOF_ERROR_INVALID_QUALITY,
+                                     FFX_DOF_ERROR_INVALID_COC_LIMIT,
+                                     FFX_DOF_ERROR_INVALID_FLAGS,
+                                     FFX_DOF_ERROR_INVALID_RESOURCE,
+                                     FFX_DOF_ERROR_OUTPUT_ALIASES_INPUT,
+                                     FFX_DOF_ERROR_INVALID_CONTEXT,
+                                     FFX_DOF_ERROR_INVALID_ARGUMENT,
+                                     FFX_DOF_ERROR_UNSUPPORTED,
+                                     FFX_DOF_ERROR_OUT_OF_MEMORY,
+                                     FFX_DOF_ERROR_BACKEND,
+                                     FFX_DOF_ERROR_BACKEND_IN_USE};
     std::set<std::string> texts;
     for (FfxDofErrorCode code : codes) texts.insert(ffxDofGetErrorString(code));
     CHECK(texts.size() == std::size(codes));

@@ -25,7 +25,8 @@ inline vkrun::Device& validatedDevice() {
 inline void requireNoValidationMessages(vkrun::Device& device, const std::string& what = "") {
     const std::vector<std::string> messages = device.validationMessages();
     device.clearValidationMessages();
-    for (const std::string& message : messages) UNSCOPED_INFO(what << (what.empty() ? "" : ": ") << "validation: " << message);
+    for (const std::string& message : messages)
+        UNSCOPED_INFO(what << (what.empty() ? "" : ": ") << "validation: " << message);
     REQUIRE(messages.empty());
 }
 

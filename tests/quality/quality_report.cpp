@@ -136,7 +136,8 @@ int main(int argc, char** argv) {
             io::writePng((imageDir / "point_ours.png").string(), bokeh.result.ours);
             io::writePng((imageDir / "point_truth.png").string(), bokeh.render.truth);
             const auto verdict = [](bool ok) { return ok ? "pass" : "**FAIL** (known defect)"; };
-            md << "## point (bokeh of a single far point)\n\n" << bokeh.render.setup.description << ".\n\n"
+            md << "## point (bokeh of a single far point)\n\n"
+               << bokeh.render.setup.description << ".\n\n"
                << "![point ours](images/quality/point_ours.png) ![point truth](images/quality/point_truth.png)\n\n"
                << "- truth: " << bokeh.truth.summary << "\n- ffx-dof: " << bokeh.ours.summary << "\n\n"
                << "| check | result |\n|---|---|\n"

@@ -55,7 +55,6 @@ TEST_CASE("the circular gather baseline blurs by each pixel's own radius", "[qua
     CHECK(blurred.at(4, 3)[0] == 0.0f);  // radius 0: the pixel itself
 }
 
-
 TEST_CASE("bokeh of a single far point: disc radius", "[quality][vulkan]") {
     vkrun::Device& device = sharedDevice();
     device.clearValidationMessages();

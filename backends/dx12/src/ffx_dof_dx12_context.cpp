@@ -14,10 +14,14 @@ namespace {
 // sdk/src/ffx_dof_passes.h (kInternalImages). B10G11R11 there is DXGI's R11G11B10_FLOAT: same bits.
 constexpr DXGI_FORMAT toDxgiFormat(InternalFormat format) {
     switch (format) {
-        case InternalFormat::R11G11B10Float: return DXGI_FORMAT_R11G11B10_FLOAT;
-        case InternalFormat::R16Float: return DXGI_FORMAT_R16_FLOAT;
-        case InternalFormat::R16G16Float: return DXGI_FORMAT_R16G16_FLOAT;
-        case InternalFormat::R8G8Unorm: return DXGI_FORMAT_R8G8_UNORM;
+        case InternalFormat::R11G11B10Float:
+            return DXGI_FORMAT_R11G11B10_FLOAT;
+        case InternalFormat::R16Float:
+            return DXGI_FORMAT_R16_FLOAT;
+        case InternalFormat::R16G16Float:
+            return DXGI_FORMAT_R16G16_FLOAT;
+        case InternalFormat::R8G8Unorm:
+            return DXGI_FORMAT_R8G8_UNORM;
     }
     return DXGI_FORMAT_UNKNOWN;
 }
@@ -30,7 +34,6 @@ constexpr D3D12_RESOURCE_STATES kReadState = D3D12_RESOURCE_STATE_NON_PIXEL_SHAD
 constexpr D3D12_RESOURCE_STATES kWriteState = D3D12_RESOURCE_STATE_UNORDERED_ACCESS;
 
 uint32_t divideRoundingUp(uint32_t value, uint32_t divisor) { return (value + divisor - 1) / divisor; }
-
 
 // Subresources whose states a dispatch follows: every level of every internal image, plus color,
 // depth and output (whole resources; output shares color's entry when in place).
@@ -401,7 +404,8 @@ FfxDofErrorCode Context::createDescriptorHeap() {
         for (uint32_t i = 0; i < kInternalImageCount; ++i) {
             const InternalImageSpec& spec = kInternalImages[i];
             ID3D12Resource* resource = images_[i].resource.Get();
-            writeSrv(resource, toDxgiFormat(spec.format), images_[i].mipLevels, cpuDescriptor(slot, kSrvTableOffset + spec.sampledSlot));
+            writeSrv(resource, toDxgiFormat(spec.format), images_[i].mipLevels,
+                     cpuDescriptor(slot, kSrvTableOffset + spec.sampledSlot));
             const uint32_t levels = spec.mipChain ? kMipCount : 1;
             for (uint32_t mip = 0; mip < levels; ++mip) {
                 writeUav(mip < images_[i].mipLevels ? resource : nullptr, toDxgiFormat(spec.format), mip,

@@ -10,10 +10,14 @@ namespace ffxdof::vk {
 
 constexpr VkFormat toVkFormat(InternalFormat format) {
     switch (format) {
-        case InternalFormat::R11G11B10Float: return VK_FORMAT_B10G11R11_UFLOAT_PACK32;
-        case InternalFormat::R16Float: return VK_FORMAT_R16_SFLOAT;
-        case InternalFormat::R16G16Float: return VK_FORMAT_R16G16_SFLOAT;
-        case InternalFormat::R8G8Unorm: return VK_FORMAT_R8G8_UNORM;
+        case InternalFormat::R11G11B10Float:
+            return VK_FORMAT_B10G11R11_UFLOAT_PACK32;
+        case InternalFormat::R16Float:
+            return VK_FORMAT_R16_SFLOAT;
+        case InternalFormat::R16G16Float:
+            return VK_FORMAT_R16G16_SFLOAT;
+        case InternalFormat::R8G8Unorm:
+            return VK_FORMAT_R8G8_UNORM;
     }
     return VK_FORMAT_UNDEFINED;
 }
