@@ -213,12 +213,22 @@ FFX_DOF_INLINE FfxBoolean ffxDofComposePixel(FfxUInt32x2 pixel, FfxUInt32x2 inQu
         return false;
 
     FfxFloat32x3 result = FfxFloat32x3(color.x, color.y, color.z);
-    FfxFloat32 fixedBlurBlend = ffxDofFixedBlurBlend(absCoc, nearOpacity);
+    // A pixel of the near field is its own foreground: the fixed blur may spread its color, and the
+    // half-res layers (background through the near layer) replace its own small blur only as far as
+    // the variance match of its radius asks (ffxDofFarBlend), like a far-field pixel's.
+    FfxBoolean ownNear = coc >= FFX_DOF_NEAR_THRESHOLD;
+    FfxFloat32 fixedBlurBlend = ffxDofFixedBlurBlend(absCoc, ownNear ? 0.0f : nearOpacity);
     if (fixedBlurBlend > 0.0f)
         result = ffxDofLerp(result, ffxDofFixedBlur(neighbourhood, inQuad), fixedBlurBlend);
+    FfxFloat32x3 ownBlur = result;
     if (farWeight > 0.0f)
-        result = ffxDofLerp(result, farSum / farWeight, ffxDofFarBlend(absCoc, farWeight / farTotal));
+    {
+        FfxFloat32 farValidity = farWeight / farTotal;
+        result = ffxDofLerp(result, farSum / farWeight, ownNear ? farValidity : ffxDofFarBlend(absCoc, farValidity));
+    }
     result = ffxDofLerp(result, nearColor, ffxDofCubicWeight(nearOpacity));
+    if (ownNear)
+        result = ffxDofLerp(ownBlur, result, ffxDofFarBlend(absCoc, 1.0f));
     color = FfxFloat32x4(result.x, result.y, result.z, color.w);
     return true;
 }

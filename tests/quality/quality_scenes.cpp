@@ -21,7 +21,7 @@ const std::vector<SceneGate>& sceneGates() {
          "thin near posts over a sharp wall: partial occlusion, which a post-process can only "
          "approximate, so the gain is smaller"},
         {"busy-background", 12.5, "a 40+ px background blur: nearly every background pixel changes"},
-        {"floor", 9.0, "blur grows continuously with distance in front of and behind the focus"},
+        {"floor", 11.5, "blur grows continuously with distance in front of and behind the focus"},
     };
     return gates;
 }
