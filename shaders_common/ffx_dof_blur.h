@@ -54,7 +54,6 @@ struct FfxDofGather
     FfxFloat32 nearWeight;
     FfxFloat32x3 fillSum;
     FfxFloat32 fillCount;
-    FfxFloat32 weightedSamples;
     FfxDofBucket outer;
     FfxFloat32 cocSpread;  // largest |radius - own radius| among the samples seen
 };
@@ -133,7 +132,6 @@ FFX_DOF_INLINE void ffxDofGatherRing(FFX_DOF_INOUT(FfxDofGather) gather, FfxDofK
     ringBucket.sampleCount = FfxFloat32(sampleCount);
     gather.fillSum += ringFillSum * presence;
     gather.fillCount += ringFillCount * presence;
-    gather.weightedSamples += FfxFloat32(sampleCount) * sampleWeight;
     gather.outer = ffxDofMergeBuckets(gather.outer, ringBucket, kernel.spacing);
 }
 
@@ -188,13 +186,12 @@ FFX_DOF_INLINE void ffxDofGatherInnerRings(FFX_DOF_INOUT(FfxDofGather) gather, F
 }
 
 // The layers of one texel from its finished gather; `result` holds the defaults (texel itself).
-FFX_DOF_INLINE FfxDofBlurResult ffxDofFinishGather(FfxDofGather gather, FfxDofKernel kernel, FfxFloat32 kernelRadius,
-                                                   FfxDofBlurResult result)
+FFX_DOF_INLINE FfxDofBlurResult ffxDofFinishGather(FfxDofGather gather, FfxDofKernel kernel, FfxDofBlurResult result)
 {
     if (gather.nearWeight > 0.0f)
     {
         result.nearColor = ffxDofToDofFloat3(gather.nearSum / gather.nearWeight);
-        result.alpha.x = ffxDofNearOpacity(gather.nearWeight, kernelRadius, gather.weightedSamples);
+        result.alpha.x = ffxDofNearOpacity(gather.nearWeight, kernel.spacing);
     }
     if (gather.outer.weight > 0.0f)
         result.farColor = ffxDofToDofFloat3(gather.outer.color / gather.outer.weight);
@@ -233,7 +230,6 @@ FFX_DOF_INLINE FfxDofBlurResult ffxDofBlurTexel(FfxUInt32x2 texel, FfxFloat32x2 
     gather.nearWeight = 0.0f;
     gather.fillSum = FfxFloat32x3(0.0f, 0.0f, 0.0f);
     gather.fillCount = 0.0f;
-    gather.weightedSamples = 0.0f;
     gather.outer = ffxDofEmptyBucket();
     gather.cocSpread = 0.0f;
 
@@ -247,7 +243,7 @@ FFX_DOF_INLINE FfxDofBlurResult ffxDofBlurTexel(FfxUInt32x2 texel, FfxFloat32x2 
         mergeAmount = ffxDofRingMergeAmount(gather.cocSpread);
 #endif
     ffxDofGatherInnerRings(gather, kernel, mergeAmount, constants);
-    return ffxDofFinishGather(gather, kernel, kernelRadius, result);
+    return ffxDofFinishGather(gather, kernel, result);
 }
 
 FFX_DOF_INLINE void ffxDofBlur(FfxUInt32x2 groupId, FfxUInt32 localIndex)

@@ -358,11 +358,15 @@ FFX_DOF_INLINE FfxDofBucket ffxDofMergeBuckets(FfxDofBucket outer, FfxDofBucket 
     return merged;
 }
 
-// Near-field opacity from the area weights of the near samples that reach the pixel: each sample
-// stands for (kernel area / sample count) of the kernel and spreads over its own disc.
-FFX_DOF_INLINE FfxFloat32 ffxDofNearOpacity(FfxFloat32 nearWeight, FfxFloat32 kernelRadius, FfxFloat32 sampleCount)
+// Near-field opacity from the area weights of the near samples that reach the pixel (scatter as
+// gather): each sample stands for the kernel area it samples and spreads over its own disc. Ring k
+// holds 6k samples on an annulus of width `ringSpacing` s at radius k s (area 2 pi k s^2), so every
+// sample stands for pi s^2 / 3, and opacity = sum(area weight) * s^2 / 3. Normalising by the sample
+// count instead would count the outer ring as if its samples reached fully, where a region of
+// exactly the kernel radius reaches it by half, so a solid near region would stay ~0.91 opaque.
+FFX_DOF_INLINE FfxFloat32 ffxDofNearOpacity(FfxFloat32 nearWeight, FfxFloat32 ringSpacing)
 {
-    return ffxDofSaturate(nearWeight * kernelRadius * kernelRadius / max(sampleCount, 1.0f));
+    return ffxDofSaturate(nearWeight * ringSpacing * ringSpacing * (1.0f / 3.0f));
 }
 
 // ---- Post-filter and composition ----------------------------------------------------------------

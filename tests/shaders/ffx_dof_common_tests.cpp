@@ -224,17 +224,21 @@ TEST_CASE("Bucket merge: equal radii add, a nearer covering ring hides the outer
     CHECK(merged.color.x == Approx(ffxDofAreaWeight(10.0f)));
 }
 
-TEST_CASE("Near opacity of a uniform near field covering the kernel is 1", "[gather]") {
-    // Every sample of radius R reaches; R^2 * sum(1/R^2) / N = 1.
+TEST_CASE("Near opacity of a uniform near field of the kernel radius is 1", "[gather]") {
+    // The blur's geometry: rings at k * spacing, near radius R = rings * spacing, so the outer ring
+    // lies on the disc's edge and reaches by half (ffxDofReach), every inner sample fully.
     for (uint32_t rings = 1; rings <= 12; ++rings) {
-        float radius = float(rings) * 1.5f;
-        float samples = 0.0f, weight = 0.0f;
+        const float spacing = 1.5f;
+        const float radius = float(rings) * spacing;
+        float weight = 0.0f;
         for (uint32_t r = 0; r <= rings; ++r) {
-            samples += float(ffxDofRingSampleCount(r));
-            weight += float(ffxDofRingSampleCount(r)) * ffxDofAreaWeight(radius);
+            const float reach = ffxDofReach(radius, float(r) * spacing);
+            weight += float(ffxDofRingSampleCount(r)) * reach * ffxDofAreaWeight(radius);
         }
-        CHECK(ffxDofNearOpacity(weight, radius, samples) == Approx(1.0f));
-        CHECK(ffxDofNearOpacity(weight * 0.5f, radius, samples) == Approx(0.5f));
+        CHECK(ffxDofNearOpacity(weight, spacing) == Approx(1.0f));
+        // Half the weight: half opaque, plus half the centre sample's share (1 of 3 * rings^2).
+        const float centreShare = 1.0f / (3.0f * float(rings * rings));
+        CHECK(ffxDofNearOpacity(weight * 0.5f, spacing) == Approx(0.5f * (1.0f + centreShare)));
     }
 }
 
