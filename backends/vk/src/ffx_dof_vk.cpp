@@ -59,10 +59,6 @@ bool isColorFormat(VkFormat format) {
     }
 }
 
-bool isDepthAspectFormat(VkFormat format) {
-    return format == VK_FORMAT_D32_SFLOAT || format == VK_FORMAT_D24_UNORM_S8_UINT || format == VK_FORMAT_D16_UNORM;
-}
-
 bool isDepthFormat(VkFormat format) { return isDepthAspectFormat(format) || format == VK_FORMAT_R32_SFLOAT; }
 
 bool isReadableLayout(VkImageLayout layout) {

@@ -90,4 +90,8 @@ std::string layoutName(VkImageLayout layout) {
     }
 }
 
+bool isDepthAspectFormat(VkFormat format) {
+    return format == VK_FORMAT_D32_SFLOAT || format == VK_FORMAT_D24_UNORM_S8_UINT || format == VK_FORMAT_D16_UNORM;
+}
+
 }  // namespace ffxdof::vk

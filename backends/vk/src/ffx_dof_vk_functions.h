@@ -89,5 +89,7 @@ const char* resultName(VkResult result);
 std::string formatName(VkFormat format);
 // "VK_IMAGE_LAYOUT_GENERAL" and so on, "VkImageLayout 123" for unknown values.
 std::string layoutName(VkImageLayout layout);
+// Depth formats read through a depth-aspect view (D32, D24S8, D16).
+bool isDepthAspectFormat(VkFormat format);
 
 }  // namespace ffxdof::vk

@@ -1,5 +1,6 @@
 // The harness's Vulkan instance and device, and images with host upload/read-back.
 // It links the Vulkan loader directly: it is an application, not a library inside an engine.
+#include "ffx_dof_passes.h"
 #include "vkrun_internal.h"
 
 #include <cstdio>
@@ -12,11 +13,7 @@ void check(VkResult result, const char* what) {
     if (result != VK_SUCCESS) throw Error(std::string(what) + " failed: VkResult " + std::to_string(int(result)));
 }
 
-const char* passName(uint32_t pass) {
-    static constexpr const char* kNames[kPassCount] = {"downsample_depth", "downsample_color", "dilate", "blur",
-                                                       "composite"};
-    return pass < kPassCount ? kNames[pass] : "unknown pass";
-}
+const char* passName(uint32_t pass) { return pass < kPassCount ? ffxdof::kPassNames[pass] : "unknown pass"; }
 
 struct Device::Impl {
     VkInstance instance = VK_NULL_HANDLE;
@@ -404,7 +401,7 @@ GpuImage::~GpuImage() {
 
 VkImageAspectFlags GpuImage::aspects() const {
     if (format_ == VK_FORMAT_D24_UNORM_S8_UINT) return VK_IMAGE_ASPECT_DEPTH_BIT | VK_IMAGE_ASPECT_STENCIL_BIT;
-    return isDepthAspect(format_) ? VK_IMAGE_ASPECT_DEPTH_BIT : VK_IMAGE_ASPECT_COLOR_BIT;
+    return isDepthAspectFormat(format_) ? VK_IMAGE_ASPECT_DEPTH_BIT : VK_IMAGE_ASPECT_COLOR_BIT;
 }
 
 void GpuImage::upload(const HostImage& pixels, VkImageLayout layout) {
@@ -416,8 +413,8 @@ void GpuImage::upload(const HostImage& pixels, VkImageLayout layout) {
         transition(commandBuffer, image_, aspects(), VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL);
         VkBufferImageCopy region{};
         // Only the depth aspect of a depth/stencil image carries data.
-        region.imageSubresource = {isDepthAspect(format_) ? VkImageAspectFlags(VK_IMAGE_ASPECT_DEPTH_BIT)
-                                                          : VkImageAspectFlags(VK_IMAGE_ASPECT_COLOR_BIT),
+        region.imageSubresource = {isDepthAspectFormat(format_) ? VkImageAspectFlags(VK_IMAGE_ASPECT_DEPTH_BIT)
+                                                                : VkImageAspectFlags(VK_IMAGE_ASPECT_COLOR_BIT),
                                    0, 0, 1};
         region.imageExtent = {width_, height_, 1};
         vkCmdCopyBufferToImage(commandBuffer, staging.buffer, image_, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &region);

@@ -1,6 +1,7 @@
 // Internals of ffx_dof_vkrun shared by its source files and its tests.
 #pragma once
 
+#include "ffx_dof_vk_functions.h"  // makeInfo, formatName, isDepthAspectFormat: shared with the backend
 #include "ffx_dof_vkrun.h"
 
 #include <cstdint>
@@ -9,19 +10,12 @@
 
 namespace ffxdof::vkrun {
 
-// A Vulkan structure with its sType set and every other member zero. (Brace-initialising only
-// sType trips -Wmissing-field-initializers.)
-template <typename T>
-T makeInfo(VkStructureType type) {
-    T info{};
-    info.sType = type;
-    return info;
-}
+using vk::isDepthAspectFormat;
+using vk::makeInfo;
 
 // Throws Error("<what> failed: VK_ERROR_...") unless result is VK_SUCCESS.
 void check(VkResult result, const char* what);
 
-bool isDepthAspect(VkFormat format);
 // Bytes of one texel as copied between a buffer and the image (D24_UNORM_S8_UINT: X8_D24, 4 bytes).
 uint32_t bytesPerTexel(VkFormat format);
 // Host floats to texels (color: 4 channels; depth: 1) and color texels back to RGBA floats.

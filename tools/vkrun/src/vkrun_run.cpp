@@ -76,7 +76,8 @@ public:
         };
         const VkImageView colorView = view(color, colorFormat, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_USAGE_SAMPLED_BIT);
         const VkImageView depthView =
-            view(depth, depthFormat, isDepthAspect(depthFormat) ? VK_IMAGE_ASPECT_DEPTH_BIT : VK_IMAGE_ASPECT_COLOR_BIT,
+            view(depth, depthFormat,
+                 isDepthAspectFormat(depthFormat) ? VK_IMAGE_ASPECT_DEPTH_BIT : VK_IMAGE_ASPECT_COLOR_BIT,
                  VK_IMAGE_USAGE_SAMPLED_BIT);
         const VkImageView outputView =
             view(output, outputViewFormat, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_USAGE_STORAGE_BIT);
@@ -222,7 +223,7 @@ RunResult runEffect(Device& device, const HostImage& color, const HostImage& dep
     // A depth buffer is a depth attachment (which its read-only depth layouts require).
     const VkImageUsageFlags depthUsage =
         VK_IMAGE_USAGE_SAMPLED_BIT | transfers |
-        (isDepthAspect(settings.depthFormat) ? VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT : 0);
+        (isDepthAspectFormat(settings.depthFormat) ? VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT : 0);
     GpuImage depthImage(device, width, height, settings.depthFormat, depthUsage);
     std::unique_ptr<GpuImage> outputImage;
     if (!settings.inPlace) {
@@ -232,7 +233,7 @@ RunResult runEffect(Device& device, const HostImage& color, const HostImage& dep
     }
     const VkImageLayout colorLayout =
         settings.inPlace ? VK_IMAGE_LAYOUT_GENERAL : VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL;
-    const VkImageLayout depthLayout = isDepthAspect(settings.depthFormat)
+    const VkImageLayout depthLayout = isDepthAspectFormat(settings.depthFormat)
                                           ? VK_IMAGE_LAYOUT_DEPTH_STENCIL_READ_ONLY_OPTIMAL
                                           : VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL;
     const VkImageLayout outputLayout = VK_IMAGE_LAYOUT_GENERAL;
