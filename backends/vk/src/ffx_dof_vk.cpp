@@ -46,21 +46,6 @@ VkImage imageOf(const FfxDofResource& resource) {
     }
 }
 
-bool isColorFormat(VkFormat format) {
-    switch (format) {
-        case VK_FORMAT_R16G16B16A16_SFLOAT:
-        case VK_FORMAT_R32G32B32A32_SFLOAT:
-        case VK_FORMAT_B10G11R11_UFLOAT_PACK32:
-        case VK_FORMAT_R8G8B8A8_UNORM:
-        case VK_FORMAT_R8G8B8A8_SRGB:
-            return true;
-        default:
-            return false;
-    }
-}
-
-bool isDepthFormat(VkFormat format) { return isDepthAspectFormat(format) || format == VK_FORMAT_R32_SFLOAT; }
-
 bool isReadableLayout(VkImageLayout layout) {
     return layout != VK_IMAGE_LAYOUT_UNDEFINED && layout != VK_IMAGE_LAYOUT_PREINITIALIZED;
 }

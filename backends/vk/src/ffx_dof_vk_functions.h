@@ -91,5 +91,8 @@ std::string formatName(VkFormat format);
 std::string layoutName(VkImageLayout layout);
 // Depth formats read through a depth-aspect view (D32, D24S8, D16).
 bool isDepthAspectFormat(VkFormat format);
+// The engine formats ffx-dof accepts (docs/integration-vulkan.md): color and output, and depth.
+bool isColorFormat(VkFormat format);
+bool isDepthFormat(VkFormat format);
 
 }  // namespace ffxdof::vk

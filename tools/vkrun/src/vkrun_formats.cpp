@@ -11,23 +11,10 @@
 
 namespace ffxdof::vkrun {
 
-bool isSupportedColorFormat(VkFormat format) {
-    switch (format) {
-        case VK_FORMAT_R16G16B16A16_SFLOAT:
-        case VK_FORMAT_R32G32B32A32_SFLOAT:
-        case VK_FORMAT_B10G11R11_UFLOAT_PACK32:
-        case VK_FORMAT_R8G8B8A8_UNORM:
-        case VK_FORMAT_R8G8B8A8_SRGB:
-            return true;
-        default:
-            return false;
-    }
-}
+// The harness converts exactly the formats the backend accepts.
+bool isSupportedColorFormat(VkFormat format) { return vk::isColorFormat(format); }
 
-bool isSupportedDepthFormat(VkFormat format) {
-    return format == VK_FORMAT_D32_SFLOAT || format == VK_FORMAT_D24_UNORM_S8_UINT || format == VK_FORMAT_D16_UNORM ||
-           format == VK_FORMAT_R32_SFLOAT;
-}
+bool isSupportedDepthFormat(VkFormat format) { return vk::isDepthFormat(format); }
 
 std::string formatName(VkFormat format) { return vk::formatName(format); }
 
