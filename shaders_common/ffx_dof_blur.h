@@ -11,9 +11,19 @@
 //   so in-focus and foreground color never spreads into the far field beyond it.
 //   Hole filling: when the texel itself is near, the far-field samples are also averaged regardless
 //   of reach, and that average is the far color where no far-field sample reaches.
-// Tile classes: copy (every radius that reaches the tile is in focus; equal to R < 0.5 per texel);
-// far-only (no near radius reaches: no sample counts as near, which changes nothing because a
-// near sample from a tile that does not reach has zero reach).
+// Tile classes (ffxDofClassifyTile, from pass 3's dilated range and kernel footprint), each a path
+// that leaves out what cannot matter on that tile and gives what the mixed path would give:
+//   copy       every kernel is in focus (R < 0.5): the texel is the far layer;
+//   equal      every radius the kernels read is within FFX_DOF_EQUAL_WEIGHT_SPREAD of the others
+//              (all near or all far): no CoC is read, each sample weighs what the texel's own
+//              radius gives at its distance, and inner rings are merged wherever the option allows;
+//   far-only   no near radius reaches the tile: no near sums, no hole fill (a near sample from a
+//              tile that does not reach has zero reach, so counting it as far changes nothing);
+//   near-only  every radius read is near-field: no far buckets, no hole fill (no background sample);
+//   mixed      everything.
+// The paths are selected with FFX_DOF_TAKE_IF, a loop of zero or one pass: devices that run groups of
+// lanes in lock step under masks (lavapipe) execute both sides of an `if` even when the condition is
+// uniform, but leave a loop as soon as no lane is left in it, so only the tile's own path costs.
 // Ring merging (FFX_DOF_OPTION_MAX_RING_MERGE_LOG > 0) is decided per texel, not per tile: the
 // outermost ring is gathered at full resolution first; where its radii are all within half a pixel
 // of the texel's own (a flat far field), inner rings are gathered from a coarser MIP, 2^log rings at
@@ -32,7 +42,7 @@
 
 #if defined(FFX_CPU)
 FfxDofConstants ffxDofGetConstants();
-FfxFloat32x2 ffxDofLoadDilatedTile(FfxUInt32x2 tile);
+FfxFloat32x4 ffxDofLoadDilatedTile(FfxUInt32x2 tile);
 FfxDofFloat3 ffxDofLoadColorMip(FfxInt32x2 texel, FfxUInt32 mip);
 FfxFloat32 ffxDofLoadCocMip(FfxInt32x2 texel, FfxUInt32 mip);
 void ffxDofStoreNearColor(FfxUInt32x2 texel, FfxDofFloat3 color);
@@ -67,23 +77,32 @@ struct FfxDofKernel
     FfxFloat32 spacing;
     FfxUInt32 baseMip;
     FfxUInt32 rings;
-    FfxBoolean withNear;
     FfxBoolean centerIsNear;
+};
+
+// Which parts of the gather a tile class needs; literals at every call, so what a path leaves out
+// compiles away.
+struct FfxDofGatherParts
+{
+    FfxBoolean nearField;     // near sums (scatter-as-gather near layer)
+    FfxBoolean farField;      // far buckets
+    FfxBoolean equalWeights;  // every radius read is the texel's own: no CoC reads
 };
 
 // Gathers ring `ringIndex` from MIP `mip`; each sample stands for `ringWeight` samples (a merged
 // ring stands for the rings inside it too) and the whole ring counts `presence` (0..1) times.
 // trackSpread (a literal at every call, so it compiles away) records the radius spread of the
-// samples for the ring-merge decision: only the outermost ring needs it.
+// samples for the ring-merge decision: only the outermost ring needs it. Hole filling needs both
+// fields (a near texel with background samples around it): only the mixed path has it.
 // The sample loop is written for devices that run both sides of every branch (lavapipe, which runs
 // groups of 8 lanes under masks even for a uniform condition): near and far samples are added with
 // 0/1 shares instead of a branch, the hole-fill average is kept for every texel (only a near texel
 // uses it), and positions stay in the sampled MIP's texel units (no int-to-float conversions).
 FFX_DOF_INLINE void ffxDofGatherRing(FFX_DOF_INOUT(FfxDofGather) gather, FfxDofKernel kernel, FfxUInt32 ringIndex,
                                      FfxUInt32 mip, FfxFloat32 ringWeight, FfxFloat32 presence, FfxBoolean trackSpread,
-                                     FfxDofConstants constants)
+                                     FfxDofGatherParts parts, FfxDofConstants constants)
 {
-    FfxFloat32 nearThreshold = kernel.withNear ? FFX_DOF_NEAR_THRESHOLD : 3.4e38f;
+    FfxBoolean holeFill = parts.nearField && parts.farField;
     FfxFloat32 sampleWeight = ringWeight * presence;
     FfxUInt32 sampleCount = ffxDofRingSampleCount(ringIndex);
     FfxDofBucket ringBucket = ffxDofEmptyBucket();
@@ -104,7 +123,9 @@ FFX_DOF_INLINE void ffxDofGatherRing(FFX_DOF_INOUT(FfxDofGather) gather, FfxDofK
         FfxFloat32x2 sampleTexel = clamp(floor(origin + offset), FfxFloat32x2(0.0f, 0.0f), lastTexel);
         offset = FfxFloat32x2(offset.x * step.x - offset.y * step.y, offset.x * step.y + offset.y * step.x);
         FfxFloat32x3 color = ffxDofToFloat32x3(ffxDofLoadColorMip(FfxInt32x2(sampleTexel), mip));
-        FfxFloat32 coc = ffxDofLoadCocMip(FfxInt32x2(sampleTexel), mip);
+        FfxFloat32 coc = kernel.centerCoc;
+        if (!parts.equalWeights)
+            coc = ffxDofLoadCocMip(FfxInt32x2(sampleTexel), mip);
         if (trackSpread)
             gather.cocSpread = max(gather.cocSpread, abs(coc - kernel.centerCoc));
         // Reach is judged from the centre of the texel actually read, not from the ring: the
@@ -115,24 +136,38 @@ FFX_DOF_INLINE void ffxDofGatherRing(FFX_DOF_INOUT(FfxDofGather) gather, FfxDofK
         FfxFloat32 absCoc = abs(coc);
         FfxFloat32 reach = ffxDofReach(absCoc, distance);
         FfxFloat32 weight = reach * ffxDofAreaWeight(absCoc) * sampleWeight;
-        FfxFloat32 farShare = coc >= nearThreshold ? 0.0f : 1.0f;
+        FfxFloat32 farShare = coc >= FFX_DOF_NEAR_THRESHOLD ? 0.0f : 1.0f;
+        if (!parts.nearField)
+            farShare = 1.0f;
+        if (!parts.farField)
+            farShare = 0.0f;
         FfxFloat32 farWeight = weight * farShare;
-        FfxFloat32 nearWeight = weight - farWeight;
-        gather.nearSum += color * nearWeight;
-        gather.nearWeight += nearWeight;
-        ringBucket.color += color * farWeight;
-        ringBucket.weight += farWeight;
-        ringBucket.radius += absCoc * farWeight;
-        ringBucket.coverage += reach * farShare;
-        ringFillSum += color * farShare;
-        ringFillCount += farShare;
+        if (parts.nearField)
+        {
+            FfxFloat32 nearWeight = weight - farWeight;
+            gather.nearSum += color * nearWeight;
+            gather.nearWeight += nearWeight;
+        }
+        if (parts.farField)
+        {
+            ringBucket.color += color * farWeight;
+            ringBucket.weight += farWeight;
+            ringBucket.radius += absCoc * farWeight;
+            ringBucket.coverage += reach * farShare;
+        }
+        if (holeFill)
+        {
+            ringFillSum += color * farShare;
+            ringFillCount += farShare;
+        }
     }
     // A ring of presence 0 leaves everything as it was (no weight, no occlusion).
     ringBucket.coverage *= presence;
     ringBucket.sampleCount = FfxFloat32(sampleCount);
     gather.fillSum += ringFillSum * presence;
     gather.fillCount += ringFillCount * presence;
-    gather.outer = ffxDofMergeBuckets(gather.outer, ringBucket, kernel.spacing);
+    if (parts.farField)
+        gather.outer = ffxDofMergeBuckets(gather.outer, ringBucket, kernel.spacing);
 }
 
 // Weight of each sample of ring `last` when it stands for rings first..last (6 * ring samples each).
@@ -151,7 +186,7 @@ FFX_DOF_INLINE FfxFloat32 ffxDofMergedRingWeight(FfxUInt32 first, FfxUInt32 last
 // lanes in lock step (lavapipe: 8), lanes that merge and lanes that do not share the passes instead
 // of running a merged loop and a full loop one after the other.
 FFX_DOF_INLINE void ffxDofGatherInnerRings(FFX_DOF_INOUT(FfxDofGather) gather, FfxDofKernel kernel,
-                                           FfxFloat32 mergeAmount, FfxDofConstants constants)
+                                           FfxFloat32 mergeAmount, FfxDofGatherParts parts, FfxDofConstants constants)
 {
     FfxUInt32 mergeLog = FfxUInt32(FFX_DOF_OPTION_MAX_RING_MERGE_LOG);
     FfxUInt32 groupSize = 1u << mergeLog;
@@ -174,7 +209,7 @@ FFX_DOF_INLINE void ffxDofGatherInnerRings(FFX_DOF_INOUT(FfxDofGather) gather, F
         FfxUInt32 mip = min(kernel.baseMip + (mergedWalk ? mergeLog : 0u), FfxUInt32(FFX_DOF_OPTION_MAX_MIP - 1));
         FfxFloat32 ringWeight = mergedWalk ? ffxDofMergedRingWeight(first, topRing) : 1.0f;
         FfxFloat32 presence = mergedWalk ? merged : 1.0f - merged;
-        ffxDofGatherRing(gather, kernel, ring, mip, ringWeight, presence, false, constants);
+        ffxDofGatherRing(gather, kernel, ring, mip, ringWeight, presence, false, parts, constants);
         ++walk;
         if (walk == walks)
         {
@@ -202,8 +237,40 @@ FFX_DOF_INLINE FfxDofBlurResult ffxDofFinishGather(FfxDofGather gather, FfxDofKe
     return result;
 }
 
-// The blur of one half-res texel; `dilated` is its tile's (far, near) range from pass 3.
-FFX_DOF_INLINE FfxDofBlurResult ffxDofBlurTexel(FfxUInt32x2 texel, FfxFloat32x2 dilated, FfxDofConstants constants)
+// Gathers the whole kernel with the parts of one tile class.
+// The outermost ring is always gathered at full resolution (it keeps the circle), and it tells how
+// flat the radii around the texel are: the merged path is taken by how flat, per texel, from the
+// texel's own samples, never per tile (a per-tile switch shows as tile-shaped blocks). Equal-weight
+// tiles are flat by construction: they merge wherever the option allows.
+FFX_DOF_INLINE void ffxDofGatherKernel(FFX_DOF_INOUT(FfxDofGather) gather, FfxDofKernel kernel, FfxDofGatherParts parts,
+                                       FfxDofConstants constants)
+{
+    FfxBoolean trackSpread = !parts.equalWeights;
+    ffxDofGatherRing(gather, kernel, kernel.rings, kernel.baseMip, 1.0f, 1.0f, trackSpread, parts, constants);
+    FfxFloat32 mergeAmount = 0.0f;
+#if FFX_DOF_OPTION_MAX_RING_MERGE_LOG > 0
+    if (parts.equalWeights && kernel.rings >= 2u && kernel.centerCoc <= -FFX_DOF_IN_FOCUS_RADIUS)
+        mergeAmount = 1.0f;
+    else if (kernel.rings >= 2u && kernel.centerCoc <= -FFX_DOF_IN_FOCUS_RADIUS)
+        mergeAmount = ffxDofRingMergeAmount(gather.cocSpread);
+#endif
+    ffxDofGatherInnerRings(gather, kernel, mergeAmount, parts, constants);
+}
+
+FFX_DOF_INLINE FfxDofGatherParts ffxDofMakeGatherParts(FfxBoolean nearField, FfxBoolean farField,
+                                                       FfxBoolean equalWeights)
+{
+    FfxDofGatherParts parts;
+    parts.nearField = nearField;
+    parts.farField = farField;
+    parts.equalWeights = equalWeights;
+    return parts;
+}
+
+// The blur of one half-res texel; `dilated` is its tile's DILATED_TILES texel from pass 3, `tileClass`
+// the path (ffxDofClassifyTile; the CPU tests also force the mixed path to compare).
+FFX_DOF_INLINE FfxDofBlurResult ffxDofBlurTexel(FfxUInt32x2 texel, FfxFloat32x4 dilated, FfxUInt32 tileClass,
+                                                FfxDofConstants constants)
 {
     FfxDofBlurResult result;
     result.nearColor = FfxDofFloat3(0.0f, 0.0f, 0.0f);
@@ -218,7 +285,6 @@ FFX_DOF_INLINE FfxDofBlurResult ffxDofBlurTexel(FfxUInt32x2 texel, FfxFloat32x2 
     if (kernel.rings == 0u)
         return result;  // in focus: the far layer holds the texel itself
 
-    kernel.withNear = dilated.y >= FFX_DOF_NEAR_THRESHOLD;
     kernel.centerIsNear = kernel.centerCoc >= FFX_DOF_NEAR_THRESHOLD;
     kernel.spacing = kernelRadius / FfxFloat32(kernel.rings);
     kernel.baseMip = FfxUInt32(ffxDofMipForSpacing(kernel.spacing));
@@ -233,29 +299,37 @@ FFX_DOF_INLINE FfxDofBlurResult ffxDofBlurTexel(FfxUInt32x2 texel, FfxFloat32x2 
     gather.outer = ffxDofEmptyBucket();
     gather.cocSpread = 0.0f;
 
-    // The outermost ring is always gathered at full resolution (it keeps the circle), and it tells
-    // how flat the radii around the texel are: the merged path is taken by how flat, per texel, from
-    // the texel's own samples, never per tile (a per-tile switch shows as tile-shaped blocks).
-    ffxDofGatherRing(gather, kernel, kernel.rings, kernel.baseMip, 1.0f, 1.0f, true, constants);
-    FfxFloat32 mergeAmount = 0.0f;
-#if FFX_DOF_OPTION_MAX_RING_MERGE_LOG > 0
-    if (kernel.rings >= 2u && kernel.centerCoc <= -FFX_DOF_IN_FOCUS_RADIUS)
-        mergeAmount = ffxDofRingMergeAmount(gather.cocSpread);
-#endif
-    ffxDofGatherInnerRings(gather, kernel, mergeAmount, constants);
+    // An equal-weight tile is all near or all far; the texel's own radius tells which.
+    FfxBoolean equalNear = kernel.centerCoc >= FFX_DOF_NEAR_THRESHOLD;
+    FFX_DOF_TAKE_IF(tileClass == FFX_DOF_TILE_CLASS_EQUAL && !equalNear)
+    ffxDofGatherKernel(gather, kernel, ffxDofMakeGatherParts(false, true, true), constants);
+    FFX_DOF_TAKE_IF(tileClass == FFX_DOF_TILE_CLASS_EQUAL && equalNear)
+    ffxDofGatherKernel(gather, kernel, ffxDofMakeGatherParts(true, false, true), constants);
+    FFX_DOF_TAKE_IF(tileClass == FFX_DOF_TILE_CLASS_FAR_ONLY)
+    ffxDofGatherKernel(gather, kernel, ffxDofMakeGatherParts(false, true, false), constants);
+    FFX_DOF_TAKE_IF(tileClass == FFX_DOF_TILE_CLASS_NEAR_ONLY)
+    ffxDofGatherKernel(gather, kernel, ffxDofMakeGatherParts(true, false, false), constants);
+    FFX_DOF_TAKE_IF(tileClass == FFX_DOF_TILE_CLASS_MIXED)
+    ffxDofGatherKernel(gather, kernel, ffxDofMakeGatherParts(true, true, false), constants);
     return ffxDofFinishGather(gather, kernel, result);
 }
 
-FFX_DOF_INLINE void ffxDofBlur(FfxUInt32x2 groupId, FfxUInt32 localIndex)
+FFX_DOF_INLINE void ffxDofBlurTile(FfxUInt32x2 groupId, FfxUInt32 localIndex, FfxFloat32x4 dilated, FfxUInt32 tileClass)
 {
     FfxDofConstants constants = ffxDofGetConstants();
     FfxUInt32x2 texel = groupId * FfxUInt32(FFX_DOF_TILE_SIZE) + ffxDofLocalCoord(localIndex);
     if (texel.x >= constants.halfSize.x || texel.y >= constants.halfSize.y)
         return;
-    FfxDofBlurResult result = ffxDofBlurTexel(texel, ffxDofLoadDilatedTile(groupId), constants);
+    FfxDofBlurResult result = ffxDofBlurTexel(texel, dilated, tileClass, constants);
     ffxDofStoreNearColor(texel, ffxDofRoundForPackedColor(result.nearColor));
     ffxDofStoreFarColor(texel, ffxDofRoundForPackedColor(result.farColor));
     ffxDofStoreLayerAlpha(texel, result.alpha);
+}
+
+FFX_DOF_INLINE void ffxDofBlur(FfxUInt32x2 groupId, FfxUInt32 localIndex)
+{
+    FfxFloat32x4 dilated = ffxDofLoadDilatedTile(groupId);
+    ffxDofBlurTile(groupId, localIndex, dilated, ffxDofClassifyTile(dilated));
 }
 
 #endif  // FFX_DOF_BLUR_H

@@ -45,7 +45,7 @@ FfxFloat32x2 ffxDofLoadTile(FfxUInt32x2 tile) { return texelFetch(ffxDofTiles, i
 
 #if FFX_DOF_USES_DILATED_TILES
 FFX_DOF_BINDING_SRV(FFX_DOF_SRV_DILATED_TILES) uniform texture2D ffxDofDilatedTiles;
-FfxFloat32x2 ffxDofLoadDilatedTile(FfxUInt32x2 tile) { return texelFetch(ffxDofDilatedTiles, ivec2(tile), 0).xy; }
+FfxFloat32x4 ffxDofLoadDilatedTile(FfxUInt32x2 tile) { return texelFetch(ffxDofDilatedTiles, ivec2(tile), 0); }
 #endif
 
 #if FFX_DOF_USES_LAYERS
@@ -127,10 +127,10 @@ void ffxDofStoreTile(FfxUInt32x2 tile, FfxFloat32x2 cocMinMax)
 #endif
 
 #if FFX_DOF_USES_RW_DILATED_TILES
-FFX_DOF_BINDING_UAV_IMAGE(FFX_DOF_UAV_DILATED_TILES, rg16f) uniform writeonly image2D ffxDofRwDilatedTiles;
-void ffxDofStoreDilatedTile(FfxUInt32x2 tile, FfxFloat32x2 farNear)
+FFX_DOF_BINDING_UAV_IMAGE(FFX_DOF_UAV_DILATED_TILES, rgba16f) uniform writeonly image2D ffxDofRwDilatedTiles;
+void ffxDofStoreDilatedTile(FfxUInt32x2 tile, FfxFloat32x4 farNearFootprint)
 {
-    imageStore(ffxDofRwDilatedTiles, ivec2(tile), vec4(farNear.x, farNear.y, 0.0f, 0.0f));
+    imageStore(ffxDofRwDilatedTiles, ivec2(tile), farNearFootprint);
 }
 #endif
 

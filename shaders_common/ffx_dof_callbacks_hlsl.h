@@ -71,8 +71,8 @@ FfxFloat32x2 ffxDofLoadTile(FfxUInt32x2 tile) { return ffxDofTiles.Load(int3(til
 
 #if FFX_DOF_USES_DILATED_TILES
 FFX_DOF_BINDING_SRV(FFX_DOF_SRV_DILATED_TILES)
-Texture2D<float2> ffxDofDilatedTiles : FFX_DOF_HLSL_REGISTER(t, FFX_DOF_SRV_DILATED_TILES);
-FfxFloat32x2 ffxDofLoadDilatedTile(FfxUInt32x2 tile) { return ffxDofDilatedTiles.Load(int3(tile, 0)); }
+Texture2D<float4> ffxDofDilatedTiles : FFX_DOF_HLSL_REGISTER(t, FFX_DOF_SRV_DILATED_TILES);
+FfxFloat32x4 ffxDofLoadDilatedTile(FfxUInt32x2 tile) { return ffxDofDilatedTiles.Load(int3(tile, 0)); }
 #endif
 
 #if FFX_DOF_USES_LAYERS
@@ -155,8 +155,11 @@ void ffxDofStoreTile(FfxUInt32x2 tile, FfxFloat32x2 cocMinMax) { ffxDofRwTiles[t
 
 #if FFX_DOF_USES_RW_DILATED_TILES
 FFX_DOF_BINDING_UAV_IMAGE(FFX_DOF_UAV_DILATED_TILES)
-RWTexture2D<float2> ffxDofRwDilatedTiles : FFX_DOF_HLSL_REGISTER(u, FFX_DOF_UAV_DILATED_TILES);
-void ffxDofStoreDilatedTile(FfxUInt32x2 tile, FfxFloat32x2 farNear) { ffxDofRwDilatedTiles[tile] = farNear; }
+RWTexture2D<float4> ffxDofRwDilatedTiles : FFX_DOF_HLSL_REGISTER(u, FFX_DOF_UAV_DILATED_TILES);
+void ffxDofStoreDilatedTile(FfxUInt32x2 tile, FfxFloat32x4 farNearFootprint)
+{
+    ffxDofRwDilatedTiles[tile] = farNearFootprint;
+}
 #endif
 
 #if FFX_DOF_USES_RW_LAYERS

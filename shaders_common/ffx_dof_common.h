@@ -69,6 +69,18 @@
 // (half-res px), inner rings are merged; from NOT_FLAT on they are not; in between both are mixed.
 #define FFX_DOF_RING_MERGE_FLAT_SPREAD 0.5f
 #define FFX_DOF_RING_MERGE_NOT_FLAT_SPREAD 1.0f
+// A blur tile whose kernels read only radii within this of each other (half-res px) takes the
+// equal-weight path, where every sample weighs what the texel's own radius gives. Small: bright
+// highlights a fraction of a pixel nearer than their background must keep their own radius
+// (0.5 cost the far-highlights scene 0.29 dB, 0.1 nothing; docs/technique.md).
+#define FFX_DOF_EQUAL_WEIGHT_SPREAD 0.1f
+
+// Tile classes of the blur pass (ffxDofClassifyTile), cheapest first.
+#define FFX_DOF_TILE_CLASS_COPY 0u       // every kernel is in focus: the texel is the far layer
+#define FFX_DOF_TILE_CLASS_EQUAL 1u      // all radii read are within FFX_DOF_EQUAL_WEIGHT_SPREAD
+#define FFX_DOF_TILE_CLASS_FAR_ONLY 2u   // no near-field radius reaches the tile
+#define FFX_DOF_TILE_CLASS_NEAR_ONLY 3u  // every radius read is near-field: no far buckets, no fill
+#define FFX_DOF_TILE_CLASS_MIXED 4u      // near and far field, hole filling
 
 // ---- CoC ----------------------------------------------------------------------------------------
 
@@ -218,6 +230,40 @@ FFX_DOF_INLINE FfxBoolean ffxDofTileReaches(FfxFloat32 radius, FfxFloat32 distan
 FFX_DOF_INLINE FfxInt32 ffxDofDilateTileRange(FfxFloat32 globalMaxRadius)
 {
     return FfxInt32(ceil((globalMaxRadius + FFX_DOF_DILATE_MARGIN) / FfxFloat32(FFX_DOF_TILE_SIZE)));
+}
+
+// Largest kernel radius of any texel of a tile whose dilated (far, near) range is `farNear`: a texel's
+// kernel is max(dilated near radius, |own radius|), and its own radius is within the range.
+FFX_DOF_INLINE FfxFloat32 ffxDofTileKernelRadius(FfxFloat32x2 farNear) { return max(max(farNear.y, -farNear.x), 0.0f); }
+
+// Distance (half-res px, from texel centre to texel centre) within which the blur kernels of a tile
+// whose largest kernel radius is `kernelRadius` can read a texel or a MIP texel covering it: the
+// radius, the sub-pixel origin and the nearest-texel rounding (FFX_DOF_DILATE_MARGIN covers both),
+// and two ring spacings for the extent of the MIP texels read (the MIP's texels are at most one
+// spacing wide, a merged ring's at most two).
+FFX_DOF_INLINE FfxFloat32 ffxDofKernelFootprintRadius(FfxFloat32 kernelRadius, FfxUInt32 maxRings)
+{
+    FfxFloat32 rings = FfxFloat32(clamp(maxRings, 1u, FfxUInt32(FFX_DOF_OPTION_MAX_RINGS)));
+    return kernelRadius + FFX_DOF_DILATE_MARGIN + 2.0f * max(kernelRadius / rings, 1.0f);
+}
+
+// Blur path of a tile from its DILATED_TILES texel (far, near, footprint min, footprint max).
+// Per tile, never per texel, so that a workgroup runs one path; every path gives what the mixed
+// path would give on that tile (the equal-weight path up to radii within the spread), so the
+// choice never shows as a tile border.
+FFX_DOF_INLINE FfxUInt32 ffxDofClassifyTile(FfxFloat32x4 dilated)
+{
+    if (ffxDofTileKernelRadius(FfxFloat32x2(dilated.x, dilated.y)) < FFX_DOF_IN_FOCUS_RADIUS)
+        return FFX_DOF_TILE_CLASS_COPY;
+    FfxBoolean allNear = dilated.z >= FFX_DOF_NEAR_THRESHOLD;
+    FfxBoolean allFar = dilated.w < FFX_DOF_NEAR_THRESHOLD;
+    if ((allNear || allFar) && dilated.w - dilated.z <= FFX_DOF_EQUAL_WEIGHT_SPREAD)
+        return FFX_DOF_TILE_CLASS_EQUAL;
+    if (dilated.y < FFX_DOF_NEAR_THRESHOLD)
+        return FFX_DOF_TILE_CLASS_FAR_ONLY;
+    if (allNear)
+        return FFX_DOF_TILE_CLASS_NEAR_ONLY;
+    return FFX_DOF_TILE_CLASS_MIXED;
 }
 
 // ---- Kernel shape: the only two functions that know it is circular -----------------------------

@@ -24,7 +24,7 @@ FfxFloat32 ffxDofLoadInputDepth(FfxUInt32x2 pixel);
 FfxFloat32x4 ffxDofLoadInputColor(FfxUInt32x2 pixel);
 FfxDofFloat3 ffxDofLoadColorMip(FfxInt32x2 texel, FfxUInt32 mip);
 FfxFloat32x2 ffxDofLoadTile(FfxUInt32x2 tile);
-FfxFloat32x2 ffxDofLoadDilatedTile(FfxUInt32x2 tile);
+FfxFloat32x4 ffxDofLoadDilatedTile(FfxUInt32x2 tile);
 FfxFloat32 ffxDofLoadCocMip(FfxInt32x2 texel, FfxUInt32 mip);
 FfxDofFloat3 ffxDofLoadNearColor(FfxInt32x2 texel);
 FfxDofFloat3 ffxDofLoadFarColor(FfxInt32x2 texel);
@@ -241,7 +241,8 @@ FFX_DOF_INLINE void ffxDofComposite(FfxUInt32x2 groupId, FfxUInt32 localIndex)
 
     FfxUInt32x2 quad = groupId * 16u + ffxDofLocalCoord(localIndex) * 2u;
     FfxFloat32x2 tile = ffxDofLoadTile(groupId);
-    FfxFloat32x2 dilated = ffxDofLoadDilatedTile(groupId);
+    FfxFloat32x4 dilatedTile = ffxDofLoadDilatedTile(groupId);
+    FfxFloat32x2 dilated = FfxFloat32x2(dilatedTile.x, dilatedTile.y);
     // Uniform per workgroup, so returning before the barriers is allowed.
     if (max(abs(tile.x), abs(tile.y)) < FFX_DOF_IN_FOCUS_RADIUS && dilated.y < FFX_DOF_NEAR_THRESHOLD)
     {

@@ -5,7 +5,10 @@
 // radius can reach the nearest pixel of the central tile. The distance is measured from the
 // central tile's rectangle, not its centre, so nothing is ever under-dilated.
 // Output (DILATED_TILES): x = most negative (far) radius, y = most positive (near) radius among the
-// tile itself and every tile that reaches it.
+// tile itself and every tile that reaches it; z, w = smallest and largest signed radius of every tile
+// the blur's kernels of this tile can read (ffxDofKernelFootprintRadius): the blur's tile
+// classification (ffxDofClassifyTile) needs them, since a tile that does not reach this one still has
+// its samples read (with zero reach) and so decides whether all sample weights can be equal.
 #ifndef FFX_DOF_DILATE_H
 #define FFX_DOF_DILATE_H
 
@@ -15,7 +18,7 @@
 FfxDofConstants ffxDofGetConstants();
 FfxFloat32 ffxDofLoadGlobalMaxRadius();
 FfxFloat32x2 ffxDofLoadTile(FfxUInt32x2 tile);
-void ffxDofStoreDilatedTile(FfxUInt32x2 tile, FfxFloat32x2 farNear);
+void ffxDofStoreDilatedTile(FfxUInt32x2 tile, FfxFloat32x4 farNearFootprint);
 #endif
 
 // The dilated (far, near) range of `centerTile` given the radius every tile spreads.
@@ -47,13 +50,41 @@ FFX_DOF_INLINE FfxFloat32x2 ffxDofDilateTile(FfxUInt32x2 centerTile, FfxUInt32x2
     return FfxFloat32x2(farCoc, nearCoc);
 }
 
+// The (smallest, largest) signed radius among the tiles within `footprintRadius` of `centerTile`.
+FFX_DOF_INLINE FfxFloat32x2 ffxDofFootprintRange(FfxUInt32x2 centerTile, FfxUInt32x2 tileCount,
+                                                 FfxFloat32 footprintRadius)
+{
+    FfxFloat32x2 range = ffxDofLoadTile(centerTile);
+    FfxInt32 tiles = FfxInt32(ceil(footprintRadius / FfxFloat32(FFX_DOF_TILE_SIZE)));
+    FfxInt32x2 center = FfxInt32x2(centerTile);
+    FfxInt32 firstY = max(center.y - tiles, 0);
+    FfxInt32 lastY = min(center.y + tiles, FfxInt32(tileCount.y) - 1);
+    FfxInt32 firstX = max(center.x - tiles, 0);
+    FfxInt32 lastX = min(center.x + tiles, FfxInt32(tileCount.x) - 1);
+    FFX_DOF_LOOP
+    for (FfxInt32 y = firstY; y <= lastY; ++y)
+    {
+        FFX_DOF_LOOP
+        for (FfxInt32 x = firstX; x <= lastX; ++x)
+        {
+            if (ffxDofTileGapDistance(FfxInt32x2(x, y) - center) > footprintRadius)
+                continue;
+            FfxFloat32x2 tile = ffxDofLoadTile(FfxUInt32x2(FfxUInt32(x), FfxUInt32(y)));
+            range = FfxFloat32x2(min(range.x, tile.x), max(range.y, tile.y));
+        }
+    }
+    return range;
+}
+
 FFX_DOF_INLINE void ffxDofDilate(FfxUInt32x2 groupId, FfxUInt32 localIndex)
 {
     FfxDofConstants constants = ffxDofGetConstants();
     FfxUInt32x2 tile = groupId * 8u + ffxDofLocalCoord(localIndex);
     if (tile.x >= constants.tileCount.x || tile.y >= constants.tileCount.y)
         return;
-    ffxDofStoreDilatedTile(tile, ffxDofDilateTile(tile, constants.tileCount, ffxDofLoadGlobalMaxRadius()));
+    FfxFloat32x2 farNear = ffxDofDilateTile(tile, constants.tileCount, ffxDofLoadGlobalMaxRadius());
+    FfxFloat32 footprint = ffxDofKernelFootprintRadius(ffxDofTileKernelRadius(farNear), constants.maxRings);
+    ffxDofStoreDilatedTile(tile, FfxFloat32x4(farNear, ffxDofFootprintRange(tile, constants.tileCount, footprint)));
 }
 
 #endif  // FFX_DOF_DILATE_H

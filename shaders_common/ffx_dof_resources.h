@@ -15,7 +15,8 @@
 //   COLOR_MIPS     half, FFX_DOF_OPTION_MAX_MIP levels, B10G11R11 float   bilateral color chain
 //   COC_MIPS       half, FFX_DOF_OPTION_MAX_MIP levels, R16 float         CoC chain, signed half-res px
 //   TILES          tiles, R16G16 float       (min, max) signed CoC per tile
-//   DILATED_TILES  tiles, R16G16 float       dilated (near, far) radii per tile
+//   DILATED_TILES  tiles, R16G16B16A16 float dilated (far, near) radii per tile, and the (min, max)
+//                                            radius of the tiles its blur kernels read
 //   NEAR_COLOR     half, B10G11R11 float     near-field color
 //   FAR_COLOR      half, B10G11R11 float     far-field color
 //   LAYER_ALPHA    half, R8G8 unorm          x: near-field opacity (coverage of the pixel by near-field

@@ -35,7 +35,7 @@ constexpr uint32_t kMipCount = 4;
 
 // The internal images, API-neutral: the one table both backends create from (each maps the format
 // to its API's enum). Names, formats and slots follow shaders_common/ffx_dof_resources.h.
-enum class InternalFormat : uint32_t { R11G11B10Float, R16Float, R16G16Float, R8G8Unorm };
+enum class InternalFormat : uint32_t { R11G11B10Float, R16Float, R16G16Float, R16G16B16A16Float, R8G8Unorm };
 
 enum class ImageExtent : uint32_t {
     Half,   // ceil(W / 2) x ceil(H / 2)
@@ -56,7 +56,7 @@ constexpr InternalImageSpec kInternalImages[] = {
      FFX_DOF_UAV_COLOR_MIP0},
     {"COC_MIPS", InternalFormat::R16Float, ImageExtent::Half, true, FFX_DOF_SRV_COC_MIPS, FFX_DOF_UAV_COC_MIP0},
     {"TILES", InternalFormat::R16G16Float, ImageExtent::Tiles, false, FFX_DOF_SRV_TILES, FFX_DOF_UAV_TILES},
-    {"DILATED_TILES", InternalFormat::R16G16Float, ImageExtent::Tiles, false, FFX_DOF_SRV_DILATED_TILES,
+    {"DILATED_TILES", InternalFormat::R16G16B16A16Float, ImageExtent::Tiles, false, FFX_DOF_SRV_DILATED_TILES,
      FFX_DOF_UAV_DILATED_TILES},
     {"NEAR_COLOR", InternalFormat::R11G11B10Float, ImageExtent::Half, false, FFX_DOF_SRV_NEAR_COLOR,
      FFX_DOF_UAV_NEAR_COLOR},

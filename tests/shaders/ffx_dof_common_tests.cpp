@@ -399,3 +399,48 @@ TEST_CASE("Walking a ring by its rotation step visits the sample positions", "[k
         }
     }
 }
+
+TEST_CASE("Blur tile classes from the dilated range and the kernel footprint", "[tiles]") {
+    // (far, near, footprint min, footprint max) -> class, each case named by what decides it.
+    struct Case {
+        glm::vec4 dilated;
+        FfxUInt32 expected;
+    };
+    const Case cases[] = {
+        {{-0.4f, 0.3f, -0.4f, 0.3f}, FFX_DOF_TILE_CLASS_COPY},        // every kernel below 0.5
+        {{-0.4f, 0.3f, -9.0f, 9.0f}, FFX_DOF_TILE_CLASS_COPY},        // non-reaching tiles do not matter
+        {{-6.0f, -5.95f, -6.0f, -5.95f}, FFX_DOF_TILE_CLASS_EQUAL},   // flat far field
+        {{-6.0f, -5.9f, -6.0f, -5.9f}, FFX_DOF_TILE_CLASS_EQUAL},     // exactly the spread
+        {{4.0f, 4.05f, 4.0f, 4.05f}, FFX_DOF_TILE_CLASS_EQUAL},       // flat near field
+        {{-6.0f, -5.95f, -6.0f, 0.0f}, FFX_DOF_TILE_CLASS_FAR_ONLY},  // an in-focus tile in the footprint
+        {{-6.0f, -3.0f, -6.0f, -3.0f}, FFX_DOF_TILE_CLASS_FAR_ONLY},  // far gradient
+        {{-6.0f, 0.4f, -6.0f, 8.0f}, FFX_DOF_TILE_CLASS_FAR_ONLY},    // near tiles read but not reaching
+        {{3.0f, 6.0f, 3.0f, 6.0f}, FFX_DOF_TILE_CLASS_NEAR_ONLY},     // near gradient
+        {{0.5f, 6.0f, 0.5f, 6.0f}, FFX_DOF_TILE_CLASS_NEAR_ONLY},     // near threshold is near
+        {{-6.0f, 6.0f, -6.0f, 6.0f}, FFX_DOF_TILE_CLASS_MIXED},       // near over far
+        {{0.0f, 4.0f, 0.0f, 4.0f}, FFX_DOF_TILE_CLASS_MIXED},         // near over in focus
+        {{0.45f, 0.5f, 0.45f, 0.5f}, FFX_DOF_TILE_CLASS_MIXED},       // within the spread but on both sides
+    };
+    for (const Case& c : cases) {
+        INFO("dilated (" << c.dilated.x << ", " << c.dilated.y << ", " << c.dilated.z << ", " << c.dilated.w << ")");
+        CHECK(ffxDofClassifyTile(c.dilated) == c.expected);
+    }
+}
+
+TEST_CASE("The kernel footprint covers the radius, the texel rounding and the MIP texels read", "[tiles]") {
+    for (FfxUInt32 quality : {1u, 4u, 10u, 32u, 100u}) {
+        for (float radius : {0.0f, 0.5f, 3.0f, 12.0f, 40.0f, 100.0f}) {
+            FfxUInt32 rings = std::max(ffxDofRingCount(radius, quality), 1u);
+            float spacing = radius / float(rings);
+            // The widest texel read: a ring-merged MIP of the spacing's level, with its diagonal.
+            float mipTexel = std::exp2(ffxDofMipForSpacing(spacing) + float(FFX_DOF_OPTION_MAX_RING_MERGE_LOG));
+            float farthestRead =
+                radius + 0.5f * std::sqrt(2.0f) * (FFX_DOF_JITTER_AMPLITUDE + 1.0f) + std::sqrt(2.0f) * 0.5f * mipTexel;
+            INFO("quality " << quality << ", radius " << radius);
+            CHECK(ffxDofKernelFootprintRadius(radius, quality) >= farthestRead);
+        }
+    }
+    CHECK(ffxDofTileKernelRadius(FfxFloat32x2(-3.0f, 5.0f)) == 5.0f);
+    CHECK(ffxDofTileKernelRadius(FfxFloat32x2(-7.0f, 5.0f)) == 7.0f);
+    CHECK(ffxDofTileKernelRadius(FfxFloat32x2(0.2f, 0.3f)) == 0.3f);
+}

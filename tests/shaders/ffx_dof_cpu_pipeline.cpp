@@ -41,7 +41,8 @@ struct State {
     const ffxdoftest::Scene* scene = nullptr;
     Image<glm::vec3> colorMips[FFX_DOF_OPTION_MAX_MIP];
     Image<float> cocMips[FFX_DOF_OPTION_MAX_MIP];
-    Image<glm::vec2> tiles, dilatedTiles, layerAlpha;
+    Image<glm::vec2> tiles, layerAlpha;
+    Image<glm::vec4> dilatedTiles;
     Image<glm::vec3> nearColor, farColor;
     Image<glm::vec4> output;
     std::atomic<uint32_t> globals{0};
@@ -113,8 +114,8 @@ void ffxDofStoreColorMip(FfxUInt32 mip, FfxUInt32x2 t, FfxDofFloat3 c) { g_state
 void ffxDofStoreCocMip(FfxUInt32 mip, FfxUInt32x2 t, FfxFloat32 c) { g_state->cocMips[mip].store(t.x, t.y, c); }
 FfxFloat32 ffxDofLoadGlobalMaxRadius() { return ffxDofAsFloat(g_state->globals.load()); }
 FfxFloat32x2 ffxDofLoadTile(FfxUInt32x2 t) { return g_state->tiles.at(int32_t(t.x), int32_t(t.y)); }
-void ffxDofStoreDilatedTile(FfxUInt32x2 t, FfxFloat32x2 v) { g_state->dilatedTiles.store(t.x, t.y, v); }
-FfxFloat32x2 ffxDofLoadDilatedTile(FfxUInt32x2 t) { return g_state->dilatedTiles.at(int32_t(t.x), int32_t(t.y)); }
+void ffxDofStoreDilatedTile(FfxUInt32x2 t, FfxFloat32x4 v) { g_state->dilatedTiles.store(t.x, t.y, v); }
+FfxFloat32x4 ffxDofLoadDilatedTile(FfxUInt32x2 t) { return g_state->dilatedTiles.at(int32_t(t.x), int32_t(t.y)); }
 FfxDofFloat3 ffxDofLoadColorMip(FfxInt32x2 t, FfxUInt32 mip) { return g_state->colorMips[mip].at(t.x, t.y); }
 FfxFloat32 ffxDofLoadCocMip(FfxInt32x2 t, FfxUInt32 mip) { return g_state->cocMips[mip].at(t.x, t.y); }
 void ffxDofStoreNearColor(FfxUInt32x2 t, FfxDofFloat3 c) { g_state->nearColor.store(t.x, t.y, c); }
@@ -169,8 +170,15 @@ std::vector<glm::vec4> runPipeline(const Scene& scene, const Settings& settings,
               groups(scene.height, FFX_DOF_DOWNSAMPLE_COLOR_GROUP_EXTENT), ffxDofDownsampleColor);
     runGroups(groups(k.tileCount.x, FFX_DOF_DILATE_GROUP_EXTENT), groups(k.tileCount.y, FFX_DOF_DILATE_GROUP_EXTENT),
               ffxDofDilate);
-    runGroups(groups(k.halfSize.x, FFX_DOF_BLUR_GROUP_EXTENT), groups(k.halfSize.y, FFX_DOF_BLUR_GROUP_EXTENT),
-              ffxDofBlur);
+    if (settings.forceMixedBlurPath) {
+        runGroups(groups(k.halfSize.x, FFX_DOF_BLUR_GROUP_EXTENT), groups(k.halfSize.y, FFX_DOF_BLUR_GROUP_EXTENT),
+                  [](FfxUInt32x2 group, FfxUInt32 local) {
+                      ffxDofBlurTile(group, local, ffxDofLoadDilatedTile(group), FFX_DOF_TILE_CLASS_MIXED);
+                  });
+    } else {
+        runGroups(groups(k.halfSize.x, FFX_DOF_BLUR_GROUP_EXTENT), groups(k.halfSize.y, FFX_DOF_BLUR_GROUP_EXTENT),
+                  ffxDofBlur);
+    }
     runGroups(groups(scene.width, FFX_DOF_COMPOSITE_GROUP_EXTENT), groups(scene.height, FFX_DOF_COMPOSITE_GROUP_EXTENT),
               ffxDofComposite);
 
@@ -181,6 +189,9 @@ std::vector<glm::vec4> runPipeline(const Scene& scene, const Settings& settings,
         layers->tilesY = k.tileCount.y;
         layers->tiles = state.tiles.texels;
         layers->dilatedTiles = state.dilatedTiles.texels;
+        layers->tileClasses.clear();
+        for (const glm::vec4& dilated : state.dilatedTiles.texels)
+            layers->tileClasses.push_back(ffxDofClassifyTile(dilated));
         layers->coc0 = state.cocMips[0].texels;
         layers->nearColor = state.nearColor.texels;
         layers->farColor = state.farColor.texels;

@@ -22,12 +22,16 @@ struct Settings {
     float cocLimit = 32.0f;
     uint32_t maxRings = 10;
     uint32_t frameIndex = 0;
+    // Runs every blur tile on the mixed path instead of its class's (ffxDofClassifyTile): the
+    // reference the cheaper paths are compared with.
+    bool forceMixedBlurPath = false;
 };
 
 struct Layers {
     uint32_t halfWidth = 0, halfHeight = 0, tilesX = 0, tilesY = 0;
     std::vector<glm::vec2> tiles;         // pass 1
-    std::vector<glm::vec2> dilatedTiles;  // pass 3
+    std::vector<glm::vec4> dilatedTiles;  // pass 3: far, near, footprint min, footprint max
+    std::vector<uint32_t> tileClasses;    // pass 4: FFX_DOF_TILE_CLASS_* of each tile (as classified)
     std::vector<float> coc0;              // MIP 0 of COC_MIPS
     std::vector<glm::vec3> nearColor, farColor;
     std::vector<glm::vec2> layerAlpha;

@@ -3,8 +3,8 @@
 // scenes state the blur they want.
 #include <catch2/catch.hpp>
 
+#include "ffx_dof_common.h"
 #include "ffx_dof_cpu_pipeline.h"
-#include "ffx_dof_resources.h"
 
 #include <algorithm>
 #include <cmath>
@@ -168,7 +168,7 @@ TEST_CASE("Dilation never under-dilates (brute force over tile pairs)", "[pipeli
     const int t = FFX_DOF_TILE_SIZE;
     for (int cy = 0; cy < int(layers.tilesY); ++cy)
         for (int cx = 0; cx < int(layers.tilesX); ++cx) {
-            glm::vec2 dilated = layers.dilatedTiles[size_t(cy) * layers.tilesX + size_t(cx)];
+            glm::vec4 dilated = layers.dilatedTiles[size_t(cy) * layers.tilesX + size_t(cx)];
             for (int ty = 0; ty < int(layers.tilesY); ++ty)
                 for (int tx = 0; tx < int(layers.tilesX); ++tx) {
                     glm::vec2 tile = layers.tiles[size_t(ty) * layers.tilesX + size_t(tx)];
@@ -179,8 +179,67 @@ TEST_CASE("Dilation never under-dilates (brute force over tile pairs)", "[pipeli
                     // A sample reaches up to radius + 0.5 (ffxDofReach).
                     if (tile.y > 0.0f && tile.y + 0.5f > gap) REQUIRE(dilated.y >= tile.y);
                     if (tile.x < 0.0f && -tile.x + 0.5f > gap) REQUIRE(dilated.x <= tile.x);
+                    // The footprint range holds every tile the tile's kernels can read.
+                    float kernelRadius = std::max({dilated.y, -dilated.x, 0.0f});
+                    if (gap <= ffxDofKernelFootprintRadius(kernelRadius, settings.maxRings)) {
+                        REQUIRE(dilated.z <= tile.x);
+                        REQUIRE(dilated.w >= tile.y);
+                    }
                 }
         }
+}
+
+TEST_CASE("Every blur tile class occurs, and each path gives what the mixed path gives", "[pipeline]") {
+    // Textured everywhere, so that a difference in weights shows in the colors.
+    Scene scene = makeScene(448, 224, kBackground, -6.0f);  // flat far field: equal weights
+    for (size_t i = 0; i < scene.color.size(); ++i) {
+        uint32_t h = uint32_t(i) * 2654435761u;
+        scene.color[i] = glm::vec4(float(h >> 24) / 255.0f, float((h >> 16) & 255u) / 255.0f, 0.5f, 1.0f);
+    }
+    auto setCoc = [&](const Rect& r, auto cocAt) {
+        for (int y = r.y0; y < r.y1; ++y)
+            for (int x = r.x0; x < r.x1; ++x) scene.depth[size_t(y) * scene.width + size_t(x)] = -cocAt(x, y);
+    };
+    setCoc(Rect{0, 0, 96, 224}, [](int x, int) { return -3.0f - 0.06f * float(x); });  // far gradient: far-only
+    setCoc(Rect{224, 0, 320, 112}, [](int, int) { return 4.0f; });                     // flat near: equal (near)
+    setCoc(Rect{224, 112, 320, 224}, [](int x, int) { return 3.0f + 0.03f * float(x - 224); });  // near-only
+    setCoc(Rect{336, 0, 448, 224}, [](int, int) { return 0.0f; });  // in focus: copy inside
+    Settings settings;
+    Layers classified, mixed;
+    std::vector<glm::vec4> out = ffxdoftest::runPipeline(scene, settings, &classified);
+    settings.forceMixedBlurPath = true;
+    ffxdoftest::runPipeline(scene, settings, &mixed);
+
+    uint32_t tilesOfClass[5] = {};
+    for (uint32_t tileClass : classified.tileClasses) ++tilesOfClass[tileClass];
+    INFO("tiles: copy " << tilesOfClass[FFX_DOF_TILE_CLASS_COPY] << ", equal " << tilesOfClass[FFX_DOF_TILE_CLASS_EQUAL]
+                        << ", far-only " << tilesOfClass[FFX_DOF_TILE_CLASS_FAR_ONLY] << ", near-only "
+                        << tilesOfClass[FFX_DOF_TILE_CLASS_NEAR_ONLY] << ", mixed "
+                        << tilesOfClass[FFX_DOF_TILE_CLASS_MIXED]);
+    for (uint32_t count : tilesOfClass) CHECK(count >= 2u);
+
+    // Far-only, near-only and copy leave out only sums that are zero on their tiles: bit-identical.
+    // Equal weights on a region of one radius: the same weights, up to float rounding.
+    float worstEqual = 0.0f;
+    size_t differingExact = 0;
+    for (uint32_t y = 0; y < classified.halfHeight; ++y)
+        for (uint32_t x = 0; x < classified.halfWidth; ++x) {
+            size_t i = size_t(y) * classified.halfWidth + x;
+            uint32_t tileClass =
+                classified.tileClasses[size_t(y / FFX_DOF_TILE_SIZE) * classified.tilesX + x / FFX_DOF_TILE_SIZE];
+            glm::vec3 nearDiff = glm::abs(classified.nearColor[i] - mixed.nearColor[i]);
+            glm::vec3 farDiff = glm::abs(classified.farColor[i] - mixed.farColor[i]);
+            glm::vec2 alphaDiff = glm::abs(classified.layerAlpha[i] - mixed.layerAlpha[i]);
+            float worst = std::max(
+                {nearDiff.x, nearDiff.y, nearDiff.z, farDiff.x, farDiff.y, farDiff.z, alphaDiff.x, alphaDiff.y});
+            if (tileClass == FFX_DOF_TILE_CLASS_EQUAL)
+                worstEqual = std::max(worstEqual, worst);
+            else if (tileClass != FFX_DOF_TILE_CLASS_MIXED)
+                differingExact += worst != 0.0f;
+        }
+    CHECK(differingExact == 0u);
+    CHECK(worstEqual <= 1e-4f);
+    for (const glm::vec4& pixel : out) REQUIRE(std::isfinite(pixel.x + pixel.y + pixel.z));
 }
 
 TEST_CASE("Tiles hold the CoC range of their pixels", "[pipeline]") {

@@ -16,6 +16,8 @@ constexpr VkFormat toVkFormat(InternalFormat format) {
             return VK_FORMAT_R16_SFLOAT;
         case InternalFormat::R16G16Float:
             return VK_FORMAT_R16G16_SFLOAT;
+        case InternalFormat::R16G16B16A16Float:
+            return VK_FORMAT_R16G16B16A16_SFLOAT;
         case InternalFormat::R8G8Unorm:
             return VK_FORMAT_R8G8_UNORM;
     }
