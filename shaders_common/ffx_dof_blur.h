@@ -9,8 +9,9 @@
 //   Far field (everything else): per ring a bucket, merged into the bucket of the outer rings with
 //   ffxDofMergeBuckets (a nearer inner ring occludes). A sample only counts within its own radius,
 //   so in-focus and foreground color never spreads into the far field beyond it.
-//   Hole filling: when the texel itself is near, the far-field samples are also averaged regardless
-//   of reach, and that average is the far color where no far-field sample reaches.
+//   Hole filling: when the texel itself is near, every far-field sample, whatever its reach, is
+//   also summed as the fill and added to the far color at the end, each weighing what a sample of
+//   the texel's own radius would: the hidden background is extrapolated from around the object.
 // Tile classes (ffxDofClassifyTile, from pass 3's dilated range and kernel footprint), each a path
 // that leaves out what cannot matter on that tile and gives what the mixed path would give:
 //   copy       every kernel is in focus (R < 0.5): the texel is the far layer;
@@ -228,10 +229,10 @@ FFX_DOF_INLINE FfxDofBlurResult ffxDofFinishGather(FfxDofGather gather, FfxDofKe
         result.nearColor = ffxDofToDofFloat3(gather.nearSum / gather.nearWeight);
         result.alpha.x = ffxDofNearOpacity(gather.nearWeight, kernel.spacing);
     }
-    if (gather.outer.weight > 0.0f)
-        result.farColor = ffxDofToDofFloat3(gather.outer.color / gather.outer.weight);
-    else if (kernel.centerIsNear && gather.fillCount > 0.0f)
-        result.farColor = ffxDofToDofFloat3(gather.fillSum / gather.fillCount);
+    FfxFloat32 fillWeight = kernel.centerIsNear ? ffxDofAreaWeight(abs(kernel.centerCoc)) : 0.0f;
+    FfxFloat32 farWeight = gather.outer.weight + gather.fillCount * fillWeight;
+    if (farWeight > 0.0f)
+        result.farColor = ffxDofToDofFloat3((gather.outer.color + gather.fillSum * fillWeight) / farWeight);
     else
         result.alpha.y = 0.0f;
     return result;
