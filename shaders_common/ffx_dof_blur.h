@@ -22,9 +22,9 @@
 //              tile that does not reach has zero reach, so counting it as far changes nothing);
 //   near-only  every radius read is near-field: no far buckets, no hole fill (no background sample);
 //   mixed      everything.
-// The paths are selected with FFX_DOF_TAKE_IF, a loop of zero or one pass: devices that run groups of
-// lanes in lock step under masks (lavapipe) execute both sides of an `if` even when the condition is
-// uniform, but leave a loop as soon as no lane is left in it, so only the tile's own path costs.
+// The class is uniform over the workgroup (loaded at the group's tile), so devices that run lanes in
+// lock step skip the paths not taken: lavapipe does for a uniform condition, while it runs both
+// sides of a branch whose condition differs between lanes (why the sample loop uses 0/1 shares).
 // Ring merging (FFX_DOF_OPTION_MAX_RING_MERGE_LOG > 0) is decided per texel, not per tile: the
 // outermost ring is gathered at full resolution first; where its radii are all within half a pixel
 // of the texel's own (a flat far field), inner rings are gathered from a coarser MIP, 2^log rings at
@@ -302,16 +302,16 @@ FFX_DOF_INLINE FfxDofBlurResult ffxDofBlurTexel(FfxUInt32x2 texel, FfxFloat32x4 
 
     // An equal-weight tile is all near or all far; the texel's own radius tells which.
     FfxBoolean equalNear = kernel.centerCoc >= FFX_DOF_NEAR_THRESHOLD;
-    FFX_DOF_TAKE_IF(tileClass == FFX_DOF_TILE_CLASS_EQUAL && !equalNear)
-    ffxDofGatherKernel(gather, kernel, ffxDofMakeGatherParts(false, true, true), constants);
-    FFX_DOF_TAKE_IF(tileClass == FFX_DOF_TILE_CLASS_EQUAL && equalNear)
-    ffxDofGatherKernel(gather, kernel, ffxDofMakeGatherParts(true, false, true), constants);
-    FFX_DOF_TAKE_IF(tileClass == FFX_DOF_TILE_CLASS_FAR_ONLY)
-    ffxDofGatherKernel(gather, kernel, ffxDofMakeGatherParts(false, true, false), constants);
-    FFX_DOF_TAKE_IF(tileClass == FFX_DOF_TILE_CLASS_NEAR_ONLY)
-    ffxDofGatherKernel(gather, kernel, ffxDofMakeGatherParts(true, false, false), constants);
-    FFX_DOF_TAKE_IF(tileClass == FFX_DOF_TILE_CLASS_MIXED)
-    ffxDofGatherKernel(gather, kernel, ffxDofMakeGatherParts(true, true, false), constants);
+    if (tileClass == FFX_DOF_TILE_CLASS_EQUAL && !equalNear)
+        ffxDofGatherKernel(gather, kernel, ffxDofMakeGatherParts(false, true, true), constants);
+    if (tileClass == FFX_DOF_TILE_CLASS_EQUAL && equalNear)
+        ffxDofGatherKernel(gather, kernel, ffxDofMakeGatherParts(true, false, true), constants);
+    if (tileClass == FFX_DOF_TILE_CLASS_FAR_ONLY)
+        ffxDofGatherKernel(gather, kernel, ffxDofMakeGatherParts(false, true, false), constants);
+    if (tileClass == FFX_DOF_TILE_CLASS_NEAR_ONLY)
+        ffxDofGatherKernel(gather, kernel, ffxDofMakeGatherParts(true, false, false), constants);
+    if (tileClass == FFX_DOF_TILE_CLASS_MIXED)
+        ffxDofGatherKernel(gather, kernel, ffxDofMakeGatherParts(true, true, false), constants);
     return ffxDofFinishGather(gather, kernel, result);
 }
 

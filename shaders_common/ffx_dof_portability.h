@@ -300,17 +300,6 @@ inline float ffxDofAsFloat(uint32_t bits)
 #define FfxDofFloat4 FfxFloat32x4
 #endif
 
-// A branch that devices running lanes in lock step under masks really skip. lavapipe executes both
-// sides of every `if`, even a uniform one, but leaves a loop once no lane is left in it; so a path
-// that only some workgroups take is written as a loop of zero or one pass. Same meaning everywhere:
-//     FFX_DOF_TAKE_IF(condition) statement;
-#define FFX_DOF_TAKE_IF_NAMED(condition, counter) \
-    FFX_DOF_LOOP                                  \
-    for (FfxUInt32 counter = (condition) ? 0u : 1u; counter < 1u; ++counter)
-#define FFX_DOF_TAKE_IF_JOIN(a, b) a##b
-#define FFX_DOF_TAKE_IF_LINE(condition, line) FFX_DOF_TAKE_IF_NAMED(condition, FFX_DOF_TAKE_IF_JOIN(ffxDofTaken, line))
-#define FFX_DOF_TAKE_IF(condition) FFX_DOF_TAKE_IF_LINE(condition, __LINE__)
-
 FFX_DOF_INLINE FfxFloat32 ffxDofMad(FfxFloat32 a, FfxFloat32 b, FfxFloat32 c) { return a * b + c; }
 FFX_DOF_INLINE FfxFloat32x3 ffxDofBroadcast3(FfxFloat32 x) { return FfxFloat32x3(x, x, x); }
 FFX_DOF_INLINE FfxDofFloat3 ffxDofBroadcastDof3(FfxDofFloat x) { return FfxDofFloat3(x, x, x); }
