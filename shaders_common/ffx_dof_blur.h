@@ -22,9 +22,10 @@
 //              tile that does not reach has zero reach, so counting it as far changes nothing);
 //   near-only  every radius read is near-field: no far buckets, no hole fill (no background sample);
 //   mixed      everything.
-// The class is uniform over the workgroup (loaded at the group's tile), so devices that run lanes in
-// lock step skip the paths not taken: lavapipe does for a uniform condition, while it runs both
-// sides of a branch whose condition differs between lanes (why the sample loop uses 0/1 shares).
+// The class is uniform over the workgroup (loaded at the group's tile), so GPUs skip the paths not
+// taken. lavapipe runs every `if` under lane masks, taken or not, but each path is made of loops
+// (rings, samples), and a loop ends once no lane is left in it: a path not taken costs one pass of
+// its loops, a few samples (docs/performance.md).
 // Ring merging (FFX_DOF_OPTION_MAX_RING_MERGE_LOG > 0) is decided per texel, not per tile: the
 // outermost ring is gathered at full resolution first; where its radii are all within half a pixel
 // of the texel's own (a flat far field), inner rings are gathered from a coarser MIP, 2^log rings at
