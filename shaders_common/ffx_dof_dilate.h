@@ -21,23 +21,29 @@ FfxFloat32x2 ffxDofLoadTile(FfxUInt32x2 tile);
 void ffxDofStoreDilatedTile(FfxUInt32x2 tile, FfxFloat32x4 farNearFootprint);
 #endif
 
+// The tiles within `range` tiles of `center` each way, clipped to the image: first..last inclusive.
+FFX_DOF_INLINE void ffxDofTileWindow(FfxInt32x2 center, FfxInt32 range, FfxUInt32x2 tileCount,
+                                     FFX_DOF_OUT(FfxInt32x2) first, FFX_DOF_OUT(FfxInt32x2) last)
+{
+    first = max(center - FfxInt32x2(range, range), FfxInt32x2(0, 0));
+    last = min(center + FfxInt32x2(range, range), FfxInt32x2(tileCount) - FfxInt32x2(1, 1));
+}
+
 // The dilated (far, near) range of `centerTile` given the radius every tile spreads.
 FFX_DOF_INLINE FfxFloat32x2 ffxDofDilateTile(FfxUInt32x2 centerTile, FfxUInt32x2 tileCount, FfxFloat32 globalMaxRadius)
 {
     FfxFloat32x2 own = ffxDofLoadTile(centerTile);
     FfxFloat32 farCoc = own.x;
     FfxFloat32 nearCoc = own.y;
-    FfxInt32 range = ffxDofDilateTileRange(globalMaxRadius);
     FfxInt32x2 center = FfxInt32x2(centerTile);
-    FfxInt32 firstY = max(center.y - range, 0);
-    FfxInt32 lastY = min(center.y + range, FfxInt32(tileCount.y) - 1);
-    FfxInt32 firstX = max(center.x - range, 0);
-    FfxInt32 lastX = min(center.x + range, FfxInt32(tileCount.x) - 1);
+    FfxInt32x2 first;
+    FfxInt32x2 last;
+    ffxDofTileWindow(center, ffxDofDilateTileRange(globalMaxRadius), tileCount, first, last);
     FFX_DOF_LOOP
-    for (FfxInt32 y = firstY; y <= lastY; ++y)
+    for (FfxInt32 y = first.y; y <= last.y; ++y)
     {
         FFX_DOF_LOOP
-        for (FfxInt32 x = firstX; x <= lastX; ++x)
+        for (FfxInt32 x = first.x; x <= last.x; ++x)
         {
             FfxFloat32x2 tile = ffxDofLoadTile(FfxUInt32x2(FfxUInt32(x), FfxUInt32(y)));
             FfxFloat32 distance = ffxDofTileGapDistance(FfxInt32x2(x, y) - center);
@@ -55,17 +61,15 @@ FFX_DOF_INLINE FfxFloat32x2 ffxDofFootprintRange(FfxUInt32x2 centerTile, FfxUInt
                                                  FfxFloat32 footprintRadius)
 {
     FfxFloat32x2 range = ffxDofLoadTile(centerTile);
-    FfxInt32 tiles = FfxInt32(ceil(footprintRadius / FfxFloat32(FFX_DOF_TILE_SIZE)));
     FfxInt32x2 center = FfxInt32x2(centerTile);
-    FfxInt32 firstY = max(center.y - tiles, 0);
-    FfxInt32 lastY = min(center.y + tiles, FfxInt32(tileCount.y) - 1);
-    FfxInt32 firstX = max(center.x - tiles, 0);
-    FfxInt32 lastX = min(center.x + tiles, FfxInt32(tileCount.x) - 1);
+    FfxInt32x2 first;
+    FfxInt32x2 last;
+    ffxDofTileWindow(center, FfxInt32(ceil(footprintRadius / FfxFloat32(FFX_DOF_TILE_SIZE))), tileCount, first, last);
     FFX_DOF_LOOP
-    for (FfxInt32 y = firstY; y <= lastY; ++y)
+    for (FfxInt32 y = first.y; y <= last.y; ++y)
     {
         FFX_DOF_LOOP
-        for (FfxInt32 x = firstX; x <= lastX; ++x)
+        for (FfxInt32 x = first.x; x <= last.x; ++x)
         {
             if (ffxDofTileGapDistance(FfxInt32x2(x, y) - center) > footprintRadius)
                 continue;
