@@ -3,7 +3,9 @@
 // One workgroup covers one tile (8 x 8 half-res px), one invocation per texel. Per texel:
 //   kernel radius R = max(dilated near radius of the tile, |own radius|); rings from R and the
 //   quality (ffxDofRingCount) -- per texel, so the ring count never changes at a tile border;
-//   a random sub-pixel kernel origin; rings gathered from the outside in.
+//   a random sub-pixel kernel origin; rings gathered from the outside in, ring k being every texel of
+//   the MIP read whose centre lies (k -+ 1/2) ring spacings from the origin, each read once (a
+//   one-texel source is read once by every texel whose kernel covers it: a flat bokeh disc).
 //   Near field (radius >= FFX_DOF_NEAR_THRESHOLD): scatter-as-gather, each sample weighted by reach
 //   and inverse area; opacity from the summed area weights (ffxDofNearOpacity).
 //   Far field (everything else): per ring a bucket, merged into the bucket of the outer rings with
@@ -91,56 +93,60 @@ struct FfxDofGatherParts
     FfxBoolean equalWeights;  // every radius read is the texel's own: no CoC reads
 };
 
-// Gathers ring `ringIndex` from MIP `mip`; each sample stands for `ringWeight` samples (a merged
-// ring stands for the rings inside it too) and the whole ring counts `presence` (0..1) times.
-// trackSpread (a literal at every call, so it compiles away) records the radius spread of the
-// samples for the ring-merge decision: only the outermost ring needs it. Hole filling needs both
+// Gathers rings firstRing..lastRing from MIP `mip`: every texel of that MIP whose centre lies in
+// the rings' annulus around the kernel origin, once. A sample weighs the texel's area (4^mip
+// half-res px^2), so rings from different MIPs add up, and the whole ring counts `presence` (0..1)
+// times. trackSpread (a literal at every call, so it compiles away) records the radius spread of
+// the samples for the ring-merge decision: only the outermost ring needs it. Hole filling needs both
 // fields (a near texel with background samples around it): only the mixed path has it.
 // The sample loop is written for devices that run both sides of every branch (lavapipe, which runs
-// groups of 8 lanes under masks even for a uniform condition): near and far samples are added with
-// 0/1 shares instead of a branch, the hole-fill average is kept for every texel (only a near texel
-// uses it), and positions stay in the sampled MIP's texel units (no int-to-float conversions).
-FFX_DOF_INLINE void ffxDofGatherRing(FFX_DOF_INOUT(FfxDofGather) gather, FfxDofKernel kernel, FfxUInt32 ringIndex,
-                                     FfxUInt32 mip, FfxFloat32 ringWeight, FfxFloat32 presence, FfxBoolean trackSpread,
+// groups of 8 lanes under masks): near and far samples are added with 0/1 shares instead of a
+// branch, and a step of the walk that lands on an empty row counts with weight 0 (`valid`) rather
+// than looping on to the next row.
+FFX_DOF_INLINE void ffxDofGatherRing(FFX_DOF_INOUT(FfxDofGather) gather, FfxDofKernel kernel, FfxUInt32 firstRing,
+                                     FfxUInt32 lastRing, FfxUInt32 mip, FfxFloat32 presence, FfxBoolean trackSpread,
                                      FfxDofGatherParts parts, FfxDofConstants constants)
 {
     FfxBoolean holeFill = parts.nearField && parts.farField;
-    FfxFloat32 sampleWeight = ringWeight * presence;
-    FfxUInt32 sampleCount = ffxDofRingSampleCount(ringIndex);
+    FfxFloat32 texelSize = FfxFloat32(1u << mip);
+    FfxFloat32 sampleWeight = texelSize * texelSize * presence;
     FfxDofBucket ringBucket = ffxDofEmptyBucket();
     FfxFloat32x3 ringFillSum = FfxFloat32x3(0.0f, 0.0f, 0.0f);
     FfxFloat32 ringFillCount = 0.0f;
-    FfxFloat32 texelSize = FfxFloat32(1u << mip);
+    FfxFloat32 sampleCount = 0.0f;
     FfxFloat32 mipScale = 1.0f / texelSize;
-    // In units of MIP texels: sample positions, and the kernel centre less half a texel so that
-    // (texel - centre) is the offset of the texel's centre.
-    FfxFloat32x2 origin = kernel.origin * mipScale;
+    FfxFloat32 spacing = kernel.spacing * mipScale;
+    // In units of MIP texels: the kernel centre less half a texel, so that (texel - centre) is the
+    // offset of the texel's centre.
     FfxFloat32x2 centerToCorner = kernel.center * mipScale - FfxFloat32x2(0.5f, 0.5f);
     FfxFloat32x2 lastTexel = FfxFloat32x2(ffxDofMipSize(constants.halfSize, mip) - FfxUInt32x2(1u, 1u));
-    FfxFloat32x2 offset = ffxDofRingSamplePosition(ringIndex, 0u) * (kernel.spacing * mipScale);
-    FfxFloat32x2 step = ffxDofRingSampleStep(ringIndex);
+    FfxDofAnnulus annulus = ffxDofMakeAnnulus(kernel.origin * mipScale, ffxDofRingInnerRadius(firstRing, spacing),
+                                              ffxDofRingInnerRadius(lastRing + 1u, spacing));
+    FfxDofAnnulusWalk walk = ffxDofAnnulusBegin(annulus);
     FFX_DOF_LOOP
-    for (FfxUInt32 sampleIndex = 0u; sampleIndex < sampleCount; ++sampleIndex)
+    while (ffxDofAnnulusRowsLeft(annulus, walk))
     {
-        FfxFloat32x2 sampleTexel = clamp(floor(origin + offset), FfxFloat32x2(0.0f, 0.0f), lastTexel);
-        offset = FfxFloat32x2(offset.x * step.x - offset.y * step.y, offset.x * step.y + offset.y * step.x);
+        FfxFloat32x2 sampleTexel = clamp(walk.texel, FfxFloat32x2(0.0f, 0.0f), lastTexel);
+        FfxFloat32 valid = ffxDofAnnulusValid(walk) ? 1.0f : 0.0f;
+        walk = ffxDofAnnulusNext(annulus, walk);
         FfxFloat32x3 color = ffxDofToFloat32x3(ffxDofLoadColorMip(FfxInt32x2(sampleTexel), mip));
         FfxFloat32 coc = kernel.centerCoc;
         if (!parts.equalWeights)
             coc = ffxDofLoadCocMip(FfxInt32x2(sampleTexel), mip);
         if (trackSpread)
-            gather.cocSpread = max(gather.cocSpread, abs(coc - kernel.centerCoc));
-        // Reach is judged from the centre of the texel actually read, not from the ring: the
-        // ring distance would let a texel spread half a texel beyond its radius.
+            gather.cocSpread = max(gather.cocSpread, abs(coc - kernel.centerCoc) * valid);
+        // Reach is judged from the centre of the texel actually read (at the image border, the
+        // clamped one).
         FfxFloat32x2 toTexel = sampleTexel - centerToCorner;
         FfxFloat32 distance = sqrt(dot(toTexel, toTexel)) * texelSize;
         // Near and far samples weigh alike (reach times inverse area).
         FfxFloat32 absCoc = abs(coc);
         FfxFloat32 reach = ffxDofReach(absCoc, distance);
+        reach *= valid;
         FfxFloat32 weight = reach * ffxDofAreaWeight(absCoc) * sampleWeight;
-        FfxFloat32 farShare = coc >= FFX_DOF_NEAR_THRESHOLD ? 0.0f : 1.0f;
+        FfxFloat32 farShare = coc >= FFX_DOF_NEAR_THRESHOLD ? 0.0f : valid;
         if (!parts.nearField)
-            farShare = 1.0f;
+            farShare = valid;
         if (!parts.farField)
             farShare = 0.0f;
         FfxFloat32 farWeight = weight * farShare;
@@ -162,25 +168,22 @@ FFX_DOF_INLINE void ffxDofGatherRing(FFX_DOF_INOUT(FfxDofGather) gather, FfxDofK
             ringFillSum += color * farShare;
             ringFillCount += farShare;
         }
+        sampleCount += valid;
     }
     // A ring of presence 0 leaves everything as it was (no weight, no occlusion).
     ringBucket.coverage *= presence;
-    ringBucket.sampleCount = FfxFloat32(sampleCount);
-    gather.fillSum += ringFillSum * presence;
-    gather.fillCount += ringFillCount * presence;
+    ringBucket.sampleCount = sampleCount;
+    gather.fillSum += ringFillSum * sampleWeight;
+    gather.fillCount += ringFillCount * sampleWeight;
     if (parts.farField)
         gather.outer = ffxDofMergeBuckets(gather.outer, ringBucket, kernel.spacing);
 }
 
-// Weight of each sample of ring `last` when it stands for rings first..last (6 * ring samples each).
-FFX_DOF_INLINE FfxFloat32 ffxDofMergedRingWeight(FfxUInt32 first, FfxUInt32 last)
-{
-    return FfxFloat32((first + last) * (last - first + 1u)) / FfxFloat32(2u * last);
-}
-
 // Gathers every ring inside the outermost one, from the outside in. Rings 1 .. rings - 1 form groups
 // of 2^FFX_DOF_OPTION_MAX_RING_MERGE_LOG; a group is gathered either ring by ring at the kernel's MIP
-// (full) or as its outermost ring from a MIP that much coarser (merged). mergeAmount (0..1) merges
+// (full) or in one walk over the group's annulus from a MIP that much coarser (merged). A border
+// between the two levels is judged by each side's own texel centres, so there a one-texel source
+// can be read twice or not at all (docs/technique.md, Kernel shape and walk). mergeAmount (0..1) merges
 // the groups one after the other, from the outside in, and mixes the one group it is part-way
 // through: that group's merged ring with presence f and its full rings with presence 1 - f. So the
 // result is continuous in mergeAmount, and a texel walks at most one ring more than the full path.
@@ -209,9 +212,8 @@ FFX_DOF_INLINE void ffxDofGatherInnerRings(FFX_DOF_INOUT(FfxDofGather) gather, F
         FfxBoolean mergedWalk = walk < mergedWalks;
         FfxUInt32 ring = mergedWalk ? topRing : topRing + mergedWalks - walk;
         FfxUInt32 mip = min(kernel.baseMip + (mergedWalk ? mergeLog : 0u), FfxUInt32(FFX_DOF_OPTION_MAX_MIP - 1));
-        FfxFloat32 ringWeight = mergedWalk ? ffxDofMergedRingWeight(first, topRing) : 1.0f;
         FfxFloat32 presence = mergedWalk ? merged : 1.0f - merged;
-        ffxDofGatherRing(gather, kernel, ring, mip, ringWeight, presence, false, parts, constants);
+        ffxDofGatherRing(gather, kernel, mergedWalk ? first : ring, ring, mip, presence, false, parts, constants);
         ++walk;
         if (walk == walks)
         {
@@ -228,7 +230,7 @@ FFX_DOF_INLINE FfxDofBlurResult ffxDofFinishGather(FfxDofGather gather, FfxDofKe
     if (gather.nearWeight > 0.0f)
     {
         result.nearColor = ffxDofToDofFloat3(gather.nearSum / gather.nearWeight);
-        result.alpha.x = ffxDofNearOpacity(gather.nearWeight, kernel.spacing);
+        result.alpha.x = ffxDofNearOpacity(gather.nearWeight);
     }
     FfxFloat32 fillWeight = kernel.centerIsNear ? ffxDofAreaWeight(abs(kernel.centerCoc)) : 0.0f;
     FfxFloat32 farWeight = gather.outer.weight + gather.fillCount * fillWeight;
@@ -248,7 +250,7 @@ FFX_DOF_INLINE void ffxDofGatherKernel(FFX_DOF_INOUT(FfxDofGather) gather, FfxDo
                                        FfxDofConstants constants)
 {
     FfxBoolean trackSpread = !parts.equalWeights;
-    ffxDofGatherRing(gather, kernel, kernel.rings, kernel.baseMip, 1.0f, 1.0f, trackSpread, parts, constants);
+    ffxDofGatherRing(gather, kernel, kernel.rings, kernel.rings, kernel.baseMip, 1.0f, trackSpread, parts, constants);
     FfxFloat32 mergeAmount = 0.0f;
 #if FFX_DOF_OPTION_MAX_RING_MERGE_LOG > 0
     if (parts.equalWeights && kernel.rings >= 2u && kernel.centerCoc <= -FFX_DOF_IN_FOCUS_RADIUS)

@@ -238,9 +238,9 @@ FFX_DOF_INLINE FfxFloat32 ffxDofTileKernelRadius(FfxFloat32x2 farNear) { return 
 
 // Distance (half-res px, from texel centre to texel centre) within which the blur kernels of a tile
 // whose largest kernel radius is `kernelRadius` can read a texel or a MIP texel covering it: the
-// radius, the sub-pixel origin and the nearest-texel rounding (FFX_DOF_DILATE_MARGIN covers both),
-// and two ring spacings for the extent of the MIP texels read (the MIP's texels are at most one
-// spacing wide, a merged ring's at most two).
+// radius, the sub-pixel origin (FFX_DOF_DILATE_MARGIN covers it), and two ring spacings for the
+// extent of the MIP texels read (ffxDofMipForSpacing's texels are at most 1.41 spacings wide, a
+// merged ring's 2.83: half a diagonal is at most 2 spacings).
 FFX_DOF_INLINE FfxFloat32 ffxDofKernelFootprintRadius(FfxFloat32 kernelRadius, FfxUInt32 maxRings)
 {
     FfxFloat32 rings = FfxFloat32(clamp(maxRings, 1u, FfxUInt32(FFX_DOF_OPTION_MAX_RINGS)));
@@ -266,27 +266,105 @@ FFX_DOF_INLINE FfxUInt32 ffxDofClassifyTile(FfxFloat32x4 dilated)
     return FFX_DOF_TILE_CLASS_MIXED;
 }
 
-// ---- Kernel shape: the only two functions that know it is circular -----------------------------
+// ---- Kernel shape: the only function that knows it is circular ---------------------------------
 
-// Samples in ring `ring` (ring 0 is the centre sample).
-FFX_DOF_INLINE FfxUInt32 ffxDofRingSampleCount(FfxUInt32 ring) { return ring == 0u ? 1u : 6u * ring; }
-
-// Offset of sample `sampleIndex` of ring `ring`, in units of the ring spacing (so ring r lies at
-// distance r). Odd rings are turned by half a sample so that neighbouring rings interleave.
-FFX_DOF_INLINE FfxFloat32x2 ffxDofRingSamplePosition(FfxUInt32 ring, FfxUInt32 sampleIndex)
+// Half the width of the kernel's row `dy` from its centre, for a kernel of `radius` (same units): a
+// texel is in the kernel when its centre lies less than this far from the centre horizontally.
+// Another bokeh shape replaces this function (the row of a convex polygon is one interval too).
+FFX_DOF_INLINE FfxFloat32 ffxDofKernelRowHalfWidth(FfxFloat32 radius, FfxFloat32 dy)
 {
-    FfxFloat32 angle = (FfxFloat32(sampleIndex) + 0.5f * FfxFloat32(ring & 1u)) *
-                       (6.28318530718f / FfxFloat32(ffxDofRingSampleCount(ring)));
-    return FfxFloat32x2(cos(angle), sin(angle)) * FfxFloat32(ring);
+    return sqrt(max(radius * radius - dy * dy, 0.0f));
 }
 
-// Rotation (cos, sin) from sample i to sample i + 1 of ring `ring`: the blur walks a ring by
-// rotating the previous offset, with no transcendental per sample. A non-circular shape replaces
-// this together with the two functions above.
-FFX_DOF_INLINE FfxFloat32x2 ffxDofRingSampleStep(FfxUInt32 ring)
+// ---- Kernel walk: every texel of a ring read once -----------------------------------------------
+//
+// Ring k of a kernel whose rings are s apart holds the texels whose centres lie at [(k - 1/2) s,
+// (k + 1/2) s) from the kernel origin (ring 0: [0, s / 2)), and the blur reads each of them once,
+// walking rows. (Points on a circle read from the nearest texel hit a one-texel source 0, 1 or 2
+// times depending on the output texel: a dotted disc, issue 6.)
+
+// The texels (first, last) of a row or column whose centres lie less than `halfWidth` from `center`;
+// in texels, texel i spanning [i, i + 1). first > last when there are none. Strict on both sides,
+// so two rings that share a border share no texel and miss none.
+FFX_DOF_INLINE FfxFloat32x2 ffxDofTexelSpan(FfxFloat32 center, FfxFloat32 halfWidth)
 {
-    FfxFloat32 angle = 6.28318530718f / FfxFloat32(ffxDofRingSampleCount(ring));
-    return FfxFloat32x2(cos(angle), sin(angle));
+    return FfxFloat32x2(floor(center - 0.5f - halfWidth) + 1.0f, ceil(center - 0.5f + halfWidth) - 1.0f);
+}
+
+// Inner radius of ring `ring` for rings `spacing` apart; the outer radius of ring k is the inner
+// radius of ring k + 1, the same expression, so that the rings tile the kernel exactly.
+FFX_DOF_INLINE FfxFloat32 ffxDofRingInnerRadius(FfxUInt32 ring, FfxFloat32 spacing)
+{
+    return max(FfxFloat32(ring) - 0.5f, 0.0f) * spacing;
+}
+
+// The texels whose centres lie at [innerRadius, outerRadius) from `origin` (all in texels of one
+// MIP level), walked row by row: what does not change during the walk ...
+struct FfxDofAnnulus
+{
+    FfxFloat32x2 origin;
+    FfxFloat32 innerRadius;
+    FfxFloat32 outerRadius;
+    FfxFloat32 lastRow;
+};
+// ... and the walk's position.
+struct FfxDofAnnulusWalk
+{
+    FfxFloat32x2 texel;    // the current position, a texel of the annulus while texel.x <= rowLast
+    FfxFloat32 rowLast;    // last texel of the current row
+    FfxFloat32 holeFirst;  // first texel of the row inside the inner radius
+    FfxFloat32 holeEnd;    // first texel after them (holeFirst when the row has none)
+};
+
+FFX_DOF_INLINE FfxDofAnnulus ffxDofMakeAnnulus(FfxFloat32x2 origin, FfxFloat32 innerRadius, FfxFloat32 outerRadius)
+{
+    FfxDofAnnulus annulus;
+    annulus.origin = origin;
+    annulus.innerRadius = innerRadius;
+    annulus.outerRadius = outerRadius;
+    annulus.lastRow = ffxDofTexelSpan(origin.y, outerRadius).y;
+    return annulus;
+}
+
+// Row `y` of the annulus, positioned on its first texel (past its last one when it has none).
+FFX_DOF_INLINE FfxDofAnnulusWalk ffxDofAnnulusRow(FfxDofAnnulus annulus, FfxFloat32 y)
+{
+    FfxFloat32 dy = y + 0.5f - annulus.origin.y;
+    FfxFloat32x2 row = ffxDofTexelSpan(annulus.origin.x, ffxDofKernelRowHalfWidth(annulus.outerRadius, dy));
+    FfxFloat32x2 hole = ffxDofTexelSpan(annulus.origin.x, ffxDofKernelRowHalfWidth(annulus.innerRadius, dy));
+    FfxDofAnnulusWalk walk;
+    walk.rowLast = row.y;
+    walk.holeFirst = hole.x;
+    // An empty hole (first > last, by 2 where the origin lies exactly on a texel centre) must not
+    // send the walk backwards.
+    walk.holeEnd = max(hole.y + 1.0f, hole.x);
+    walk.texel = FfxFloat32x2(row.x == walk.holeFirst ? walk.holeEnd : row.x, y);
+    return walk;
+}
+
+FFX_DOF_INLINE FfxDofAnnulusWalk ffxDofAnnulusBegin(FfxDofAnnulus annulus)
+{
+    return ffxDofAnnulusRow(annulus, ffxDofTexelSpan(annulus.origin.y, annulus.outerRadius).x);
+}
+
+// Whether the walk has rows left. Its position may still be no texel: a row at the top or bottom,
+// or a row of a thin annulus, can be empty, and a walk step finds one row, never loops over rows
+// (ffxDofAnnulusValid says).
+FFX_DOF_INLINE FfxBoolean ffxDofAnnulusRowsLeft(FfxDofAnnulus annulus, FfxDofAnnulusWalk walk)
+{
+    return walk.texel.y <= annulus.lastRow;
+}
+FFX_DOF_INLINE FfxBoolean ffxDofAnnulusValid(FfxDofAnnulusWalk walk) { return walk.texel.x <= walk.rowLast; }
+
+// One step: the next texel of the row, else the first of the next row. Straight-line, the next row
+// computed and selected: a loop over empty rows (or a branch, on devices that run both sides of
+// every branch in lock step, like lavapipe) cost more than the row itself.
+FFX_DOF_INLINE FfxDofAnnulusWalk ffxDofAnnulusNext(FfxDofAnnulus annulus, FfxDofAnnulusWalk walk)
+{
+    FfxFloat32 x = walk.texel.x + 1.0f;
+    walk.texel.x = x == walk.holeFirst ? walk.holeEnd : x;
+    FfxDofAnnulusWalk next = ffxDofAnnulusRow(annulus, walk.texel.y + 1.0f);
+    return walk.texel.x > walk.rowLast ? next : walk;
 }
 
 // ---- Kernel size --------------------------------------------------------------------------------
@@ -301,11 +379,14 @@ FFX_DOF_INLINE FfxUInt32 ffxDofRingCount(FfxFloat32 radius, FfxUInt32 maxRings)
     return min(FfxUInt32(ceil(radius)), limit);
 }
 
-// MIP level to sample when samples are `spacing` half-res px apart: the finest level whose texels
-// are no larger than the spacing.
+// MIP level to read when rings are `spacing` half-res px apart: the level whose texel size is nearest
+// the spacing in log2, so the spacing is 0.71 to 1.41 texels (from 0.5 at level 0). The blur reads
+// every texel of its kernel, pi ((rings + 1/2) s / texel)^2 of them, where 6k points per ring cost
+// 3 rings^2: rounding the level keeps the two about equal (pi E[(s / texel)^2] = 3.4 for a
+// log-uniform spacing); the finest level no larger than the spacing cost up to 4 times as much.
 FFX_DOF_INLINE FfxFloat32 ffxDofMipForSpacing(FfxFloat32 spacing)
 {
-    return clamp(floor(log2(max(spacing, 1.0f))), 0.0f, FfxFloat32(FFX_DOF_OPTION_MAX_MIP - 1));
+    return clamp(floor(log2(max(spacing, 1.0f)) + 0.5f), 0.0f, FfxFloat32(FFX_DOF_OPTION_MAX_MIP - 1));
 }
 
 // Random sub-pixel kernel origin for one pixel and frame, in half-res px.
@@ -404,15 +485,13 @@ FFX_DOF_INLINE FfxDofBucket ffxDofMergeBuckets(FfxDofBucket outer, FfxDofBucket 
     return merged;
 }
 
-// Near-field opacity from the area weights of the near samples that reach the pixel (scatter as
-// gather): each sample stands for the kernel area it samples and spreads over its own disc. Ring k
-// holds 6k samples on an annulus of width `ringSpacing` s at radius k s (area 2 pi k s^2), so every
-// sample stands for pi s^2 / 3, and opacity = sum(area weight) * s^2 / 3. Normalising by the sample
-// count instead would count the outer ring as if its samples reached fully, where a region of
-// exactly the kernel radius reaches it by half, so a solid near region would stay ~0.91 opaque.
-FFX_DOF_INLINE FfxFloat32 ffxDofNearOpacity(FfxFloat32 nearWeight, FfxFloat32 ringSpacing)
+// Near-field opacity from the weights of the near samples that reach the pixel (scatter as gather).
+// A sample weighs reach * ffxDofAreaWeight(radius) * the area of the texel read (4^mip half-res
+// px^2), so the sum is the area the near field covers in the kernel over its discs' areas / pi: a
+// solid near region of the kernel's radius R sums to pi R^2 / R^2 = pi, opacity 1.
+FFX_DOF_INLINE FfxFloat32 ffxDofNearOpacity(FfxFloat32 nearWeight)
 {
-    return ffxDofSaturate(nearWeight * ringSpacing * ringSpacing * (1.0f / 3.0f));
+    return ffxDofSaturate(nearWeight * (1.0f / 3.14159265359f));
 }
 
 // ---- Post-filter and composition ----------------------------------------------------------------

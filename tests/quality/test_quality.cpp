@@ -65,13 +65,7 @@ TEST_CASE("bokeh of a single far point: disc radius", "[quality][vulkan]") {
     CHECK(bokeh.ours.radiusOk);
 }
 
-// KNOWN DEFECT, reported on issue 6 and in docs/quality.md: the disc is not yet flat (0.13 vs 0.08) and
-// loses about 13% of the point's energy (limit 5%). Causes traced so far: ring samples read the nearest
-// texel, so a one-texel source is hit 0..2 times per output texel (ripple), and the composite's median
-// removes the hot spot the centre sample leaves. Bilinear-weighted samples pass this check but cost 2-4x
-// in the blur and lose 0.08 dB in the floor scene's halo band. "[!mayfail]" keeps the check running and
-// its figures printed in every test run without failing CI; remove the tag once it passes.
-TEST_CASE("bokeh of a single far point: flatness and energy", "[quality][vulkan][!mayfail]") {
+TEST_CASE("bokeh of a single far point: flatness and energy", "[quality][vulkan]") {
     vkrun::Device& device = sharedDevice();
     const quality::PointBokeh bokeh = quality::measurePointBokeh(device);
     INFO("ffx-dof: " << bokeh.ours.summary);

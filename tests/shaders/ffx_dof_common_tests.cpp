@@ -7,7 +7,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <random>
+#include <set>
+#include <utility>
 #include <vector>
 
 namespace {
@@ -100,31 +103,154 @@ TEST_CASE("Ring merge amount: merged when flat, full when not, continuous in bet
         CHECK(std::abs(ffxDofRingMergeAmount(spread + 0.01f) - ffxDofRingMergeAmount(spread)) <= 0.0201f);
 }
 
-TEST_CASE("Ring geometry: counts, circularity, even spacing", "[kernel]") {
-    CHECK(ffxDofRingSampleCount(0) == 1u);
-    CHECK(ffxDofRingSamplePosition(0, 0) == FfxFloat32x2(0.0f, 0.0f));
-    for (uint32_t ring = 1; ring <= 32; ++ring) {
-        uint32_t count = ffxDofRingSampleCount(ring);
-        // About one sample per unit of circumference (2 * pi * ring / count near 1).
-        CHECK(2.0f * kPi * float(ring) / float(count) == Approx(1.047f).epsilon(0.01));
-        FfxFloat32x2 sum(0.0f);
-        std::vector<float> angles;
-        for (uint32_t j = 0; j < count; ++j) {
-            FfxFloat32x2 p = ffxDofRingSamplePosition(ring, j);
-            REQUIRE(std::hypot(p.x, p.y) == Approx(float(ring)).epsilon(1e-5));
-            sum += p;
-            angles.push_back(std::atan2(p.y, p.x));
-        }
-        // Centred and evenly spaced: the positions sum to zero and every angular gap is equal.
-        CHECK(std::hypot(sum.x, sum.y) < 1e-3f * float(ring * count));
-        std::sort(angles.begin(), angles.end());
-        angles.push_back(angles.front() + 2.0f * kPi);
-        for (size_t j = 1; j < angles.size(); ++j)
-            REQUIRE(angles[j] - angles[j - 1] == Approx(2.0f * kPi / float(count)).epsilon(1e-3));
+namespace {
+
+// The texels a walk of the annulus visits, in order; fails on a runaway walk.
+std::vector<std::pair<int, int>> walkAnnulus(FfxFloat32x2 origin, float innerRadius, float outerRadius) {
+    const FfxDofAnnulus annulus = ffxDofMakeAnnulus(origin, innerRadius, outerRadius);
+    std::vector<std::pair<int, int>> texels;
+    int steps = 0;
+    for (FfxDofAnnulusWalk walk = ffxDofAnnulusBegin(annulus); ffxDofAnnulusRowsLeft(annulus, walk);
+         walk = ffxDofAnnulusNext(annulus, walk)) {
+        if (ffxDofAnnulusValid(walk)) texels.emplace_back(int(walk.texel.x), int(walk.texel.y));
+        REQUIRE(++steps < 100000);
     }
-    // Odd rings are turned by half a sample relative to even ones.
-    CHECK(std::atan2(ffxDofRingSamplePosition(1, 0).y, ffxDofRingSamplePosition(1, 0).x) == Approx(kPi / 6.0f));
-    CHECK(ffxDofRingSamplePosition(2, 0).y == Approx(0.0f).margin(1e-6));
+    return texels;
+}
+
+// Distance from `origin` to the centre of texel (x, y), in double precision.
+double centreDistance(FfxFloat32x2 origin, int x, int y) {
+    return std::hypot(x + 0.5 - double(origin.x), y + 0.5 - double(origin.y));
+}
+
+}  // namespace
+
+TEST_CASE("Kernel row half-width is the circle's", "[kernel]") {
+    CHECK(ffxDofKernelRowHalfWidth(5.0f, 0.0f) == 5.0f);
+    CHECK(ffxDofKernelRowHalfWidth(5.0f, 3.0f) == Approx(4.0f));
+    CHECK(ffxDofKernelRowHalfWidth(5.0f, -4.0f) == Approx(3.0f));
+    CHECK(ffxDofKernelRowHalfWidth(5.0f, 5.0f) == 0.0f);
+    CHECK(ffxDofKernelRowHalfWidth(5.0f, 7.0f) == 0.0f);  // outside: no row, not NaN
+    CHECK(ffxDofKernelRowHalfWidth(0.0f, 0.0f) == 0.0f);
+}
+
+TEST_CASE("Texel span: the texels whose centres lie strictly within the half-width", "[kernel]") {
+    std::mt19937 rng(5);
+    std::uniform_real_distribution<float> center(-20.0f, 20.0f), width(0.0f, 6.0f);
+    for (int trial = 0; trial < 5000; ++trial) {
+        // Centres on and off texel centres and edges, widths of exact half-integers too.
+        const float c = trial % 4 == 0 ? std::round(center(rng)) + 0.5f * float(trial % 8 == 0) : center(rng);
+        const float w = trial % 3 == 0 ? 0.5f * float(trial % 11) : width(rng);
+        const FfxFloat32x2 span = ffxDofTexelSpan(c, w);
+        int first = 1000, last = -1000;
+        for (int i = -40; i <= 40; ++i) {
+            if (std::abs(i + 0.5 - double(c)) < double(w)) {
+                first = std::min(first, i);
+                last = std::max(last, i);
+            }
+        }
+        INFO("centre " << c << " half-width " << w);
+        if (first > last) {
+            REQUIRE(span.x > span.y);
+        } else {
+            REQUIRE(span.x == float(first));
+            REQUIRE(span.y == float(last));
+        }
+    }
+}
+
+TEST_CASE("Ring radii: ring k spans (k - 1/2) s to (k + 1/2) s, ring 0 the centre", "[kernel]") {
+    CHECK(ffxDofRingInnerRadius(0, 1.3f) == 0.0f);
+    CHECK(ffxDofRingInnerRadius(1, 1.3f) == Approx(0.65f));
+    CHECK(ffxDofRingInnerRadius(4, 0.8f) == Approx(2.8f));
+}
+
+TEST_CASE("Annulus walk: exactly the texels whose centres lie from inner (included) to outer radius, each once",
+          "[kernel]") {
+    std::mt19937 rng(9);
+    std::uniform_real_distribution<float> unit(0.0f, 1.0f);
+    for (int trial = 0; trial < 3000; ++trial) {
+        // Origins anywhere, and exactly on texel centres and edges (the jitter can be 0).
+        FfxFloat32x2 origin(30.0f + 4.0f * unit(rng), 30.0f + 4.0f * unit(rng));
+        if (trial % 5 == 0) origin = glm::floor(origin) + FfxFloat32x2(0.5f * float(trial % 2), 0.5f);
+        const float outer = 12.0f * unit(rng);
+        const float inner = trial % 7 == 0 ? 0.0f : outer * unit(rng);
+        const std::vector<std::pair<int, int>> texels = walkAnnulus(origin, inner, outer);
+        std::set<std::pair<int, int>> unique(texels.begin(), texels.end());
+        INFO("origin " << origin.x << ", " << origin.y << ", radii " << inner << " .. " << outer);
+        REQUIRE(unique.size() == texels.size());
+        // Row by row, left to right.
+        REQUIRE(std::is_sorted(texels.begin(), texels.end(), [](auto a, auto b) {
+            return std::make_pair(a.second, a.first) < std::make_pair(b.second, b.first);
+        }));
+        size_t expected = 0;
+        for (int y = 10; y < 55; ++y) {
+            for (int x = 10; x < 55; ++x) {
+                const double d = centreDistance(origin, x, y);
+                // Away from the borders by float rounding; on them either side is right.
+                if (std::abs(d - inner) < 1e-4 || std::abs(d - outer) < 1e-4) {
+                    expected += unique.count({x, y});
+                    continue;
+                }
+                const bool inside = d >= inner && d < outer;
+                REQUIRE(unique.count({x, y}) == size_t(inside));
+                expected += inside;
+            }
+        }
+        REQUIRE(texels.size() == expected);
+    }
+}
+
+TEST_CASE("The rings of a kernel read every texel inside it exactly once", "[kernel]") {
+    std::mt19937 rng(13);
+    std::uniform_real_distribution<float> unit(0.0f, 1.0f);
+    for (int trial = 0; trial < 500; ++trial) {
+        const float radius = 0.5f + 20.0f * unit(rng);
+        const uint32_t rings = ffxDofRingCount(radius, 1 + trial % 12);
+        const float spacing = radius / float(rings);
+        const FfxFloat32x2 origin = FfxFloat32x2(40.5f, 40.5f) + ffxDofKernelJitter(FfxUInt32x2(trial, 3), 0);
+        std::map<std::pair<int, int>, int> reads;
+        for (uint32_t ring = 0; ring <= rings; ++ring) {
+            for (const auto& texel :
+                 walkAnnulus(origin, ffxDofRingInnerRadius(ring, spacing), ffxDofRingInnerRadius(ring + 1, spacing)))
+                ++reads[texel];
+        }
+        const double edge = (double(rings) + 0.5) * double(spacing);
+        size_t inside = 0;
+        for (int y = 0; y < 81; ++y)
+            for (int x = 0; x < 81; ++x) inside += centreDistance(origin, x, y) < edge - 1e-4;
+        INFO("radius " << radius << ", rings " << rings);
+        for (const auto& [texel, count] : reads) {
+            REQUIRE(count == 1);
+            REQUIRE(centreDistance(origin, texel.first, texel.second) < edge + 1e-4);
+        }
+        REQUIRE(reads.size() >= inside);
+        REQUIRE(reads.size() <= inside + size_t(8.0 * edge));  // texels on the edge, within rounding
+    }
+}
+
+TEST_CASE("A one-texel source is read once by every kernel that covers it", "[kernel]") {
+    // The issue-6 defect: ring points read the nearest texel, so a source texel was read 0 to 2 times
+    // depending on where the output texel lay; every output texel's kernel must now read it once.
+    const FfxFloat32x2 source(50.5f, 50.5f);
+    const float radius = 4.8f;
+    const uint32_t rings = ffxDofRingCount(radius, 10);
+    const float spacing = radius / float(rings);
+    for (int y = 44; y <= 57; ++y) {
+        for (int x = 44; x <= 57; ++x) {
+            const FfxFloat32x2 origin = FfxFloat32x2(float(x) + 0.5f, float(y) + 0.5f) +
+                                        ffxDofKernelJitter(FfxUInt32x2(uint32_t(x), uint32_t(y)), 7);
+            const double distance = std::hypot(double(origin.x - source.x), double(origin.y - source.y));
+            int reads = 0;
+            for (uint32_t ring = 0; ring <= rings; ++ring) {
+                for (const auto& texel : walkAnnulus(origin, ffxDofRingInnerRadius(ring, spacing),
+                                                     ffxDofRingInnerRadius(ring + 1, spacing)))
+                    reads += texel == std::make_pair(50, 50);
+            }
+            INFO("output texel " << x << ", " << y << ", distance " << distance);
+            CHECK(reads == (distance < (double(rings) + 0.5) * spacing ? 1 : 0));
+        }
+    }
 }
 
 TEST_CASE("Ring count follows the radius, capped by quality and the compile-time bound", "[kernel]") {
@@ -137,13 +263,21 @@ TEST_CASE("Ring count follows the radius, capped by quality and the compile-time
     CHECK(ffxDofRingCount(1000.0f, 1000) == uint32_t(FFX_DOF_OPTION_MAX_RINGS));
 }
 
-TEST_CASE("MIP level for a sample spacing", "[kernel]") {
+TEST_CASE("MIP level for a ring spacing: the texel size nearest the spacing in log2", "[kernel]") {
     CHECK(ffxDofMipForSpacing(0.6f) == 0.0f);
     CHECK(ffxDofMipForSpacing(1.0f) == 0.0f);
-    CHECK(ffxDofMipForSpacing(1.99f) == 0.0f);
-    CHECK(ffxDofMipForSpacing(2.0f) == 1.0f);
-    CHECK(ffxDofMipForSpacing(5.0f) == 2.0f);
+    CHECK(ffxDofMipForSpacing(1.41f) == 0.0f);
+    CHECK(ffxDofMipForSpacing(1.42f) == 1.0f);
+    CHECK(ffxDofMipForSpacing(2.82f) == 1.0f);
+    CHECK(ffxDofMipForSpacing(2.84f) == 2.0f);
     CHECK(ffxDofMipForSpacing(100.0f) == float(FFX_DOF_OPTION_MAX_MIP - 1));
+    // Spacing in texels of the chosen level: 1/sqrt(2) to sqrt(2) (from 0.5 at level 0, where a
+    // kernel of radius 0.5 to 1 has one ring), so a walk reads about as many texels as 6k ring points.
+    for (float spacing = 0.5f; spacing < 8.0f; spacing *= 1.01f) {
+        const float texels = spacing / std::exp2(ffxDofMipForSpacing(spacing));
+        CHECK(texels >= (spacing < 1.0f ? 0.5f : 0.7071f));
+        CHECK(texels < 1.4143f);
+    }
 }
 
 TEST_CASE("MIP sizes follow the Vulkan rule", "[tiles]") {
@@ -225,20 +359,33 @@ TEST_CASE("Bucket merge: equal radii add, a nearer covering ring hides the outer
 }
 
 TEST_CASE("Near opacity of a uniform near field of the kernel radius is 1", "[gather]") {
-    // The blur's geometry: rings at k * spacing, near radius R = rings * spacing, so the outer ring
-    // lies on the disc's edge and reaches by half (ffxDofReach), every inner sample fully.
-    for (uint32_t rings = 1; rings <= 12; ++rings) {
-        const float spacing = 1.5f;
-        const float radius = float(rings) * spacing;
+    // The blur's geometry and weights: every texel of the kernel read once from the kernel's MIP, each
+    // weighing reach * area weight * texel area; a near region of exactly the kernel radius R covers
+    // the kernel, its samples reaching fully up to R - 1/2 and by half at R.
+    std::mt19937 rng(17);
+    std::uniform_real_distribution<float> unit(0.0f, 1.0f);
+    for (int trial = 0; trial < 200; ++trial) {
+        const float radius = 1.0f + 30.0f * unit(rng);
+        const uint32_t rings = ffxDofRingCount(radius, 10);
+        const float spacing = radius / float(rings);
+        const uint32_t mip = uint32_t(ffxDofMipForSpacing(spacing));
+        const float texel = std::exp2(float(mip));
+        const FfxFloat32x2 center(64.5f, 64.5f);
+        const FfxFloat32x2 origin = center + ffxDofKernelJitter(FfxUInt32x2(trial, 1), 0);
         float weight = 0.0f;
-        for (uint32_t r = 0; r <= rings; ++r) {
-            const float reach = ffxDofReach(radius, float(r) * spacing);
-            weight += float(ffxDofRingSampleCount(r)) * reach * ffxDofAreaWeight(radius);
+        for (uint32_t ring = 0; ring <= rings; ++ring) {
+            for (const auto& [x, y] : walkAnnulus(origin / texel, ffxDofRingInnerRadius(ring, spacing) / texel,
+                                                  ffxDofRingInnerRadius(ring + 1, spacing) / texel)) {
+                const float distance = float(centreDistance(center / texel, x, y)) * texel;
+                weight += ffxDofReach(radius, distance) * ffxDofAreaWeight(radius) * texel * texel;
+            }
         }
-        CHECK(ffxDofNearOpacity(weight, spacing) == Approx(1.0f));
-        // Half the weight: half opaque, plus half the centre sample's share (1 of 3 * rings^2).
-        const float centreShare = 1.0f / (3.0f * float(rings * rings));
-        CHECK(ffxDofNearOpacity(weight * 0.5f, spacing) == Approx(0.5f * (1.0f + centreShare)));
+        INFO("radius " << radius << ", MIP " << mip << ", weight / pi " << weight / kPi);
+        // The sum is the covered area over pi R^2; the kernel ends half a ring beyond R (0.25 to 0.7
+        // texels), the reach at R + 0.5: the area it leaves out is a few texels of the rim.
+        CHECK(weight / kPi == Approx(1.0f).margin(1.5f * texel / radius));
+        CHECK(ffxDofNearOpacity(0.5f * kPi) == Approx(0.5f));
+        CHECK(ffxDofNearOpacity(weight) >= 1.0f - 1.5f * texel / radius);
     }
 }
 
@@ -385,19 +532,6 @@ TEST_CASE("Colors are rounded to nearest before a packed-float store", "[storage
     const FfxDofFloat3 rounded = ffxDofRoundForPackedColor(FfxDofFloat3(1.0f + 3.0f / 256.0f));
     CHECK(float(rounded.x) == 1.0f + 1.0f / 64.0f);
     CHECK(float(rounded.z) == 1.0f);  // blue keeps 5 bits: 3/256 is below half of 1/32
-}
-
-TEST_CASE("Walking a ring by its rotation step visits the sample positions", "[kernel]") {
-    for (uint32_t ring = 1; ring <= 12; ++ring) {
-        const FfxFloat32x2 step = ffxDofRingSampleStep(ring);
-        FfxFloat32x2 offset = ffxDofRingSamplePosition(ring, 0);
-        for (uint32_t i = 0; i < ffxDofRingSampleCount(ring); ++i) {
-            const FfxFloat32x2 expected = ffxDofRingSamplePosition(ring, i);
-            REQUIRE(offset.x == Approx(expected.x).margin(1e-4));
-            REQUIRE(offset.y == Approx(expected.y).margin(1e-4));
-            offset = FfxFloat32x2(offset.x * step.x - offset.y * step.y, offset.x * step.y + offset.y * step.x);
-        }
-    }
 }
 
 TEST_CASE("Blur tile classes from the dilated range and the kernel footprint", "[tiles]") {
