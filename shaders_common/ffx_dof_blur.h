@@ -19,7 +19,7 @@
 //   copy       every kernel is in focus (R < 0.5): the texel is the far layer;
 //   equal      every radius the kernels read is within FFX_DOF_EQUAL_WEIGHT_SPREAD of the others
 //              (all near or all far): no CoC is read, each sample weighs what the texel's own
-//              radius gives at its distance, and inner rings are merged wherever the option allows;
+//              radius gives at its distance, and a far texel's inner rings are merged fully;
 //   far-only   no near radius reaches the tile: no near sums, no hole fill (a near sample from a
 //              tile that does not reach has zero reach, so counting it as far changes nothing);
 //   near-only  every radius read is near-field: no far buckets, no hole fill (no background sample);
@@ -245,7 +245,8 @@ FFX_DOF_INLINE FfxDofBlurResult ffxDofFinishGather(FfxDofGather gather, FfxDofKe
 // The outermost ring is always gathered at full resolution (it keeps the circle), and it tells how
 // flat the radii around the texel are: the merged path is taken by how flat, per texel, from the
 // texel's own samples, never per tile (a per-tile switch shows as tile-shaped blocks). Equal-weight
-// tiles are flat by construction: they merge wherever the option allows.
+// tiles are flat by construction: their far texels merge fully (near texels never merge, as on the
+// mixed path: merging them cost near-field PSNR, docs/performance.md).
 FFX_DOF_INLINE void ffxDofGatherKernel(FFX_DOF_INOUT(FfxDofGather) gather, FfxDofKernel kernel, FfxDofGatherParts parts,
                                        FfxDofConstants constants)
 {
@@ -253,10 +254,8 @@ FFX_DOF_INLINE void ffxDofGatherKernel(FFX_DOF_INOUT(FfxDofGather) gather, FfxDo
     ffxDofGatherRing(gather, kernel, kernel.rings, kernel.rings, kernel.baseMip, 1.0f, trackSpread, parts, constants);
     FfxFloat32 mergeAmount = 0.0f;
 #if FFX_DOF_OPTION_MAX_RING_MERGE_LOG > 0
-    if (parts.equalWeights && kernel.rings >= 2u && kernel.centerCoc <= -FFX_DOF_IN_FOCUS_RADIUS)
-        mergeAmount = 1.0f;
-    else if (kernel.rings >= 2u && kernel.centerCoc <= -FFX_DOF_IN_FOCUS_RADIUS)
-        mergeAmount = ffxDofRingMergeAmount(gather.cocSpread);
+    if (kernel.rings >= 2u && kernel.centerCoc <= -FFX_DOF_IN_FOCUS_RADIUS)
+        mergeAmount = parts.equalWeights ? 1.0f : ffxDofRingMergeAmount(gather.cocSpread);
 #endif
     ffxDofGatherInnerRings(gather, kernel, mergeAmount, parts, constants);
 }
