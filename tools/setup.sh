@@ -5,7 +5,7 @@ set -euo pipefail
 
 packages=(
   build-essential cmake ninja-build pkg-config clang-format
-  glslang-dev glslang-tools spirv-tools spirv-headers
+  glslang-dev glslang-tools spirv-tools spirv-headers libspirv-cross-c-shared-dev
   libvulkan-dev libvulkan-volk-dev mesa-vulkan-drivers vulkan-validationlayers vulkan-tools
   libglm-dev libopenexr-dev libimath-dev libpng-dev libstb-dev
   catch2 libcli11-dev nlohmann-json3-dev
