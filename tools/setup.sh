@@ -1,15 +1,27 @@
 #!/usr/bin/env bash
-# Installs every Debian 12 package ffx-dof needs to build and test. Idempotent:
+# Installs every Debian 12 package ffx-dof needs to build, test, run the demo and regenerate the docs. Idempotent:
 # when everything is present it changes nothing and exits 0.
 set -euo pipefail
 
+# The one list of the Debian packages ffx-dof uses. tools/check-packages.sh (run by tools/test.sh right after
+# configure) fails when CMake finds a system file that no package here, nor any of their dependencies,
+# provides; add the package it names here.
 packages=(
-  build-essential cmake ninja-build pkg-config clang-format
+  # build: compilers, CMake, and every find_package / find_path / find_library / pkg_check_modules
+  build-essential cmake ninja-build pkg-config
   glslang-dev glslang-tools spirv-tools spirv-headers libspirv-cross-c-shared-dev
-  libvulkan-dev libvulkan-volk-dev mesa-vulkan-drivers vulkan-validationlayers vulkan-tools
+  libvulkan-dev libvulkan-volk-dev
   libglm-dev libopenexr-dev libimath-dev libpng-dev libstb-dev
-  catch2 libcli11-dev nlohmann-json3-dev
+  libcli11-dev nlohmann-json3-dev
+  # tests: Catch2, formatting check (clang-format over `git ls-files`), Vulkan on lavapipe with validation,
+  # the Direct3D 12 backend cross-compiled with MinGW-w64
+  catch2 clang-format git
+  mesa-vulkan-drivers vulkan-validationlayers vulkan-tools
   g++-mingw-w64-x86-64
+  # docs: tools/shaderc/bench_permutations.sh (docs/permutations.md) and docs/technique.md's arithmetic;
+  # docs/quality.md and docs/performance.md come from the project's own C++ tools (ffx_dof_quality_report,
+  # ffx-dof bench)
+  python3 bc
 )
 
 missing=()

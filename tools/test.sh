@@ -2,7 +2,8 @@
 # Builds everything and runs every test: the README's test command, and what CI runs.
 #   1. installs missing Debian packages (tools/setup.sh) and checks formatting (tools/check-format.sh),
 #   2. Release build + every CTest test (CPU tests, Vulkan tests on lavapipe with validation, and
-#      the install tree consumed by a separate project through find_package),
+#      the install tree consumed by a separate project through find_package); right after each configure,
+#      tools/check-packages.sh fails if CMake found a system file no package of tools/setup.sh provides,
 #   3. the host-code tests again under AddressSanitizer + UndefinedBehaviorSanitizer,
 #   4. the Direct3D 12 backend cross-compiled with MinGW-w64 (warnings as errors).
 set -euo pipefail
@@ -20,6 +21,7 @@ bash tools/check-format.sh
 
 step "configure + build (Release)"
 cmake --preset default >/dev/null
+bash tools/check-packages.sh build/default   # every system file CMake found comes from a tools/setup.sh package
 cmake --build --preset default -j "$jobs"
 
 step "tests (Release)"
@@ -27,6 +29,7 @@ ctest --preset default -j "$jobs"
 
 step "host tests under ASan + UBSan"
 cmake --preset asan >/dev/null
+bash tools/check-packages.sh build/asan
 cmake --build --preset asan -j "$jobs"
 ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 ctest --preset asan -j "$jobs"
 
