@@ -151,7 +151,8 @@ FfxDofErrorCode ffxDofContextDestroy(FfxDofContext* pContext);
 FfxDofErrorCode ffxDofContextGetGpuMemoryUsage(FfxDofContext* pContext, FfxDofMemoryUsage* pVramUsage);
 
 /** Destroys a backend. Returns FFX_DOF_ERROR_BACKEND_IN_USE (and destroys nothing) while contexts
- *  made with it are alive. NULL is accepted. */
+ *  made with it are alive, and FFX_DOF_ERROR_INVALID_ARGUMENT (reading nothing) for a backend that
+ *  was destroyed already or is no backend. NULL is accepted. */
 FfxDofErrorCode ffxDofBackendDestroy(FfxDofBackend backend);
 
 /** FFX_DOF_MAKE_VERSION of this library. */

@@ -43,9 +43,20 @@ public:
 
 }  // namespace ffxdof
 
-// The public opaque handle is the backend object itself.
+namespace ffxdof {
+// Every backend object is registered while it exists (see FfxDofBackend_T), so the core can refuse a
+// destroyed or garbage FfxDofBackend before it dereferences it. Defined in ffx_dof_context.cpp.
+void registerLiveBackend(const FfxDofBackend_T* backend);
+void unregisterLiveBackend(const FfxDofBackend_T* backend);
+}  // namespace ffxdof
+
+// The public opaque handle is the backend object itself. Its constructor and destructor keep the
+// registry of live backends, so every backend (Vulkan, D3D12, the tests' fakes) is covered.
 struct FfxDofBackend_T {
-    virtual ~FfxDofBackend_T() = default;
+    FfxDofBackend_T() { ffxdof::registerLiveBackend(this); }
+    FfxDofBackend_T(const FfxDofBackend_T&) = delete;
+    FfxDofBackend_T& operator=(const FfxDofBackend_T&) = delete;
+    virtual ~FfxDofBackend_T() { ffxdof::unregisterLiveBackend(this); }
     virtual FfxDofErrorCode createContext(const ffxdof::ContextConfig& config,
                                           std::unique_ptr<ffxdof::BackendContext>* out) = 0;
     std::atomic<int> liveContexts{0};

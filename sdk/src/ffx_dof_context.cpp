@@ -1,11 +1,10 @@
 // The API-neutral core: validates every description, owns context lifetime, and plans each dispatch
 // (constants, workgroup counts, permutation options) for the backend to record.
 #include "ffx_dof_context.h"
+#include "ffx_dof_live_handles.h"
 
 #include <cmath>
-#include <mutex>
 #include <new>
-#include <unordered_set>
 
 struct FfxDofContext_T {
     FfxDofBackend backend = nullptr;
@@ -17,13 +16,25 @@ struct FfxDofContext_T {
 namespace ffxdof {
 namespace {
 
-// Handles of live contexts, so that a stale handle (used after destroy) is an error, not a crash.
-std::mutex g_liveMutex;
-std::unordered_set<const FfxDofContext_T*> g_liveContexts;
+// Handles of live contexts and backends, so that a stale handle (used after destroy) or a garbage
+// one is an error, not a crash. Made on first use and never destroyed: backends register from their
+// constructors and unregister from their destructors, which may run before this file's globals are
+// initialised or after they would have been destroyed (a backend held by a static object).
+LiveHandles<FfxDofContext_T>& liveContexts() {
+    static auto* registry = new LiveHandles<FfxDofContext_T>;
+    return *registry;
+}
+LiveHandles<FfxDofBackend_T>& liveBackends() {
+    static auto* registry = new LiveHandles<FfxDofBackend_T>;
+    return *registry;
+}
 
-bool isLive(const FfxDofContext_T* context) {
-    std::lock_guard<std::mutex> lock(g_liveMutex);
-    return g_liveContexts.count(context) != 0;
+bool isLive(const FfxDofContext_T* context) { return liveContexts().contains(context); }
+
+FfxDofErrorCode notALiveBackend(const char* what, const void* backend) {
+    return fail(FFX_DOF_ERROR_INVALID_ARGUMENT,
+                "%s %p is not a live backend (destroyed already, or not made by ffxDofBackendCreateVK/DX12)", what,
+                backend);
 }
 
 uint32_t divideRoundingUp(uint32_t value, uint32_t divisor) { return (value + divisor - 1) / divisor; }
@@ -45,6 +56,9 @@ FfxDofErrorCode lookUpLiveContext(FfxDofContext* pContext, FfxDofContext_T** out
 }
 
 }  // namespace
+
+void registerLiveBackend(const FfxDofBackend_T* backend) { liveBackends().insert(backend); }
+void unregisterLiveBackend(const FfxDofBackend_T* backend) { liveBackends().erase(backend); }
 
 BackendContext* backendContextOf(FfxDofContext context) {
     if (context == nullptr || !isLive(context)) return nullptr;
@@ -122,6 +136,23 @@ extern "C" FfxDofErrorCode ffxDofContextCreate(FfxDofContext* pContext,
     if (desc.backendInterface == nullptr)
         return fail(FFX_DOF_ERROR_INVALID_POINTER,
                     "backendInterface is NULL (create one with ffxDofBackendCreateVK/DX12)");
+    // Counts the new context on the backend while the registry says it is live, so that a concurrent
+    // ffxDofBackendDestroy either happens before (and this call fails) or refuses (BACKEND_IN_USE).
+    FfxDofBackend backend = desc.backendInterface;
+    if (!liveBackends().whileLive(backend, false, [&](auto) {
+            ++backend->liveContexts;
+            return true;
+        })) {
+        return notALiveBackend("backendInterface", backend);
+    }
+    // Undone unless the context is made.
+    struct ContextCountReservation {
+        FfxDofBackend backend;
+        bool kept = false;
+        ~ContextCountReservation() {
+            if (!kept) --backend->liveContexts;
+        }
+    } reservation{backend};
 
     std::unique_ptr<FfxDofContext_T> context(new (std::nothrow) FfxDofContext_T);
     if (!context) return fail(FFX_DOF_ERROR_OUT_OF_MEMORY, "allocating the context failed");
@@ -135,12 +166,11 @@ extern "C" FfxDofErrorCode ffxDofContextCreate(FfxDofContext* pContext,
         const FfxDofErrorCode status = desc.backendInterface->createContext(context->config, &context->impl);
         if (status != FFX_DOF_OK) return status;
         if (!context->impl) return fail(FFX_DOF_ERROR_BACKEND, "the backend returned no context");
-        std::lock_guard<std::mutex> lock(g_liveMutex);
-        g_liveContexts.insert(context.get());
+        liveContexts().insert(context.get());
     } catch (const std::bad_alloc&) {
         return fail(FFX_DOF_ERROR_OUT_OF_MEMORY, "host allocation failed while creating the context");
     }
-    ++desc.backendInterface->liveContexts;
+    reservation.kept = true;
     *pContext = context.release();
     return FFX_DOF_OK;
 }
@@ -185,11 +215,8 @@ extern "C" FfxDofErrorCode ffxDofContextDestroy(FfxDofContext* pContext) {
     if (pContext == nullptr) return fail(FFX_DOF_ERROR_INVALID_POINTER, "pContext is NULL");
     if (*pContext == nullptr) return FFX_DOF_OK;
     FfxDofContext_T* context = *pContext;
-    {
-        std::lock_guard<std::mutex> lock(g_liveMutex);
-        if (g_liveContexts.erase(context) == 0)
-            return fail(FFX_DOF_ERROR_INVALID_CONTEXT, "the context handle is not a live context (destroyed twice?)");
-    }
+    if (!liveContexts().erase(context))
+        return fail(FFX_DOF_ERROR_INVALID_CONTEXT, "the context handle is not a live context (destroyed twice?)");
     FfxDofBackend backend = context->backend;
     delete context;
     --backend->liveContexts;
@@ -209,9 +236,17 @@ extern "C" FfxDofErrorCode ffxDofContextGetGpuMemoryUsage(FfxDofContext* pContex
 extern "C" FfxDofErrorCode ffxDofBackendDestroy(FfxDofBackend backend) {
     clearLastError();
     if (backend == nullptr) return FFX_DOF_OK;
-    if (backend->liveContexts.load() != 0)
-        return fail(FFX_DOF_ERROR_BACKEND_IN_USE, "%d contexts made with this backend are still alive",
-                    backend->liveContexts.load());
+    // The registry is consulted before the pointer is dereferenced: destroying twice, or a garbage
+    // pointer, is an error and reads no memory.
+    constexpr int kNotLive = -1;
+    const int contextsAlive = liveBackends().whileLive(backend, kNotLive, [&](auto eraseFromRegistry) {
+        const int alive = backend->liveContexts.load();
+        if (alive == 0) eraseFromRegistry();
+        return alive;
+    });
+    if (contextsAlive == kNotLive) return notALiveBackend("the backend", backend);
+    if (contextsAlive != 0)
+        return fail(FFX_DOF_ERROR_BACKEND_IN_USE, "%d contexts made with this backend are still alive", contextsAlive);
     delete backend;
     return FFX_DOF_OK;
 }

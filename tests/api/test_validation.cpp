@@ -5,6 +5,7 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
+#include <cstring>
 #include <limits>
 #include <set>
 #include <string>
@@ -204,6 +205,29 @@ TEST_CASE_METHOD(Fixture, "a backend with live contexts is not destroyed") {
     CHECK(ffxDofBackendDestroy(backend) == FFX_DOF_OK);
     backend = nullptr;
     CHECK(ffxDofBackendDestroy(nullptr) == FFX_DOF_OK);
+}
+
+TEST_CASE_METHOD(Fixture, "a destroyed or garbage backend is refused without touching its memory") {
+    // Destroying twice: the second call must not read the freed object (it once reported a garbage
+    // count of live contexts, and under ASan it is a use-after-free).
+    REQUIRE(ffxDofBackendDestroy(backend) == FFX_DOF_OK);
+    FfxDofBackend destroyed = backend;
+    backend = nullptr;
+    CHECK(ffxDofBackendDestroy(destroyed) == FFX_DOF_ERROR_INVALID_ARGUMENT);
+    CHECK_THAT(lastError(), Catch::Contains("not a live backend"));
+
+    // Creating a context with the destroyed backend, or with a pointer that never was one.
+    description.backendInterface = destroyed;
+    CHECK(create() == FFX_DOF_ERROR_INVALID_ARGUMENT);
+    CHECK(context == nullptr);
+    CHECK_THAT(lastError(), Catch::Contains("backendInterface"));
+    alignas(16) unsigned char garbage[64];
+    std::memset(garbage, 0xA5, sizeof(garbage));
+    description.backendInterface = reinterpret_cast<FfxDofBackend>(garbage);
+    CHECK(create() == FFX_DOF_ERROR_INVALID_ARGUMENT);
+    CHECK(context == nullptr);
+    CHECK(ffxDofBackendDestroy(reinterpret_cast<FfxDofBackend>(garbage)) == FFX_DOF_ERROR_INVALID_ARGUMENT);
+    CHECK(ffxDofBackendDestroy(reinterpret_cast<FfxDofBackend>(uintptr_t(0x10))) == FFX_DOF_ERROR_INVALID_ARGUMENT);
 }
 
 TEST_CASE("every error code has its own description") {

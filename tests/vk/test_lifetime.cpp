@@ -213,6 +213,28 @@ TEST_CASE("invalid engine resources give specific errors", "[vulkan]") {
         d.color.state = VK_IMAGE_LAYOUT_UNDEFINED;
         expectError(d, FFX_DOF_ERROR_INVALID_RESOURCE, "VK_IMAGE_LAYOUT_UNDEFINED");
     }
+    SECTION("a value that is no layout, or one of the wrong aspect, for each image") {
+        // These once passed and recorded barriers the validation layer rejects.
+        for (const uint32_t badLayout : {0x7fffffffu, 12345u, uint32_t(VK_IMAGE_LAYOUT_PREINITIALIZED)}) {
+            for (FfxDofResource FfxDofDispatchDescription::*role :
+                 {&FfxDofDispatchDescription::color, &FfxDofDispatchDescription::depth,
+                  &FfxDofDispatchDescription::output}) {
+                FfxDofDispatchDescription d = valid;
+                const FfxDofResource& resource = d.*role;
+                d.*role = ffxDofGetResourceVK(reinterpret_cast<VkImage>(uintptr_t(resource.handle)),
+                                              VkFormat(resource.format), resource.width, resource.height,
+                                              VkImageLayout(badLayout), 0);
+                CAPTURE(badLayout);
+                expectError(d, FFX_DOF_ERROR_INVALID_RESOURCE, "is declared in");
+            }
+        }
+        FfxDofDispatchDescription depthAsColorAttachment = valid;
+        depthAsColorAttachment.depth.state = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
+        expectError(depthAsColorAttachment, FFX_DOF_ERROR_INVALID_RESOURCE, "depth is declared in");
+        FfxDofDispatchDescription colorAsDepthAttachment = valid;
+        colorAsDepthAttachment.color.state = VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL;
+        expectError(colorAsDepthAttachment, FFX_DOF_ERROR_INVALID_RESOURCE, "color is declared in");
+    }
     SECTION("unknown resource flags") {
         FfxDofDispatchDescription d = valid;
         d.output.flags = 0x80;

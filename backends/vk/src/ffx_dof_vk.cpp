@@ -46,8 +46,26 @@ VkImage imageOf(const FfxDofResource& resource) {
     }
 }
 
-bool isReadableLayout(VkImageLayout layout) {
-    return layout != VK_IMAGE_LAYOUT_UNDEFINED && layout != VK_IMAGE_LAYOUT_PREINITIALIZED;
+// The layouts an engine image may be declared in: valid for an image of its aspect and holding its
+// contents, so the barriers into and out of the effect's layouts are valid. Anything else (UNDEFINED,
+// PREINITIALIZED, an attachment layout of the other aspect, a value that is no VkImageLayout at all)
+// is refused before any barrier is recorded.
+bool isAcceptedLayout(VkImageLayout layout, bool depthAspect) {
+    switch (layout) {
+        case VK_IMAGE_LAYOUT_GENERAL:
+        case VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL:
+        case VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL:
+        case VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL:
+            return true;
+        case VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL:
+            return !depthAspect;
+        case VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL:
+        case VK_IMAGE_LAYOUT_DEPTH_STENCIL_READ_ONLY_OPTIMAL:
+        case VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL:
+            return depthAspect;
+        default:
+            return false;
+    }
 }
 
 VkDescriptorType descriptorTypeOf(shaders::BindingKind kind) {
@@ -550,11 +568,6 @@ FfxDofErrorCode ContextVK::validate(const DispatchPlan& plan, bool* encodeSrgb) 
             return fail(FFX_DOF_ERROR_INVALID_RESOURCE, "%s is %ux%u but the context was created for %ux%u", r.name,
                         r.resource.width, r.resource.height, config_.resolution.width, config_.resolution.height);
         }
-        if (!isReadableLayout(VkImageLayout(r.resource.state))) {
-            return fail(FFX_DOF_ERROR_INVALID_RESOURCE,
-                        "%s is declared in %s: the image must hold its contents before and after the dispatch", r.name,
-                        layoutName(VkImageLayout(r.resource.state)).c_str());
-        }
         if (r.resource.flags & ~uint32_t(FFX_DOF_VK_RESOURCE_MUTABLE_FORMAT)) {
             return fail(FFX_DOF_ERROR_INVALID_RESOURCE, "%s has flags 0x%x that are not FfxDofResourceFlagBitsVK",
                         r.name, r.resource.flags);
@@ -577,6 +590,18 @@ FfxDofErrorCode ContextVK::validate(const DispatchPlan& plan, bool* encodeSrgb) 
     if (!isColorFormat(outputFormat)) {
         return fail(FFX_DOF_ERROR_INVALID_RESOURCE, "output format %s is not supported (the color formats are)",
                     formatName(outputFormat).c_str());
+    }
+    for (const auto& r : resources) {
+        const VkImageLayout layout = VkImageLayout(r.resource.state);
+        const bool depthAspect = &r.resource == &plan.depth && isDepthAspectFormat(depthFormat);
+        if (!isAcceptedLayout(layout, depthAspect)) {
+            return fail(FFX_DOF_ERROR_INVALID_RESOURCE,
+                        "%s is declared in %s, which is not accepted: use GENERAL, SHADER_READ_ONLY_OPTIMAL, "
+                        "TRANSFER_SRC/DST_OPTIMAL or %s (the image must hold its contents before and after)",
+                        r.name, layoutName(layout).c_str(),
+                        depthAspect ? "DEPTH_STENCIL_ATTACHMENT/READ_ONLY_OPTIMAL, DEPTH_READ_ONLY_OPTIMAL"
+                                    : "COLOR_ATTACHMENT_OPTIMAL");
+        }
     }
     *encodeSrgb = outputFormat == VK_FORMAT_R8G8B8A8_SRGB;
     if (*encodeSrgb && !(plan.output.flags & FFX_DOF_VK_RESOURCE_MUTABLE_FORMAT)) {
