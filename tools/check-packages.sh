@@ -121,15 +121,16 @@ fi
 
 # --- the system files each build found --------------------------------------------------------------------
 # Lines "<path>\t<why>" where why is "<build>: <cache entry>".
-alias_of() {
+alias_of() { # sets alias: the other merged-/usr spelling of $1, or ""   (no subshells: this runs ~200 times)
   case "$1" in
-    /usr/lib/*|/usr/lib32/*|/usr/lib64/*|/usr/libx32/*|/usr/bin/*|/usr/sbin/*) echo "${1#/usr}" ;;
-    /lib/*|/lib32/*|/lib64/*|/libx32/*|/bin/*|/sbin/*) echo "/usr$1" ;;
+    /usr/lib/*|/usr/lib32/*|/usr/lib64/*|/usr/libx32/*|/usr/bin/*|/usr/sbin/*) alias="${1#/usr}" ;;
+    /lib/*|/lib32/*|/lib64/*|/libx32/*|/bin/*|/sbin/*) alias="/usr$1" ;;
+    *) alias="" ;;
   esac
 }
 config_file_in() { # $1 folder, $2 package name of <Pkg>_DIR
   local d="$1" n="$2" lower f
-  lower="$(tr '[:upper:]' '[:lower:]' <<<"$n")"
+  lower="${n,,}"
   for f in "$d/${n}Config.cmake" "$d/${lower}-config.cmake" "$d"/*Config.cmake "$d"/*-config.cmake; do
     [ -f "$f" ] && { echo "$f"; return; }
   done
@@ -186,11 +187,14 @@ done
 # --- owners: one dpkg-query -S over every spelling of every path ---------------------------------------------
 declare -A real=() owners=()
 lookups=()
-for entry in "${found[@]}"; do
-  p="${entry%%$'\t'*}"
-  r="$(realpath -e "$p")"
+paths=()
+for entry in "${found[@]}"; do paths+=("${entry%%$'\t'*}"); done
+mapfile -t reals < <(realpath -e -- "${paths[@]}")
+for i in "${!paths[@]}"; do
+  p="${paths[$i]}"; r="${reals[$i]}"
   real[$p]="$r"
-  for q in "$p" "$(alias_of "$p")" "$r" "$(alias_of "$r")"; do
+  alias_of "$p"; a1="$alias"; alias_of "$r"; a2="$alias"
+  for q in "$p" "$a1" "$r" "$a2"; do
     [ -n "$q" ] && [[ "$q" != *[][*?\\]* ]] && lookups+=("$q")
   done
 done
@@ -199,18 +203,20 @@ while IFS= read -r line; do
   case "$line" in "diversion by "*) continue ;; esac
   [[ "$line" == *": /"* ]] || continue
   who="${line%%: /*}"; path="/${line#*: /}"
-  who="$(sed -E 's/:[a-z0-9_-]+(,|$)/\1/g; s/,//g' <<<"$who")"   # "a:amd64, b" -> "a b"
+  who="${who//,/}"; set -- $who; who=""   # "a:amd64, b" -> "a b"
+  for w in "$@"; do who+="${who:+ }${w%%:*}"; done
   owners[$path]="${owners[$path]:+${owners[$path]} }$who"
 done < <(dpkg-query -S "${lookups[@]}" 2>/dev/null || true)
 
-owners_of() { # the owners of a path under either merged-/usr spelling
-  local a
-  a="$(alias_of "$1")"
-  echo "${owners[$1]:-} ${a:+${owners[$a]:-}}"
+owners_of() { # sets own: the owners of $1 under either merged-/usr spelling
+  alias_of "$1"
+  own="${owners[$1]:-} ${alias:+${owners[$alias]:-}}"
 }
+declare -A is_prov=()
+while IFS= read -r w; do [ -n "$w" ] && is_prov[$w]=1; done <<<"$provided"
 is_provided() { # any of the words of $1 provided
   local w
-  for w in $1; do grep -qxF "$w" <<<"$provided" && return 0; done
+  for w in $1; do [ -n "${is_prov[$w]:-}" ] && return 0; done
   return 1
 }
 
@@ -222,7 +228,7 @@ unowned=()
 for entry in "${found[@]}"; do
   p="${entry%%$'\t'*}"; why="${entry#*$'\t'}"
   r="${real[$p]}"
-  o1="$(owners_of "$p")"; o2="$(owners_of "$r")"
+  owners_of "$p"; o1="$own"; owners_of "$r"; o2="$own"
   if [ -z "${o1// /}" ] && [ -z "${o2// /}" ]; then
     case "$p" in /usr/*|/lib*|/bin/*|/sbin/*|/opt/*|/etc/*) unowned+=("$p ($why)") ;; esac
     continue
