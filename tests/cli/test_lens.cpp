@@ -229,3 +229,20 @@ TEST_CASE("effect options are checked", "[inputs]") {
     options.cocLimit = -0.5;
     requireCliError([&] { checkEffectOptions(options); }, ExitCode::InvalidValue, "--coc-limit");
 }
+
+TEST_CASE("EXR output type: auto keeps values beyond half's range, half refuses them, non-finite is never written") {
+    using ffxdof::io::ExrPixelType;
+    ffxdof::io::ImageRGBA image(4, 2);
+    std::fill(image.pixels.begin(), image.pixels.end(), 1.0f);
+    CHECK(chooseExrPixelType("auto", image, "o.exr") == ExrPixelType::Half);
+    CHECK(chooseExrPixelType("half", image, "o.exr") == ExrPixelType::Half);
+    CHECK(chooseExrPixelType("float", image, "o.exr") == ExrPixelType::Float);
+    image.at(1, 1)[2] = 65504.0f;  // half's largest finite value still fits
+    CHECK(chooseExrPixelType("auto", image, "o.exr") == ExrPixelType::Half);
+    image.at(1, 1)[2] = -70000.0f;
+    CHECK(chooseExrPixelType("auto", image, "o.exr") == ExrPixelType::Float);
+    CHECK(chooseExrPixelType("float", image, "o.exr") == ExrPixelType::Float);
+    requireCliError([&] { chooseExrPixelType("half", image, "o.exr"); }, ExitCode::InvalidValue, "--out-type half");
+    image.at(0, 0)[0] = NAN;
+    requireCliError([&] { chooseExrPixelType("auto", image, "o.exr"); }, ExitCode::Device, "non-finite");
+}

@@ -73,7 +73,7 @@ void runDemo(const DemoOptions& options) {
     const ref::Camera& camera = setup.camera;
     const ThinLens lens{camera.apertureRadius, camera.focalLength, camera.focusDistance, camera.sensorWidth};
     const EffectDepth depth = linearToEffectDepth(pinhole.depth, "scene depth");
-    const CocParameters coc = computeCocParameters(lens, depth.projection, camera.width);
+    const CocParameters coc = computeCocParameters(lens, depth.projection, camera.width, depth.projectionOrigin);
     const vkrun::RunResult result = runEffectOrThrow(*device, toHostImage(pinhole.color),
                                                      toHostImage(camera.width, camera.height, depth.deviceDepth),
                                                      makeRunSettings(options.effect, coc, depth.projection.reversed));
@@ -89,13 +89,16 @@ void runDemo(const DemoOptions& options) {
         }
         written.push_back(path);
     };
-    write("input.exr", [&](const std::string& path) { io::writeExr(path, pinhole.color); });
+    const auto writeColorExr = [&](const std::string& path, const io::ImageRGBA& image) {
+        io::writeExr(path, image, chooseExrPixelType(options.outType, image, path));
+    };
+    write("input.exr", [&](const std::string& path) { writeColorExr(path, pinhole.color); });
     write("input.png", [&](const std::string& path) { io::writePng(path, pinhole.color); });
     write("depth.exr",
           [&](const std::string& path) { io::writeExr(path, pinhole.depth, io::ExrPixelType::Float, "Z"); });
-    write("output.exr", [&](const std::string& path) { io::writeExr(path, output); });
+    write("output.exr", [&](const std::string& path) { writeColorExr(path, output); });
     write("output.png", [&](const std::string& path) { io::writePng(path, output); });
-    write("truth.exr", [&](const std::string& path) { io::writeExr(path, truth.color); });
+    write("truth.exr", [&](const std::string& path) { writeColorExr(path, truth.color); });
     write("truth.png", [&](const std::string& path) { io::writePng(path, truth.color); });
     write("side-by-side.png", [&](const std::string& path) {
         io::writePng(path, sideBySide({&pinhole.color, &output, &truth.color}));

@@ -28,8 +28,9 @@ struct ApplyOptions {
     std::string colorPath;
     std::string depthPath;
     std::string outputPath;
-    std::string colorLayer;    // empty: the default layer's R, G, B (A)
-    std::string depthChannel;  // empty: the file's only channel
+    std::string outType = "auto";  // EXR output pixels: "half", "float", or "auto" (see chooseExrPixelType)
+    std::string colorLayer;        // empty: the default layer's R, G, B (A)
+    std::string depthChannel;      // empty: the file's only channel
     DepthKind depthKind = DepthKind::Linear;
     std::optional<double> nearPlane;
     std::optional<double> farPlane;
@@ -45,7 +46,8 @@ struct DemoOptions {
     std::string scene = "busy-background";  // a built-in scene of the reference renderer
     uint32_t width = 960;
     uint32_t height = 540;
-    uint32_t lensSamples = 64;  // thin-lens samples per pixel of the truth
+    uint32_t lensSamples = 64;     // thin-lens samples per pixel of the truth
+    std::string outType = "auto";  // the EXR images' pixels, as apply's --out-type
     EffectOptions effect;
 };
 void runDemo(const DemoOptions& options);

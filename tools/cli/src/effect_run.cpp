@@ -3,6 +3,8 @@
 #include "cli_error.h"
 
 #include <algorithm>
+#include <cmath>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -95,9 +97,9 @@ io::ImageRGBA toImageRGBA(const vkrun::HostImage& image) {
     return rgba;
 }
 
-void writeOutput(const std::string& path, const io::ImageRGBA& image) {
+void writeOutput(const std::string& path, const io::ImageRGBA& image, io::ExrPixelType exrType) {
     try {
-        io::writeImage(path, image);
+        io::writeImage(path, image, exrType);
     } catch (const io::IoError& error) {
         throw CliError(ExitCode::OutputWrite, error.what());
     }

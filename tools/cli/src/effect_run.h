@@ -27,7 +27,8 @@ vkrun::HostImage toHostImage(const io::ImageRGBA& image);
 vkrun::HostImage toHostImage(uint32_t width, uint32_t height, const std::vector<float>& singleChannel);
 io::ImageRGBA toImageRGBA(const vkrun::HostImage& image);
 
-// Writes an image chosen by extension; io errors become CliError(OutputWrite).
-void writeOutput(const std::string& path, const io::ImageRGBA& image);
+// Writes an image chosen by extension (EXR pixels of exrType); io errors become CliError(OutputWrite).
+void writeOutput(const std::string& path, const io::ImageRGBA& image,
+                 io::ExrPixelType exrType = io::ExrPixelType::Half);
 
 }  // namespace ffxdof::cli

@@ -4,6 +4,8 @@
 #include "commands.h"
 #include "ffx_dof.h"
 
+#include <algorithm>
+#include <cfloat>
 #include <cmath>
 #include <sstream>
 
@@ -89,7 +91,14 @@ void checkDeviceDepth(const io::ImageR& depth, const std::string& path) {
 
 EffectDepth linearToEffectDepth(const io::ImageR& depth, const std::string& path) {
     EffectDepth result;
-    result.projection = projectionForLinearDepth(checkLinearDepth(depth, path));
+    const double nearest = checkLinearDepth(depth, path);
+    result.projection = projectionForLinearDepth(nearest);
+    const size_t nearestIndex =
+        size_t(std::find(depth.pixels.begin(), depth.pixels.end(), float(nearest)) - depth.pixels.begin());
+    std::ostringstream origin;
+    origin << "the nearest depth of " << path << " (" << nearest << " m at x=" << nearestIndex % depth.width
+           << ", y=" << nearestIndex / depth.width << ")";
+    result.projectionOrigin = origin.str();
     result.deviceDepth.resize(depth.pixels.size());
     for (size_t i = 0; i < depth.pixels.size(); ++i) {
         result.deviceDepth[i] = float(result.projection.deviceDepth(depth.pixels[i]));
@@ -97,18 +106,46 @@ EffectDepth linearToEffectDepth(const io::ImageR& depth, const std::string& path
     return result;
 }
 
+io::ExrPixelType chooseExrPixelType(const std::string& outType, const io::ImageRGBA& image, const std::string& path) {
+    constexpr float kLargestHalf = 65504.0f;
+    float largest = 0.0f;
+    size_t nonFinite = 0;
+    for (float value : image.pixels) {
+        if (!std::isfinite(value)) {
+            ++nonFinite;
+        } else {
+            largest = std::max(largest, std::fabs(value));
+        }
+    }
+    if (nonFinite > 0) {
+        throw CliError(ExitCode::Device, "the effect produced " + std::to_string(nonFinite) +
+                                             " non-finite values; nothing was written to " + path);
+    }
+    if (outType == "float") return io::ExrPixelType::Float;
+    if (largest <= kLargestHalf) return io::ExrPixelType::Half;
+    if (outType == "half") {
+        std::ostringstream message;
+        message << "--out-type half cannot hold the largest value of " << path << ", " << largest
+                << " (half's largest is 65504); use --out-type float or auto";
+        throw CliError(ExitCode::InvalidValue, message.str());
+    }
+    return io::ExrPixelType::Float;
+}
+
 void checkEffectOptions(const EffectOptions& options) {
     if (options.quality < 1 || options.quality > FFX_DOF_MAX_QUALITY) {
         throw CliError(ExitCode::InvalidValue, "--quality must be 1 to " + std::to_string(FFX_DOF_MAX_QUALITY) +
                                                    ", got " + std::to_string(options.quality));
     }
-    if (!std::isfinite(options.cocLimit) || options.cocLimit < 0.0) {
+    // The SDK takes a float: a double beyond its range would arrive as infinity.
+    if (!std::isfinite(options.cocLimit) || options.cocLimit < 0.0 || options.cocLimit > double(FLT_MAX)) {
         std::ostringstream message;
-        message << "--coc-limit must be a finite number, 0 or more, got " << options.cocLimit;
+        message << "--coc-limit must be a finite number, 0 or more (at most 3.4e38), got " << options.cocLimit;
         throw CliError(ExitCode::InvalidValue, message.str());
     }
     if (options.device < -1) {
-        throw CliError(ExitCode::InvalidValue, "--device must be a device index, 0 or more");
+        throw CliError(ExitCode::InvalidValue,
+                       "--device must be a device index, 0 or more, got " + std::to_string(options.device));
     }
 }
 

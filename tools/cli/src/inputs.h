@@ -30,7 +30,15 @@ void checkDeviceDepth(const io::ImageR& depth, const std::string& path);
 struct EffectDepth {
     std::vector<float> deviceDepth;  // width * height, rows top to bottom
     DepthProjection projection;
+    // Where the projection comes from, for messages: the nearest depth pixel for linear depth.
+    std::string projectionOrigin;
 };
+
+// The EXR pixel type for an image, so the file holds what was computed: "half" and "float" as asked,
+// "auto" half unless a value exceeds half's largest finite value (65504), then float. Throws
+// CliError(InvalidValue) when "half" is asked for values half cannot hold, and CliError(Device) when
+// the image holds a non-finite value (the effect must never produce one; nothing is written then).
+io::ExrPixelType chooseExrPixelType(const std::string& outType, const io::ImageRGBA& image, const std::string& path);
 
 // Linear depth (metres) -> device z of projectionForLinearDepth(nearest depth). Checks the values first.
 EffectDepth linearToEffectDepth(const io::ImageR& depth, const std::string& path);

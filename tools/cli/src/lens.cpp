@@ -3,6 +3,7 @@
 #include "cli_error.h"
 #include "ffx_dof.h"
 
+#include <cfloat>
 #include <cmath>
 #include <sstream>
 
@@ -50,6 +51,7 @@ ThinLens makeThinLens(const LensSettings& settings) {
         requirePositive("--fstop", *settings.fNumber, "");
         // The f-number is focal length over aperture diameter.
         lens.apertureRadius = lens.focalLength / (2.0 * *settings.fNumber);
+        lens.apertureOption = "--fstop";
     } else if (settings.apertureRadiusMetres) {
         const double radius = *settings.apertureRadiusMetres;
         if (!std::isfinite(radius) || radius < 0.0) {
@@ -138,8 +140,25 @@ DepthProjection projectionForLinearDepth(double nearestDepth) {
     return projectionFromNearFar(nearestDepth, INFINITY, /*reversed=*/true);
 }
 
-CocParameters computeCocParameters(const ThinLens& lens, const DepthProjection& projection, uint32_t imageWidth) {
+CocParameters computeCocParameters(const ThinLens& lens, const DepthProjection& projection, uint32_t imageWidth,
+                                   const std::string& projectionOrigin) {
     const double conversion = 0.5 * imageWidth / lens.sensorWidth;
+    // The SDK computes in single precision: a value a float cannot hold (or only as a subnormal) gives
+    // an infinite or NaN CoC. Each is named by the option it comes from.
+    const auto requireSinglePrecision = [](double value, const std::string& what) {
+        const double magnitude = std::fabs(value);
+        if (!(magnitude <= double(FLT_MAX)) || (magnitude != 0.0 && magnitude < double(FLT_MIN))) {
+            invalid(what + " = " + formatNumber(value) +
+                    " is outside the single-precision range the effect computes in (1.2e-38 to 3.4e38)");
+        }
+    };
+    requireSinglePrecision(lens.focusDistance, "--focus (metres)");
+    requireSinglePrecision(lens.focalLength, "--focal-length (metres)");
+    requireSinglePrecision(lens.apertureRadius, "the aperture radius from " + lens.apertureOption + " (metres)");
+    requireSinglePrecision(conversion, "0.5 * image width / --sensor-width (pixels per metre)");
+    requireSinglePrecision(projection.m33, "m33 of " + projectionOrigin);
+    requireSinglePrecision(projection.m34, "m34 of " + projectionOrigin);
+    requireSinglePrecision(projection.m43, "m43 of " + projectionOrigin);
     // The SDK follows the sign of view z: the focus distance is negative for a camera looking down -z.
     const double signedFocus = projection.m43 < 0.0 ? -lens.focusDistance : lens.focusDistance;
     CocParameters coc;
@@ -150,8 +169,11 @@ CocParameters computeCocParameters(const ThinLens& lens, const DepthProjection& 
         ffxDofCalculateCocBias(float(lens.apertureRadius), float(signedFocus), float(lens.focalLength),
                                float(conversion), float(projection.m33), float(projection.m34), float(projection.m43));
     if (!std::isfinite(coc.cocScale) || !std::isfinite(coc.cocBias)) {
-        invalid("the lens and depth settings give a non-finite circle of confusion (scale " +
-                formatNumber(coc.cocScale) + ", bias " + formatNumber(coc.cocBias) + ")");
+        invalid("--focus " + formatNumber(lens.focusDistance) + " m, --focal-length " +
+                formatNumber(lens.focalLength / kMillimetre) + " mm, " + lens.apertureOption + " (aperture radius " +
+                formatNumber(lens.apertureRadius) + " m) and " + projectionOrigin +
+                " give a non-finite circle of confusion (scale " + formatNumber(coc.cocScale) + ", bias " +
+                formatNumber(coc.cocBias) + ")");
     }
     return coc;
 }

@@ -39,6 +39,8 @@ struct ThinLens {
     double focalLength = 0.0;     // metres
     double focusDistance = 0.0;   // metres
     double sensorWidth = 0.0;     // metres
+    // The option the aperture radius came from, for messages: "--fstop" or "--aperture-radius".
+    std::string apertureOption = "--aperture-radius";
 };
 
 // Checks every value and converts to metres; throws CliError(InvalidValue) naming the bad option.
@@ -79,8 +81,12 @@ struct CocParameters {
     float cocBias = 0.0f;
 };
 
-// cocScale / cocBias for FfxDofDispatchDescription, through the SDK's ffxDofCalculateCocScale/Bias.
-// Throws CliError(InvalidValue) when the result is not finite.
-CocParameters computeCocParameters(const ThinLens& lens, const DepthProjection& projection, uint32_t imageWidth);
+// cocScale / cocBias for FfxDofDispatchDescription, through the SDK's ffxDofCalculateCocScale/Bias,
+// which compute in single precision. Throws CliError(InvalidValue) naming the option responsible when
+// a lens value or projection term does not fit a float (beyond 3.4e38, or non-zero below 1.2e-38), or
+// naming every input when the result is still not finite. projectionOrigin says where the projection
+// came from ("--near/--far", "--proj", "the nearest depth of d.exr (... at x=.., y=..)").
+CocParameters computeCocParameters(const ThinLens& lens, const DepthProjection& projection, uint32_t imageWidth,
+                                   const std::string& projectionOrigin = "the depth projection");
 
 }  // namespace ffxdof::cli

@@ -7,7 +7,11 @@
 
 #include <CLI/CLI.hpp>
 
+#include <algorithm>
+#include <cctype>
 #include <cstdio>
+#include <cstdlib>
+#include <limits>
 #include <exception>
 #include <map>
 #include <vector>
@@ -27,12 +31,61 @@ const char* exitCodeTable() {
 
 namespace {
 
+// CLI11 converts an empty argument to 0 and is lenient with some malformed text, so every numeric
+// option checks its text first: the whole argument must be a number (strtod's syntax, so "inf" and
+// "nan" reach the range checks, which name them), or for integers digits with an optional sign. A
+// failure is a usage error (exit 1) naming the option; range checks come later (exit 3).
+const CLI::Validator kNumber(
+    [](std::string& text) -> std::string {
+        if (text.empty() || std::isspace(static_cast<unsigned char>(text.front()))) {
+            return "expected a number, got '" + text + "'";
+        }
+        char* end = nullptr;
+        (void)std::strtod(text.c_str(), &end);
+        return *end == '\0' ? std::string() : "expected a number, got '" + text + "'";
+    },
+    "NUMBER", "number");
+
+CLI::Validator integerValidator(bool allowNegative) {
+    return CLI::Validator(
+        [allowNegative](std::string& text) -> std::string {
+            size_t digitsFrom = (!text.empty() && (text[0] == '+' || (allowNegative && text[0] == '-'))) ? 1 : 0;
+            const bool digitsOnly = text.size() > digitsFrom && text.size() - digitsFrom <= 10 &&
+                                    std::all_of(text.begin() + std::ptrdiff_t(digitsFrom), text.end(),
+                                                [](char c) { return c >= '0' && c <= '9'; });
+            if (!digitsOnly) {
+                return std::string(allowNegative ? "expected a whole number" : "expected a whole number, 0 or more") +
+                       ", got '" + text + "'";
+            }
+            return std::string();
+        },
+        allowNegative ? "INT" : "UINT", allowNegative ? "integer" : "unsigned integer");
+}
+const CLI::Validator kInteger = integerValidator(true);
+const CLI::Validator kUnsigned = integerValidator(false);
+
 void addEffectOptions(CLI::App& command, EffectOptions& effect) {
-    command.add_option("--quality", effect.quality, "Maximum number of kernel rings, 1 to 32")->capture_default_str();
+    command.add_option("--quality", effect.quality, "Maximum number of kernel rings, 1 to 32")
+        ->check(kUnsigned)
+        ->capture_default_str();
     command.add_option("--coc-limit", effect.cocLimit, "Largest CoC radius as a fraction of the image height")
+        ->check(kNumber)
         ->capture_default_str();
     command.add_flag("--no-ring-merge", effect.noRingMerge, "Never gather inner rings from coarser MIP levels");
-    command.add_option("--device", effect.device, "Vulkan physical device index (default: the first)");
+    // Stored through a wider type so that "-1" (the internal "first device" default) typed by a user is
+    // refused as the out-of-range index it is instead of selecting the first device.
+    command
+        .add_option_function<long long>(
+            "--device",
+            [&effect](const long long& index) {
+                if (index < 0 || index > std::numeric_limits<int>::max()) {
+                    throw CliError(ExitCode::InvalidValue,
+                                   "--device must be a device index, 0 or more, got " + std::to_string(index));
+                }
+                effect.device = int(index);
+            },
+            "Vulkan physical device index (default: the first)")
+        ->check(kInteger);
     command.add_flag("--validate", effect.validate,
                      "Run with the Khronos validation layer (synchronization included); any message is an error");
 }
@@ -51,7 +104,12 @@ CLI::App* addApply(CLI::App& app, ApplyArguments& args) {
     ApplyOptions& o = args.options;
     apply->add_option("--color", o.colorPath, "Color EXR (R, G, B and optional A)")->required();
     apply->add_option("--depth", o.depthPath, "Depth EXR (one channel, or see --depth-channel)")->required();
-    apply->add_option("--out", o.outputPath, "Output file: .exr (half float) or .png (8-bit sRGB)")->required();
+    apply->add_option("--out", o.outputPath, "Output file: .exr (see --out-type) or .png (8-bit sRGB)")->required();
+    apply
+        ->add_option("--out-type", o.outType,
+                     "EXR output pixels: half, float, or auto (half unless a value exceeds half's largest, 65504)")
+        ->check(CLI::IsMember({"auto", "half", "float"}))
+        ->capture_default_str();
     apply->add_option("--color-layer", o.colorLayer,
                       "Layer of the color in a multilayer EXR: reads LAYER.R, LAYER.G, LAYER.B (LAYER.A)");
     apply->add_option("--depth-channel", o.depthChannel, "Depth channel name in a multi-channel EXR, e.g. Z");
@@ -60,13 +118,15 @@ CLI::App* addApply(CLI::App& app, ApplyArguments& args) {
                      "linear: view distance in metres; device: z-buffer values in [0, 1]")
         ->check(CLI::IsMember({"linear", "device"}))
         ->capture_default_str();
-    args.nearOption = apply->add_option("--near", args.nearPlane, "Device depth: near plane, metres");
-    args.farOption = apply->add_option("--far", args.farPlane, "Device depth: far plane, metres (inf allowed)");
+    args.nearOption = apply->add_option("--near", args.nearPlane, "Device depth: near plane, metres")->check(kNumber);
+    args.farOption =
+        apply->add_option("--far", args.farPlane, "Device depth: far plane, metres (inf allowed)")->check(kNumber);
     args.projOption = apply
                           ->add_option("--proj", args.projection,
                                        "Device depth: projection matrix, 16 numbers, row-major, clip = M * view")
                           ->expected(16)
-                          ->delimiter(',');
+                          ->delimiter(',')
+                          ->check(kNumber);
     args.reverseOption =
         apply->add_flag("--reverse-depth", o.reverseDepth, "Device depth: near plane at 1, far plane at 0");
     args.nearOption->excludes(args.projOption);
@@ -74,12 +134,18 @@ CLI::App* addApply(CLI::App& app, ApplyArguments& args) {
     args.nearOption->needs(args.farOption);
     args.farOption->needs(args.nearOption);
 
-    apply->add_option("--focus", o.lens.focusMetres, "Distance in focus, metres")->required();
-    apply->add_option("--focal-length", o.lens.focalLengthMm, "Focal length, millimetres")->capture_default_str();
-    apply->add_option("--sensor-width", o.lens.sensorWidthMm, "Sensor width, millimetres")->capture_default_str();
-    args.fstopOption = apply->add_option("--fstop", args.fNumber,
-                                         "f-number (default " + CLI::detail::to_string(kDefaultFNumber) + ")");
-    args.apertureOption = apply->add_option("--aperture-radius", args.apertureRadius, "Aperture radius, metres");
+    apply->add_option("--focus", o.lens.focusMetres, "Distance in focus, metres")->required()->check(kNumber);
+    apply->add_option("--focal-length", o.lens.focalLengthMm, "Focal length, millimetres")
+        ->check(kNumber)
+        ->capture_default_str();
+    apply->add_option("--sensor-width", o.lens.sensorWidthMm, "Sensor width, millimetres")
+        ->check(kNumber)
+        ->capture_default_str();
+    args.fstopOption =
+        apply->add_option("--fstop", args.fNumber, "f-number (default " + CLI::detail::to_string(kDefaultFNumber) + ")")
+            ->check(kNumber);
+    args.apertureOption =
+        apply->add_option("--aperture-radius", args.apertureRadius, "Aperture radius, metres")->check(kNumber);
     args.fstopOption->excludes(args.apertureOption);
     addEffectOptions(*apply, o.effect);
     return apply;
@@ -136,18 +202,25 @@ int run(int argc, char** argv) {
         app.add_subcommand("demo", "Render the built-in scene, apply the effect, compare with the thin-lens truth");
     demoCommand->add_option("--out", demo.outputDirectory, "Output folder")->capture_default_str();
     demoCommand->add_option("--scene", demo.scene, "Built-in scene of the reference renderer")->capture_default_str();
-    demoCommand->add_option("--width", demo.width, "Width, pixels")->capture_default_str();
-    demoCommand->add_option("--height", demo.height, "Height, pixels")->capture_default_str();
+    demoCommand->add_option("--width", demo.width, "Width, pixels")->check(kUnsigned)->capture_default_str();
+    demoCommand->add_option("--height", demo.height, "Height, pixels")->check(kUnsigned)->capture_default_str();
     demoCommand->add_option("--lens-samples", demo.lensSamples, "Thin-lens samples per pixel of the truth")
+        ->check(kUnsigned)
+        ->capture_default_str();
+    demoCommand
+        ->add_option("--out-type", demo.outType,
+                     "EXR images: half, float, or auto (half unless a value exceeds half's largest, 65504)")
+        ->check(CLI::IsMember({"auto", "half", "float"}))
         ->capture_default_str();
     addEffectOptions(*demoCommand, demo.effect);
 
     BenchOptions bench;
     CLI::App* benchCommand =
         app.add_subcommand("bench", "Time every pass on a procedural scene against a plain copy pass");
-    benchCommand->add_option("--width", bench.width, "Width, pixels")->capture_default_str();
-    benchCommand->add_option("--height", bench.height, "Height, pixels")->capture_default_str();
+    benchCommand->add_option("--width", bench.width, "Width, pixels")->check(kUnsigned)->capture_default_str();
+    benchCommand->add_option("--height", bench.height, "Height, pixels")->check(kUnsigned)->capture_default_str();
     benchCommand->add_option("--repeat", bench.repeat, "Dispatches to time; the median is printed")
+        ->check(kUnsigned)
         ->capture_default_str();
     benchCommand->add_flag("--json", bench.json, "Print one JSON object instead of a table");
     benchCommand->add_flag("--float32", bench.float32,

@@ -1,8 +1,15 @@
 // Image file input and output for the ffx-dof tools and tests: OpenEXR (half or float) and 8-bit PNG.
 //
 // Pixels are linear floats in memory. Every writer goes through a temporary file in the target's
-// directory and rename(): an existing file is only replaced once the new one is complete, and on any
-// failure the temporary file is removed and the old file is left as it was.
+// directory, fsync() and rename(): an existing file is only replaced once the new one is complete, and
+// on any failure the temporary file is removed and the old file is left as it was. A symbolic link is
+// followed (its target is replaced, the link stays); the replacement keeps the replaced file's mode; a
+// read-only existing file (owner write bit off) is refused. Write failures read
+// "cannot write <path>: <reason>" (e.g. "No space left on device").
+//
+// Readers check the header before allocating pixel memory: a data window other than the display
+// window, a side above 16384 pixels, or fewer pixels in the file than the header claims (a truncated
+// or doctored file) is refused.
 //
 // Every failure throws IoError with a one-line message that names the file and the problem (missing,
 // not an EXR or corrupt, wrong channel count, no such channel with the list of those that exist,
@@ -74,9 +81,9 @@ void writeExr(const std::string& path, const ImageR& image, ExrPixelType type = 
 // written linearly when withAlpha, otherwise the file is RGB.
 void writePng(const std::string& path, const ImageRGBA& image, bool withAlpha = false);
 
-// Chooses the format from the extension (.exr: half EXR, .png: PNG without alpha; case-insensitive).
+// Chooses the format from the extension (.exr: EXR of exrType, .png: PNG without alpha; case-insensitive).
 // Throws IoError for any other extension.
-void writeImage(const std::string& path, const ImageRGBA& image);
+void writeImage(const std::string& path, const ImageRGBA& image, ExrPixelType exrType = ExrPixelType::Half);
 
 // Writes any file the same safe way as the image writers: writer fills a stream on a temporary file
 // in the destination's directory, which then replaces path. Throws IoError (the destination untouched)

@@ -18,13 +18,18 @@
 #include <atomic>
 #include <cerrno>
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <functional>
 #include <memory>
 #include <new>
+#include <sstream>
 
+#include <fcntl.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 namespace ffxdof::io {
@@ -33,8 +38,15 @@ namespace {
 namespace fs = std::filesystem;
 
 // Larger images than this are rejected before allocating, so a corrupt header that claims an
-// enormous data window gives an error instead of exhausting memory.
+// enormous data window gives an error instead of exhausting memory. kMaxSide is the effect's own
+// limit (FFX_DOF_MAX_RESOLUTION).
+constexpr int64_t kMaxSide = 16384;
 constexpr uint64_t kMaxPixels = uint64_t(1) << 28;
+
+std::string boxText(const Imath::Box2i& box) {
+    return "(" + std::to_string(box.min.x) + ", " + std::to_string(box.min.y) + ")-(" + std::to_string(box.max.x) +
+           ", " + std::to_string(box.max.y) + ")";
+}
 
 [[noreturn]] void fail(const std::string& path, const std::string& what) { throw IoError(path + ": " + what); }
 
@@ -108,10 +120,27 @@ void readPartChannels(const std::string& path, Imf::MultiPartInputFile& file, in
     const Imf::Header& header = file.header(part);
     checkPartReadable(path, header);
     const Imath::Box2i window = header.dataWindow();
+    const Imath::Box2i display = header.displayWindow();
+    // Pixels are stored from the data window's corner; the tools align images by their first pixel.
+    // A data window that is not the display window (overscan, a crop) would silently shift this image
+    // against another one, so it is refused rather than guessed.
+    if (window != display) {
+        fail(path, "the data window " + boxText(window) + " differs from the display window " + boxText(display) +
+                       "; only images whose data window is the display window are supported (crop or pad it)");
+    }
+    // Every size check uses the header alone, before any pixel memory is allocated.
     const int64_t w = int64_t(window.max.x) - window.min.x + 1;
     const int64_t h = int64_t(window.max.y) - window.min.y + 1;
-    if (w <= 0 || h <= 0 || uint64_t(w) * uint64_t(h) > kMaxPixels) {
-        fail(path, "data window " + std::to_string(w) + "x" + std::to_string(h) + " is empty or too large");
+    if (w <= 0 || h <= 0 || w > kMaxSide || h > kMaxSide || uint64_t(w) * uint64_t(h) > kMaxPixels) {
+        fail(path, "the header claims " + std::to_string(w) + "x" + std::to_string(h) +
+                       " pixels; width and height must be 1 to " + std::to_string(kMaxSide));
+    }
+    Imf::InputPart input(file, part);
+    // A header that claims more pixels than the file holds (a truncated or doctored file) is refused
+    // from the offset table, before allocating width x height pixels for data that is not there.
+    if (!input.isComplete()) {
+        fail(path, "the file is truncated or incomplete: it holds fewer pixels than its header claims (" +
+                       std::to_string(w) + "x" + std::to_string(h) + ")");
     }
     width = uint32_t(w);
     height = uint32_t(h);
@@ -126,7 +155,6 @@ void readPartChannels(const std::string& path, Imf::MultiPartInputFile& file, in
         frameBuffer.insert(names[i], Imf::Slice::Make(Imf::FLOAT, pixels.data() + i, window, sizeof(float) * stride,
                                                       sizeof(float) * stride * size_t(w)));
     }
-    Imf::InputPart input(file, part);
     input.setFrameBuffer(frameBuffer);
     input.readPixels(window.min.y, window.max.y);
 }
@@ -137,48 +165,145 @@ std::string layerChannel(const std::string& layerPrefix, const char* channel) {
 
 // ---- writing ------------------------------------------------------------------------------------
 
-// A temporary file next to the destination; removed on destruction unless committed by rename().
+[[noreturn]] void failWrite(const std::string& path, const std::string& reason) {
+    throw IoError("cannot write " + path + ": " + reason);
+}
+
+// Where an output really goes. A symbolic link is followed to the file it names, which is replaced;
+// the link itself stays (the policy documented in docs/cli.md).
+std::string resolveOutputPath(const std::string& path) {
+    fs::path current(path);
+    for (int level = 0; level < 40; ++level) {
+        std::error_code ec;
+        if (!fs::is_symlink(fs::symlink_status(current, ec)) || ec) return current.string();
+        const fs::path target = fs::read_symlink(current, ec);
+        if (ec) failWrite(path, "cannot read the symbolic link: " + ec.message());
+        current = target.is_absolute() ? target : current.parent_path() / target;
+    }
+    failWrite(path, "too many levels of symbolic links");
+}
+
+// Test hook: with FFX_DOF_TEST_WRITE_FAILS_AFTER_BYTES=N in the environment every output file fails
+// with ENOSPC once N bytes of it are written, so tests can check what a disk filling up midway leaves
+// behind (the old file unchanged, no temporary file) where no small file system can be mounted.
+int64_t injectedWriteLimit() {
+    const char* text = std::getenv("FFX_DOF_TEST_WRITE_FAILS_AFTER_BYTES");
+    if (text == nullptr || *text == '\0') return -1;
+    char* end = nullptr;
+    const long long limit = std::strtoll(text, &end, 10);
+    return (*end == '\0' && limit >= 0) ? int64_t(limit) : -1;
+}
+
+// A temporary file next to the destination (next to a symbolic link's target), written with POSIX
+// calls so every failure carries its errno. commit() makes it durable and renames it over the
+// destination; otherwise it is removed on destruction and the destination is never touched.
 class TempFile {
 public:
-    explicit TempFile(const std::string& destination) : destination_(destination) {
+    explicit TempFile(const std::string& destination)
+        : requested_(destination), destination_(resolveOutputPath(destination)) {
         static std::atomic<unsigned> counter{0};
-        const fs::path target(destination);
+        const fs::path target(destination_);
         const fs::path directory = target.parent_path().empty() ? fs::path(".") : target.parent_path();
         std::error_code ec;
-        if (!fs::is_directory(directory, ec)) fail(destination, "directory " + directory.string() + " does not exist");
-        if (fs::is_directory(target, ec)) fail(destination, "is a directory");
+        if (!fs::is_directory(directory, ec))
+            failWrite(requested_, "directory " + directory.string() + " does not exist");
+        if (fs::is_directory(target, ec)) failWrite(requested_, "it is a directory");
+        struct stat existing {};
+        const bool replacing = ::stat(destination_.c_str(), &existing) == 0;
+        if (replacing && !(existing.st_mode & S_IWUSR)) {
+            // rename() would replace it regardless of its mode (only the folder's mode counts), so a
+            // file marked read-only is refused here rather than silently replaced.
+            char mode[8];
+            std::snprintf(mode, sizeof(mode), "%04o", unsigned(existing.st_mode & 07777));
+            failWrite(requested_, std::string("the existing file is read-only (mode ") + mode +
+                                      "); make it writable or remove it to replace it");
+        }
         path_ = (directory / ("." + target.filename().string() + ".tmp" + std::to_string(::getpid()) + "_" +
                               std::to_string(counter++)))
                     .string();
+        fd_ = ::open(path_.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
+        if (fd_ < 0) {
+            failWrite(requested_, "cannot create a file in " + directory.string() + ": " + std::strerror(errno));
+        }
+        // The replacement keeps the mode of the file it replaces (a new file gets 0666 less the umask).
+        if (replacing && ::fchmod(fd_, existing.st_mode & 07777) != 0) {
+            failWrite(requested_, std::string("cannot set the mode of the new file: ") + std::strerror(errno));
+        }
+        writeLimit_ = injectedWriteLimit();
     }
     ~TempFile() {
-        if (!committed_) {
-            std::error_code ec;
-            fs::remove(path_, ec);
-        }
+        if (fd_ >= 0) ::close(fd_);
+        if (!committed_) ::unlink(path_.c_str());
     }
     TempFile(const TempFile&) = delete;
     TempFile& operator=(const TempFile&) = delete;
 
     const std::string& path() const { return path_; }
+    const std::string& requestedPath() const { return requested_; }
 
-    std::ofstream open() {
-        std::ofstream stream(path_, std::ios::binary | std::ios::trunc);
-        if (!stream) fail(destination_, std::string("cannot write to its directory: ") + std::strerror(errno));
-        return stream;
+    void write(const char* data, size_t size) {
+        while (size > 0) {
+            size_t chunk = size;
+            if (writeLimit_ >= 0) {
+                if (bytesWritten_ >= uint64_t(writeLimit_)) {
+                    failWrite(requested_, std::string(std::strerror(ENOSPC)) +
+                                              " (injected by FFX_DOF_TEST_WRITE_FAILS_AFTER_BYTES)");
+                }
+                chunk = std::min<uint64_t>(chunk, uint64_t(writeLimit_) - bytesWritten_);
+            }
+            const ssize_t written = ::write(fd_, data, chunk);
+            if (written < 0) {
+                if (errno == EINTR) continue;
+                failWrite(requested_, std::strerror(errno));
+            }
+            data += written;
+            size -= size_t(written);
+            bytesWritten_ += uint64_t(written);
+        }
+    }
+    void seek(uint64_t position) {
+        if (::lseek(fd_, off_t(position), SEEK_SET) < 0) failWrite(requested_, std::strerror(errno));
     }
 
     void commit() {
-        std::error_code ec;
-        fs::rename(path_, destination_, ec);
-        if (ec) fail(destination_, "cannot replace the file: " + ec.message());
+        // A full disk may only show at fsync or close (delayed allocation, network file systems).
+        if (::fsync(fd_) != 0) failWrite(requested_, std::strerror(errno));
+        const int fd = fd_;
+        fd_ = -1;
+        if (::close(fd) != 0) failWrite(requested_, std::strerror(errno));
+        if (::rename(path_.c_str(), destination_.c_str()) != 0) {
+            failWrite(requested_, std::string("cannot replace the file: ") + std::strerror(errno));
+        }
         committed_ = true;
     }
 
 private:
-    std::string destination_;
+    std::string requested_;    // the path as given, for messages
+    std::string destination_;  // the file that is replaced: requested_ with symbolic links followed
     std::string path_;
+    int fd_ = -1;
+    int64_t writeLimit_ = -1;
+    uint64_t bytesWritten_ = 0;
     bool committed_ = false;
+};
+
+// OpenEXR's output stream on a TempFile: OpenEXR writes the pixels, then seeks back for the offset table.
+class TempFileExrStream final : public Imf::OStream {
+public:
+    explicit TempFileExrStream(TempFile& file) : Imf::OStream(file.path().c_str()), file_(file) {}
+    void write(const char c[], int n) override {
+        file_.write(c, size_t(n));
+        position_ += uint64_t(n);
+    }
+    uint64_t tellp() override { return position_; }
+    void seekp(uint64_t position) override {
+        file_.seek(position);
+        position_ = position;
+    }
+
+private:
+    TempFile& file_;
+    uint64_t position_ = 0;
 };
 
 void checkImage(const std::string& path, uint32_t width, uint32_t height, size_t values, size_t channels) {
@@ -195,35 +320,34 @@ void writeExrChannels(const std::string& path, uint32_t width, uint32_t height, 
     const size_t channelCount = names.size();
     checkImage(path, width, height, pixels.size(), channelCount);
     TempFile temp(path);
-    {
-        std::ofstream stream = temp.open();
-        guardExr<int>(path, [&] {
-            Imf::Header header{int(width), int(height)};
-            header.compression() = Imf::ZIP_COMPRESSION;
-            const Imf::PixelType pixelType = type == ExrPixelType::Half ? Imf::HALF : Imf::FLOAT;
-            for (const std::string& name : names) header.channels().insert(name, Imf::Channel(pixelType));
-            std::vector<half> halves;
-            const char* base = reinterpret_cast<const char*>(pixels.data());
-            size_t elementSize = sizeof(float);
-            if (type == ExrPixelType::Half) {
-                halves.assign(pixels.begin(), pixels.end());
-                base = reinterpret_cast<const char*>(halves.data());
-                elementSize = sizeof(half);
-            }
-            Imf::FrameBuffer frameBuffer;
-            for (size_t i = 0; i < channelCount; ++i) {
-                frameBuffer.insert(names[i],
-                                   Imf::Slice(pixelType, const_cast<char*>(base + i * elementSize),
-                                              elementSize * channelCount, elementSize * channelCount * width));
-            }
-            Imf::StdOFStream exrStream(stream, temp.path().c_str());
-            Imf::OutputFile output(exrStream, header);
-            output.setFrameBuffer(frameBuffer);
-            output.writePixels(int(height));
-            return 0;
-        });
-        stream.flush();
-        if (!stream) fail(path, "write failed (disk full?)");
+    try {
+        Imf::Header header{int(width), int(height)};
+        header.compression() = Imf::ZIP_COMPRESSION;
+        const Imf::PixelType pixelType = type == ExrPixelType::Half ? Imf::HALF : Imf::FLOAT;
+        for (const std::string& name : names) header.channels().insert(name, Imf::Channel(pixelType));
+        std::vector<half> halves;
+        const char* base = reinterpret_cast<const char*>(pixels.data());
+        size_t elementSize = sizeof(float);
+        if (type == ExrPixelType::Half) {
+            halves.assign(pixels.begin(), pixels.end());
+            base = reinterpret_cast<const char*>(halves.data());
+            elementSize = sizeof(half);
+        }
+        Imf::FrameBuffer frameBuffer;
+        for (size_t i = 0; i < channelCount; ++i) {
+            frameBuffer.insert(names[i], Imf::Slice(pixelType, const_cast<char*>(base + i * elementSize),
+                                                    elementSize * channelCount, elementSize * channelCount * width));
+        }
+        TempFileExrStream exrStream(temp);
+        Imf::OutputFile output(exrStream, header);
+        output.setFrameBuffer(frameBuffer);
+        output.writePixels(int(height));
+    } catch (const IoError&) {
+        throw;
+    } catch (const std::bad_alloc&) {
+        failWrite(path, "out of memory while encoding");
+    } catch (const std::exception& error) {
+        failWrite(path, error.what());
     }
     temp.commit();
 }
@@ -343,12 +467,13 @@ void writePng(const std::string& path, const ImageRGBA& image, bool withAlpha) {
 
 void writeFileReplacing(const std::string& path, const std::function<void(std::ostream&)>& writer) {
     TempFile temp(path);
-    {
-        std::ofstream stream = temp.open();
-        writer(stream);
-        stream.flush();
-        if (!stream) fail(path, "write failed (disk full?)");
-    }
+    // The content is made in memory first, so every byte reaches the file through TempFile::write and
+    // its error reporting.
+    std::ostringstream content;
+    writer(content);
+    if (!content) failWrite(path, "the content could not be produced");
+    const std::string bytes = content.str();
+    temp.write(bytes.data(), bytes.size());
     temp.commit();
 }
 
@@ -358,9 +483,9 @@ bool hasExtension(const std::string& path, const std::string& extension) {
                       [](char a, char b) { return std::tolower((unsigned char)a) == std::tolower((unsigned char)b); });
 }
 
-void writeImage(const std::string& path, const ImageRGBA& image) {
+void writeImage(const std::string& path, const ImageRGBA& image, ExrPixelType exrType) {
     if (hasExtension(path, ".exr")) {
-        writeExr(path, image, ExrPixelType::Half);
+        writeExr(path, image, exrType);
     } else if (hasExtension(path, ".png")) {
         writePng(path, image, false);
     } else {
