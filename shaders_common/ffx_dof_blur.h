@@ -68,8 +68,9 @@ struct FfxDofGather
     FfxFloat32 nearWeight;
     FfxFloat32x3 fillSum;
     FfxFloat32 fillCount;
-    FfxDofBucket outer;
-    FfxFloat32 cocSpread;  // largest |radius - own radius| among the samples seen
+    FfxDofBucket farFront;  // far-field samples of the texel's own surface and nearer
+    FfxDofBucket farBack;   // far-field samples behind it
+    FfxFloat32 cocSpread;   // largest |radius - own radius| among the samples seen
 };
 
 // What every ring of one texel's kernel shares.
@@ -110,10 +111,9 @@ FFX_DOF_INLINE void ffxDofGatherRing(FFX_DOF_INOUT(FfxDofGather) gather, FfxDofK
     FfxBoolean holeFill = parts.nearField && parts.farField;
     FfxFloat32 texelSize = FfxFloat32(1u << mip);
     FfxFloat32 sampleWeight = texelSize * texelSize * presence;
-    FfxDofBucket ringBucket = ffxDofEmptyBucket();
+    FfxFloat32 centerAbsCoc = abs(kernel.centerCoc);
     FfxFloat32x3 ringFillSum = FfxFloat32x3(0.0f, 0.0f, 0.0f);
     FfxFloat32 ringFillCount = 0.0f;
-    FfxFloat32 sampleCount = 0.0f;
     FfxFloat32 mipScale = 1.0f / texelSize;
     FfxFloat32 spacing = kernel.spacing * mipScale;
     // In units of MIP texels: the kernel centre less half a texel, so that (texel - centre) is the
@@ -158,25 +158,21 @@ FFX_DOF_INLINE void ffxDofGatherRing(FFX_DOF_INOUT(FfxDofGather) gather, FfxDofK
         }
         if (parts.farField)
         {
-            ringBucket.color += color * farWeight;
-            ringBucket.weight += farWeight;
-            ringBucket.radius += absCoc * farWeight;
-            ringBucket.coverage += reach * farShare;
+            FfxFloat32 frontShare = kernel.centerIsNear ? 0.0f : ffxDofFarFrontShare(absCoc, centerAbsCoc);
+            FfxFloat32 frontWeight = farWeight * frontShare;
+            gather.farFront.color += color * frontWeight;
+            gather.farFront.weight += frontWeight;
+            gather.farBack.color += color * (farWeight - frontWeight);
+            gather.farBack.weight += farWeight - frontWeight;
         }
         if (holeFill)
         {
             ringFillSum += color * farShare;
             ringFillCount += farShare;
         }
-        sampleCount += valid;
     }
-    // A ring of presence 0 leaves everything as it was (no weight, no occlusion).
-    ringBucket.coverage *= presence;
-    ringBucket.sampleCount = sampleCount;
     gather.fillSum += ringFillSum * sampleWeight;
     gather.fillCount += ringFillCount * sampleWeight;
-    if (parts.farField)
-        gather.outer = ffxDofMergeBuckets(gather.outer, ringBucket, kernel.spacing);
 }
 
 // Gathers every ring inside the outermost one, from the outside in. Rings 1 .. rings - 1 form groups
@@ -232,10 +228,14 @@ FFX_DOF_INLINE FfxDofBlurResult ffxDofFinishGather(FfxDofGather gather, FfxDofKe
         result.nearColor = ffxDofToDofFloat3(gather.nearSum / gather.nearWeight);
         result.alpha.x = ffxDofNearOpacity(gather.nearWeight);
     }
+    // The hole fill is background to the near texel it fills.
     FfxFloat32 fillWeight = kernel.centerIsNear ? ffxDofAreaWeight(abs(kernel.centerCoc)) : 0.0f;
-    FfxFloat32 farWeight = gather.outer.weight + gather.fillCount * fillWeight;
-    if (farWeight > 0.0f)
-        result.farColor = ffxDofToDofFloat3((gather.outer.color + gather.fillSum * fillWeight) / farWeight);
+    FfxDofBucket back = gather.farBack;
+    back.color += gather.fillSum * fillWeight;
+    back.weight += gather.fillCount * fillWeight;
+    FfxFloat32x3 farColor;
+    if (ffxDofComposeFarLayers(gather.farFront, back, farColor))
+        result.farColor = ffxDofToDofFloat3(farColor);
     else
         result.alpha.y = 0.0f;
     return result;
@@ -299,7 +299,8 @@ FFX_DOF_INLINE FfxDofBlurResult ffxDofBlurTexel(FfxUInt32x2 texel, FfxFloat32x4 
     gather.nearWeight = 0.0f;
     gather.fillSum = FfxFloat32x3(0.0f, 0.0f, 0.0f);
     gather.fillCount = 0.0f;
-    gather.outer = ffxDofEmptyBucket();
+    gather.farFront = ffxDofEmptyBucket();
+    gather.farBack = ffxDofEmptyBucket();
     gather.cocSpread = 0.0f;
 
     // An equal-weight tile is all near or all far; the texel's own radius tells which.

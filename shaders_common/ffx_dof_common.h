@@ -74,6 +74,10 @@
 // highlights a fraction of a pixel nearer than their background must keep their own radius
 // (0.5 cost the far-highlights scene 0.29 dB, 0.1 nothing; docs/technique.md).
 #define FFX_DOF_EQUAL_WEIGHT_SPREAD 0.1f
+// Far-field samples up to this much farther than the texel itself (|radius| larger, half-res px) are
+// its own surface (front layer), so that a receding surface is not split into layers; the share then
+// falls to 0 over one more pixel (ffxDofFarFrontShare).
+#define FFX_DOF_FAR_FRONT_TOLERANCE 0.5f
 
 // Tile classes of the blur pass (ffxDofClassifyTile), cheapest first.
 #define FFX_DOF_TILE_CLASS_COPY 0u       // every kernel is in focus: the texel is the far layer
@@ -149,6 +153,47 @@ FFX_DOF_INLINE FfxFloat32 ffxDofQuadWeight(FfxFloat32 referenceCoc, FfxFloat32 c
     return max(ffxDofBilateralWeight(referenceCoc, coc), ffxDofSaturate((1.25f - cocRange) * 4.0f));
 }
 
+// Luminance of the quad's reference pixel (the first whose radius is the reference).
+FFX_DOF_INLINE FfxFloat32 ffxDofQuadReferenceLuminance(FfxFloat32 reference, FfxFloat32 coc0, FfxFloat32 coc1,
+                                                       FfxFloat32 coc2, FfxDofFloat3 color0, FfxDofFloat3 color1,
+                                                       FfxDofFloat3 color2, FfxDofFloat3 color3)
+{
+    if (coc0 == reference)
+        return ffxDofLuminance(color0);
+    if (coc1 == reference)
+        return ffxDofLuminance(color1);
+    if (coc2 == reference)
+        return ffxDofLuminance(color2);
+    return ffxDofLuminance(color3);
+}
+
+// Keeps the energy of small lights through the bilateral reduction, which would drop the pixels of
+// another radius than the quad's reference:
+// - a pixel far brighter than the reference pixel is kept whatever its radius (weight 1 from 4 times
+//   the reference's luminance, none below 2 times): a small light among pixels of another radius
+//   would otherwise vanish from the half-resolution image and every MIP above it. Its radius then
+//   dominates the texel's (radii are averaged with luminance weights), so it spreads with its disc;
+// - where the reference is itself such a light in the far field, the far darker pixels behind it are
+//   kept as well (same ratios): dropped, the light's color would fill the whole texel, and a light of
+//   a few texels would gain up to a third of its energy at every MIP level.
+FFX_DOF_INLINE FfxFloat32 ffxDofLightKeep(FfxDofFloat3 color, FfxFloat32 coc, FfxFloat32 referenceCoc,
+                                          FfxFloat32 referenceLuminance)
+{
+    // Only within the far field: a near-field pixel in a far texel, or the reverse,
+    // would move the texel's radius across the layers.
+    if (coc >= FFX_DOF_NEAR_THRESHOLD || referenceCoc >= FFX_DOF_NEAR_THRESHOLD)
+        return 0.0f;
+    FfxFloat32 luminance = ffxDofLuminance(color);
+    // An in-focus pixel is drawn from the full-resolution input: kept in a blurred texel, it would
+    // only spread its color into the background.
+    FfxFloat32 brighter = ffxDofSaturate(luminance / (2.0f * referenceLuminance + 1e-4f) - 1.0f) *
+                          ffxDofSaturate(-coc - FFX_DOF_IN_FOCUS_RADIUS);
+    FfxFloat32 darkerBehind = ffxDofSaturate(referenceLuminance / (2.0f * luminance + 1e-4f) - 1.0f) *
+                              ffxDofSaturate(referenceCoc - coc) *
+                              ffxDofSaturate(-referenceCoc - FFX_DOF_IN_FOCUS_RADIUS);
+    return max(brighter, darkerBehind);
+}
+
 // Reduces a 2x2 quad (0: top-left, 1: top-right, 2: bottom-left, 3: bottom-right). The same kernel
 // makes every MIP level. The radius is averaged with the color's luminance as an extra weight: the
 // texel's light spreads with the radius of the pixels it comes from (a bright point keeps its own
@@ -159,10 +204,16 @@ FFX_DOF_INLINE void ffxDofBilateralReduce(FfxDofFloat3 color0, FfxDofFloat3 colo
 {
     FfxFloat32 reference = ffxDofQuadReferenceCoc(coc0, coc1, coc2, coc3);
     FfxFloat32 range = max(max(coc0, coc1), max(coc2, coc3)) - min(min(coc0, coc1), min(coc2, coc3));
-    FfxFloat32 weight0 = ffxDofQuadWeight(reference, range, coc0);
-    FfxFloat32 weight1 = ffxDofQuadWeight(reference, range, coc1);
-    FfxFloat32 weight2 = ffxDofQuadWeight(reference, range, coc2);
-    FfxFloat32 weight3 = ffxDofQuadWeight(reference, range, coc3);
+    FfxFloat32 referenceLight =
+        ffxDofQuadReferenceLuminance(reference, coc0, coc1, coc2, color0, color1, color2, color3);
+    FfxFloat32 weight0 =
+        max(ffxDofQuadWeight(reference, range, coc0), ffxDofLightKeep(color0, coc0, reference, referenceLight));
+    FfxFloat32 weight1 =
+        max(ffxDofQuadWeight(reference, range, coc1), ffxDofLightKeep(color1, coc1, reference, referenceLight));
+    FfxFloat32 weight2 =
+        max(ffxDofQuadWeight(reference, range, coc2), ffxDofLightKeep(color2, coc2, reference, referenceLight));
+    FfxFloat32 weight3 =
+        max(ffxDofQuadWeight(reference, range, coc3), ffxDofLightKeep(color3, coc3, reference, referenceLight));
     FfxFloat32 normalization = 1.0f / (weight0 + weight1 + weight2 + weight3);  // the reference weighs 1
     color = (color0 * FfxDofFloat(weight0) + color1 * FfxDofFloat(weight1) + color2 * FfxDofFloat(weight2) +
              color3 * FfxDofFloat(weight3)) *
@@ -428,14 +479,11 @@ FFX_DOF_INLINE FfxFloat32 ffxDofReach(FfxFloat32 absRadius, FfxFloat32 distance)
 // normalized so that a radius of half a pixel or less weighs 4.
 FFX_DOF_INLINE FfxFloat32 ffxDofAreaWeight(FfxFloat32 absRadius) { return 1.0f / max(absRadius * absRadius, 0.25f); }
 
-// A set of far-field samples (one ring, or all rings outside it).
+// A weighted sum of far-field samples.
 struct FfxDofBucket
 {
-    FfxFloat32x3 color;      // sum of color * weight (32-bit: hundreds of HDR samples overflow 16 bits)
-    FfxFloat32 weight;       // sum of reach * area weight
-    FfxFloat32 radius;       // sum of |radius| * weight
-    FfxFloat32 coverage;     // sum of reach
-    FfxFloat32 sampleCount;  // samples looked at (set per ring, near-field samples included)
+    FfxFloat32x3 color;  // sum of color * weight (32-bit: hundreds of HDR samples overflow 16 bits)
+    FfxFloat32 weight;   // sum of reach * area weight * texel area
 };
 
 FFX_DOF_INLINE FfxDofBucket ffxDofEmptyBucket()
@@ -443,46 +491,39 @@ FFX_DOF_INLINE FfxDofBucket ffxDofEmptyBucket()
     FfxDofBucket bucket;
     bucket.color = FfxFloat32x3(0.0f, 0.0f, 0.0f);
     bucket.weight = 0.0f;
-    bucket.radius = 0.0f;
-    bucket.coverage = 0.0f;
-    bucket.sampleCount = 0.0f;
     return bucket;
 }
 
-// `weight` is the sample's reach * ffxDofAreaWeight(absRadius) * its own weight (the caller may
-// have computed it already, as the blur does for near and far samples alike).
-FFX_DOF_INLINE void ffxDofBucketAddWeighted(FFX_DOF_INOUT(FfxDofBucket) bucket, FfxDofFloat3 color,
-                                            FfxFloat32 absRadius, FfxFloat32 reach, FfxFloat32 weight)
+// How much of a far-field sample of |radius| `absRadius` belongs to the front layer of a texel whose
+// own far-field |radius| is `centerAbsRadius`: 1 up to FFX_DOF_FAR_FRONT_TOLERANCE beyond the texel's
+// own radius (the texel's surface and everything nearer the camera), falling to 0 one pixel of radius
+// farther (the background, seen only where the front layer leaves gaps). A texel in the near field has
+// no front layer: every far-field sample is background to it.
+FFX_DOF_INLINE FfxFloat32 ffxDofFarFrontShare(FfxFloat32 absRadius, FfxFloat32 centerAbsRadius)
 {
-    bucket.color += ffxDofToFloat32x3(color) * weight;
-    bucket.weight += weight;
-    bucket.radius += absRadius * weight;
-    bucket.coverage += reach;
-}
-FFX_DOF_INLINE void ffxDofBucketAdd(FFX_DOF_INOUT(FfxDofBucket) bucket, FfxDofFloat3 color, FfxFloat32 absRadius,
-                                    FfxFloat32 reach, FfxFloat32 sampleWeight)
-{
-    ffxDofBucketAddWeighted(bucket, color, absRadius, reach, reach * ffxDofAreaWeight(absRadius) * sampleWeight);
+    return ffxDofSaturate(centerAbsRadius + FFX_DOF_FAR_FRONT_TOLERANCE + 1.0f - absRadius);
 }
 
-// Merges the ring just gathered (`inner`) into the bucket of every ring outside it. Both are seen as
-// rings of their mean radius; where the inner one is nearer the camera (a smaller far-field radius)
-// it hides the outer one in proportion to how much of the ring reaches the centre, fully once the
-// radii differ by a ring spacing. Equal radii never occlude, so a flat region averages plainly.
-FFX_DOF_INLINE FfxDofBucket ffxDofMergeBuckets(FfxDofBucket outer, FfxDofBucket inner, FfxFloat32 ringSpacing)
+// Far-field color of a texel from its two layers, composed front to back. Every far sample spreads its
+// light over its own disc, so the front layer's summed weights over pi are the share of the texel it
+// covers (a solid surface of any radius sums to pi: opacity 1); the background shows through the rest.
+// Without this, the ring occlusion of the technique let a small light nearer than its background
+// occlude the whole kernel at its own position: its centre kept the input's brightness on top of its
+// disc. Returns false when neither layer has weight (no far-field sample reaches the texel).
+FFX_DOF_INLINE FfxBoolean ffxDofComposeFarLayers(FfxDofBucket front, FfxDofBucket back, FFX_DOF_OUT(FfxFloat32x3) color)
 {
-    FfxFloat32 outerRadius = outer.weight > 0.0f ? outer.radius / outer.weight : 0.0f;
-    FfxFloat32 innerRadius = inner.weight > 0.0f ? inner.radius / inner.weight : 0.0f;
-    FfxFloat32 innerCoverage = inner.sampleCount > 0.0f ? inner.coverage / inner.sampleCount : 0.0f;
-    FfxFloat32 occlusion = innerCoverage * ffxDofSaturate((outerRadius - innerRadius) / max(ringSpacing, 1e-6f));
-    FfxFloat32 keep = 1.0f - occlusion;
-    FfxDofBucket merged;
-    merged.color = outer.color * keep + inner.color;
-    merged.weight = outer.weight * keep + inner.weight;
-    merged.radius = outer.radius * keep + inner.radius;
-    merged.coverage = outer.coverage + inner.coverage;
-    merged.sampleCount = outer.sampleCount + inner.sampleCount;
-    return merged;
+    color = FfxFloat32x3(0.0f, 0.0f, 0.0f);
+    if (front.weight <= 0.0f && back.weight <= 0.0f)
+        return false;
+    if (back.weight <= 0.0f)
+    {
+        color = front.color / front.weight;
+        return true;
+    }
+    FfxFloat32 frontOpacity = ffxDofSaturate(front.weight * (1.0f / 3.14159265359f));
+    FfxFloat32x3 frontColor = front.weight > 0.0f ? front.color / front.weight : FfxFloat32x3(0.0f, 0.0f, 0.0f);
+    color = frontColor * frontOpacity + (back.color / back.weight) * (1.0f - frontOpacity);
+    return true;
 }
 
 // Near-field opacity from the weights of the near samples that reach the pixel (scatter as gather).

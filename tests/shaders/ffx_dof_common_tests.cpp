@@ -92,6 +92,36 @@ TEST_CASE("Bilateral reduce keeps a bright pixel's energy and radius wherever it
     }
 }
 
+TEST_CASE("Bilateral reduce keeps the energy of a small far light in front of a farther background", "[downsample]") {
+    // A light of radius -10.4 among background pixels of -16 (1, 2 or 3 of the quad's pixels), 1000x
+    // brighter: the texel holds the quad's plain average (energy kept) with the light's radius.
+    for (int lights = 1; lights <= 3; ++lights) {
+        for (int first = 0; first < 4; ++first) {
+            FfxFloat32x3 colors[4];
+            float cocs[4];
+            for (int i = 0; i < 4; ++i) {
+                const bool light = (i - first + 4) % 4 < lights;
+                colors[i] = FfxFloat32x3(light ? 50.0f : 0.05f);
+                cocs[i] = light ? -10.4f : -16.0f;
+            }
+            FfxFloat32x3 color;
+            float coc;
+            ffxDofBilateralReduce(colors[0], colors[1], colors[2], colors[3], cocs[0], cocs[1], cocs[2], cocs[3], color,
+                                  coc);
+            INFO(lights << " light pixels from " << first);
+            CHECK(color.x == Approx((50.0f * lights + 0.05f * (4 - lights)) / 4.0f).epsilon(1e-4));
+            CHECK(coc == Approx(-10.4f).margin(0.02f));
+        }
+    }
+    // A dark pixel in front of a bright background is still dropped (no dark halo in the background).
+    FfxFloat32x3 color;
+    float coc;
+    ffxDofBilateralReduce(FfxFloat32x3(0.01f), FfxFloat32x3(2.0f), FfxFloat32x3(2.0f), FfxFloat32x3(2.0f), -3.0f,
+                          -16.0f, -16.0f, -16.0f, color, coc);
+    CHECK(color.x == Approx(2.0f));
+    CHECK(coc == Approx(-16.0f));
+}
+
 TEST_CASE("Ring merge amount: merged when flat, full when not, continuous in between", "[kernel]") {
     CHECK(ffxDofRingMergeAmount(0.0f) == 1.0f);
     CHECK(ffxDofRingMergeAmount(0.5f) == 1.0f);
@@ -328,34 +358,41 @@ TEST_CASE("Reach and area weight", "[gather]") {
     CHECK(ffxDofAreaWeight(0.1f) == Approx(4.0f));
 }
 
-TEST_CASE("Bucket merge: equal radii add, a nearer covering ring hides the outer rings", "[gather]") {
-    FfxDofBucket outer = ffxDofEmptyBucket();
-    ffxDofBucketAdd(outer, FfxFloat32x3(1, 0, 0), 10.0f, 1.0f, 1.0f);
-    outer.sampleCount = 1.0f;
-    FfxDofBucket inner = ffxDofEmptyBucket();
-    ffxDofBucketAdd(inner, FfxFloat32x3(0, 1, 0), 10.0f, 1.0f, 1.0f);
-    inner.sampleCount = 1.0f;
-    FfxDofBucket merged = ffxDofMergeBuckets(outer, inner, 1.0f);
-    CHECK(merged.weight == Approx(2.0f * ffxDofAreaWeight(10.0f)));
-    CHECK(merged.color.x / merged.weight == Approx(0.5f));
+TEST_CASE("Far layers: a texel's own surface and nearer samples in front, farther ones behind", "[gather]") {
+    // Own radius 10: up to 10.5 fully front, 11.5 and beyond fully back, linear between.
+    CHECK(ffxDofFarFrontShare(4.0f, 10.0f) == 1.0f);
+    CHECK(ffxDofFarFrontShare(10.5f, 10.0f) == 1.0f);
+    CHECK(ffxDofFarFrontShare(11.0f, 10.0f) == Approx(0.5f));
+    CHECK(ffxDofFarFrontShare(11.5f, 10.0f) == 0.0f);
+    CHECK(ffxDofFarFrontShare(30.0f, 10.0f) == 0.0f);
+}
 
-    // Inner ring nearer (radius 4 < 10) and fully reaching: the outer bucket is hidden.
-    FfxDofBucket nearInner = ffxDofEmptyBucket();
-    ffxDofBucketAdd(nearInner, FfxFloat32x3(0, 1, 0), 4.0f, 1.0f, 1.0f);
-    nearInner.sampleCount = 1.0f;
-    merged = ffxDofMergeBuckets(outer, nearInner, 1.0f);
-    CHECK(merged.color.x == Approx(0.0f).margin(1e-6));
-    CHECK(merged.color.y / merged.weight == Approx(1.0f));
-
-    // Half coverage hides half; a farther inner ring hides nothing.
-    nearInner.sampleCount = 2.0f;
-    merged = ffxDofMergeBuckets(outer, nearInner, 1.0f);
-    CHECK(merged.color.x == Approx(0.5f * ffxDofAreaWeight(10.0f)));
-    FfxDofBucket farInner = ffxDofEmptyBucket();
-    ffxDofBucketAdd(farInner, FfxFloat32x3(0, 1, 0), 20.0f, 1.0f, 1.0f);
-    farInner.sampleCount = 1.0f;
-    merged = ffxDofMergeBuckets(outer, farInner, 1.0f);
-    CHECK(merged.color.x == Approx(ffxDofAreaWeight(10.0f)));
+TEST_CASE("Far layers compose front to back by the front layer's coverage", "[gather]") {
+    const float pi = 3.14159265f;
+    FfxFloat32x3 color;
+    FfxDofBucket front = ffxDofEmptyBucket(), back = ffxDofEmptyBucket();
+    CHECK_FALSE(ffxDofComposeFarLayers(front, back, color));
+    // Only a back layer (a near texel's background): its average.
+    back.color = FfxFloat32x3(2, 0, 0);
+    back.weight = 4.0f;
+    REQUIRE(ffxDofComposeFarLayers(front, back, color));
+    CHECK(color.x == Approx(0.5f));
+    // A solid front surface (weights summing to pi) hides the background entirely.
+    front.color = FfxFloat32x3(0, pi, 0);
+    front.weight = pi;
+    REQUIRE(ffxDofComposeFarLayers(front, back, color));
+    CHECK(color.x == Approx(0.0f).margin(1e-6));
+    CHECK(color.y == Approx(1.0f));
+    // A small light in front (weight 0.1 of pi): 10% of it over 90% of the background, whatever the
+    // light's brightness (its centre must not keep the input's brightness).
+    front.color = FfxFloat32x3(0, 50.0f * 0.1f * pi, 0);
+    front.weight = 0.1f * pi;
+    REQUIRE(ffxDofComposeFarLayers(front, back, color));
+    CHECK(color.x == Approx(0.45f));
+    CHECK(color.y == Approx(5.0f));
+    // Only a front layer: its average, even where its coverage is partial (nothing behind it).
+    REQUIRE(ffxDofComposeFarLayers(front, ffxDofEmptyBucket(), color));
+    CHECK(color.y == Approx(50.0f));
 }
 
 TEST_CASE("Near opacity of a uniform near field of the kernel radius is 1", "[gather]") {
