@@ -8,6 +8,8 @@
 //   reversed vs standard depth, same scene:      max |diff| <= kReverseMaxAbs
 #include "vk_test_support.h"
 
+#include <vector>
+
 using namespace ffxdof;
 using namespace ffxdof::vktest;
 
@@ -110,7 +112,18 @@ TEST_CASE("resolutions from 1x1 to 4096 wide", "[vulkan]") {
         vkrun::RunSettings settings = settingsFor(scene);
         settings.quality = size.width * size.height > 100000 ? 1 : 2;
         settings.colorFormat = settings.outputFormat = VK_FORMAT_R16G16B16A16_SFLOAT;
+        settings.cocLimitFactor = 8.0f / float(size.height);  // a limit of 4 half-res px: the scene's radii
         const vkrun::RunResult result = run(scene, settings);
+        // Not only finite: the effect ran at this size. The far field (every pixel below the focus band
+        // and outside the disc) is blurred, so the output differs from the input there, while a 1x1 image
+        // (one far pixel, nothing to gather from) comes back as it was.
+        const Difference d = difference(result.output, scene.color);
+        CAPTURE(d.maxAbs, d.meanAbs);
+        if (size.width * size.height == 1) {
+            CHECK(d.maxAbs <= 0.01);
+        } else {
+            CHECK(d.meanAbs > 1e-3);
+        }
         if (size.width == 1920) {
             // Budget for the internal images at 1080p (resource table formats).
             CHECK(result.internalMemoryBytes > 0);
@@ -120,16 +133,29 @@ TEST_CASE("resolutions from 1x1 to 4096 wide", "[vulkan]") {
 }
 
 TEST_CASE("quality from 1 to the maximum", "[vulkan]") {
+    // Radii of 8 half-res px need 8 rings: up to there each step of quality gathers more rings, so the
+    // image must change; the maximum must change it too against quality 1. The limit (0.7 * 24 / 2 =
+    // 8.4 half-res px) lets the radii through; the default 0.05 would clamp them below one pixel.
     const Scene scene = makeScene(32, 24, 8.0f);
+    std::vector<vkrun::RunResult> results;
+    std::vector<uint32_t> qualities;
     for (uint32_t quality = 1; quality <= FFX_DOF_MAX_QUALITY; quality += (quality < 4 ? 1 : 7)) {
         CAPTURE(quality);
         vkrun::RunSettings settings = settingsFor(scene);
         settings.quality = quality;
-        run(scene, settings);
+        settings.cocLimitFactor = 0.7f;
+        results.push_back(run(scene, settings));
+        qualities.push_back(quality);
     }
     vkrun::RunSettings settings = settingsFor(scene);
     settings.quality = FFX_DOF_MAX_QUALITY;
-    run(scene, settings);
+    settings.cocLimitFactor = 0.7f;
+    const vkrun::RunResult maximum = run(scene, settings);
+    for (size_t i = 1; i < results.size() && qualities[i] <= 8; ++i) {
+        CAPTURE(qualities[i - 1], qualities[i]);
+        CHECK(difference(results[i].output, results[i - 1].output).maxAbs > 1e-3);
+    }
+    CHECK(difference(maximum.output, results.front().output).maxAbs > 1e-3);
 }
 
 TEST_CASE("cocLimitFactor 0 returns the input, and a very large limit still works", "[vulkan]") {
@@ -144,7 +170,22 @@ TEST_CASE("cocLimitFactor 0 returns the input, and a very large limit still work
     Scene wide = makeScene(64, 48, 200.0f);
     settings.cocScale = wide.cocScale;
     settings.cocBias = wide.cocBias;
-    run(wide, settings);
+    const vkrun::RunResult huge = run(wide, settings);
+    // "Still works": radii far beyond the image blur it (more than the normal limit does) and keep the
+    // energy: the mean of each channel stays near the input's, with no dark or bright blow-up.
+    settings.cocLimitFactor = 0.05f;
+    const vkrun::RunResult limited = run(wide, settings);
+    CHECK(difference(huge.output, wide.color).meanAbs > difference(limited.output, wide.color).meanAbs);
+    for (int c = 0; c < 3; ++c) {
+        double inputMean = 0.0, outputMean = 0.0;
+        for (size_t i = 0; i < size_t(64 * 48); ++i) {
+            inputMean += wide.color.pixels[i * 4 + c];
+            outputMean += huge.output.pixels[i * 4 + c];
+        }
+        CAPTURE(c, inputMean, outputMean);
+        CHECK(outputMean > 0.5 * inputMean);
+        CHECK(outputMean < 2.0 * inputMean);
+    }
 }
 
 TEST_CASE("zero CoC everywhere returns the input", "[vulkan]") {
