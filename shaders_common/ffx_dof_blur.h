@@ -8,9 +8,10 @@
 //   one-texel source is read once by every texel whose kernel covers it: a flat bokeh disc).
 //   Near field (radius >= FFX_DOF_NEAR_THRESHOLD): scatter-as-gather, each sample weighted by reach
 //   and inverse area; opacity from the summed area weights (ffxDofNearOpacity).
-//   Far field (everything else): per ring a bucket, merged into the bucket of the outer rings with
-//   ffxDofMergeBuckets (a nearer inner ring occludes). A sample only counts within its own radius,
-//   so in-focus and foreground color never spreads into the far field beyond it.
+//   Far field (everything else): two layers, the texel's own surface and nearer (front) and what
+//   lies behind it (back), composed by the front's coverage (ffxDofComposeFarLayers). A sample only
+//   counts within its own radius, so in-focus and foreground color never spreads into the far field
+//   beyond it.
 //   Hole filling: when the texel itself is near, every far-field sample, whatever its reach, is
 //   also summed as the fill and added to the far color at the end, each weighing what a sample of
 //   the texel's own radius would: the hidden background is extrapolated from around the object.
