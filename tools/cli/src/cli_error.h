@@ -21,6 +21,8 @@ enum class ExitCode : int {
     Device = 4,       // no usable Vulkan device, or the effect / Vulkan reported an error
     OutputWrite = 5,  // an output file or directory could not be written
     Internal = 6,     // a bug: an unexpected exception (please report it)
+    Interrupted = 130,  // SIGINT (as shells report it: 128 + 2); no partial output is left
+    Terminated = 143,   // SIGTERM (128 + 15); no partial output is left
 };
 
 // The table printed by --help and written in docs/cli.md.

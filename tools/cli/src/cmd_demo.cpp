@@ -6,6 +6,7 @@
 #include "ffx_dof_metrics.h"
 #include "ffx_dof_reference.h"
 
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <stdexcept>
@@ -74,9 +75,14 @@ void runDemo(const DemoOptions& options) {
     const ThinLens lens{camera.apertureRadius, camera.focalLength, camera.focusDistance, camera.sensorWidth};
     const EffectDepth depth = linearToEffectDepth(pinhole.depth, "scene depth");
     const CocParameters coc = computeCocParameters(lens, depth.projection, camera.width, depth.projectionOrigin);
+    float largestRadius = 0.0f;
+    for (float d : depth.deviceDepth)
+        largestRadius = std::fmax(largestRadius, std::fabs(d * coc.cocScale + coc.cocBias));
+    EffectOptions effect = options.effect;
+    effect.cocLimit = effectiveCocLimit(options.effect, largestRadius, camera.height);
     const vkrun::RunResult result = runEffectOrThrow(*device, toHostImage(pinhole.color),
                                                      toHostImage(camera.width, camera.height, depth.deviceDepth),
-                                                     makeRunSettings(options.effect, coc, depth.projection.reversed));
+                                                     makeRunSettings(effect, coc, depth.projection.reversed));
     const io::ImageRGBA output = toImageRGBA(result.output);
 
     std::vector<std::string> written;
@@ -107,6 +113,16 @@ void runDemo(const DemoOptions& options) {
 
     std::printf("applied depth of field on %s: focus %.2f m, f/%.2f, %.0f mm\n", device->name().c_str(),
                 camera.focusDistance, camera.fstop(), camera.focalLength * 1000.0);
+    size_t clamped = 0;
+    const float radiusLimit = float(effect.cocLimit * camera.height * 0.5);
+    for (float d : depth.deviceDepth) clamped += std::fabs(d * coc.cocScale + coc.cocBias) > radiusLimit;
+    if (options.effect.cocLimitFollowsImage) {
+        std::printf("largest CoC radius %.2f half-res px; no clamp (cocLimitFactor %.4g follows the image)\n",
+                    largestRadius, effect.cocLimit);
+    } else {
+        std::printf("largest CoC radius %.2f half-res px; --coc-limit %g clamps %zu pixels at %.2f half-res px\n",
+                    largestRadius, effect.cocLimit, clamped, radiusLimit);
+    }
     std::printf("truth convergence (RMS, half vs all lens samples): %.4f\n", truth.convergenceRms);
     const io::ImageR radius = metrics::cocRadiusMap(camera, pinhole.depth);
     const metrics::Comparison inputScore = metrics::compareImages(truth.color, pinhole.color, &radius);

@@ -14,8 +14,11 @@ namespace ffxdof::cli {
 
 // Effect settings shared by apply, demo and bench.
 struct EffectOptions {
-    uint32_t quality = 10;     // FfxDofContextDescription::quality, 1..FFX_DOF_MAX_QUALITY
-    double cocLimit = 0.05;    // FfxDofContextDescription::cocLimitFactor, finite, >= 0
+    uint32_t quality = 10;   // FfxDofContextDescription::quality, 1..FFX_DOF_MAX_QUALITY
+    double cocLimit = 0.05;  // FfxDofContextDescription::cocLimitFactor, finite, >= 0
+    // apply and demo without --coc-limit: no clamp; the limit follows each image's largest radius
+    // (effectiveCocLimit). bench keeps cocLimit.
+    bool cocLimitFollowsImage = false;
     bool noRingMerge = false;  // FFX_DOF_DISABLE_RING_MERGE
     int device = -1;           // Vulkan physical device index; -1 = the first
     bool validate = false;     // Khronos validation layer on; any message fails the command
@@ -23,6 +26,11 @@ struct EffectOptions {
 
 // Throws CliError(InvalidValue) for a quality or CoC limit the effect does not accept.
 void checkEffectOptions(const EffectOptions& options);
+
+// The cocLimitFactor a run uses: options.cocLimit, or with cocLimitFollowsImage one just above the
+// image's largest radius (half-res px) for an image `height` pixels high, at most kLargestAutoCocLimit.
+constexpr double kLargestAutoCocLimit = 1.0;
+double effectiveCocLimit(const EffectOptions& options, double largestRadius, uint32_t height);
 
 struct ApplyOptions {
     std::string colorPath;
@@ -38,6 +46,15 @@ struct ApplyOptions {
     bool reverseDepth = false;
     LensSettings lens;
     EffectOptions effect;
+    // Sequences (docs/cli.md, "Sequences"): --frames, --chunk, --camera-track, --keep-layers,
+    // --overwrite, --no-overlap.
+    std::string frames;       // empty: one file per option, no frame numbers
+    std::string chunk;        // "I/N" or empty
+    std::string cameraTrack;  // JSON or CSV, or empty
+    bool focusGiven = true;   // --focus was given (a camera track may supply it instead)
+    bool keepLayers = false;
+    bool overwrite = false;
+    bool noOverlap = false;  // read, compute and write one frame after the other
 };
 void runApply(const ApplyOptions& options);
 

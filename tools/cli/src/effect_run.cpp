@@ -52,6 +52,21 @@ vkrun::RunSettings makeRunSettings(const EffectOptions& effect, const CocParamet
     return settings;
 }
 
+namespace {
+
+// Always silent unless the device was opened with --validate.
+void throwOnValidationMessages(vkrun::Device& device) {
+    const std::vector<std::string> messages = device.validationMessages();
+    if (!messages.empty()) {
+        std::string first = messages.front();
+        std::replace(first.begin(), first.end(), '\n', ' ');
+        throw CliError(ExitCode::Device, "the validation layer reported " + std::to_string(messages.size()) +
+                                             " message(s); the first: " + first);
+    }
+}
+
+}  // namespace
+
 vkrun::RunResult runEffectOrThrow(vkrun::Device& device, const vkrun::HostImage& color, const vkrun::HostImage& depth,
                                   const vkrun::RunSettings& settings) {
     vkrun::RunResult result;
@@ -60,15 +75,20 @@ vkrun::RunResult runEffectOrThrow(vkrun::Device& device, const vkrun::HostImage&
     } catch (const vkrun::Error& error) {
         throw CliError(ExitCode::Device, std::string("running the effect failed: ") + error.what());
     }
-    // Always empty unless the device was opened with --validate.
-    const std::vector<std::string> messages = device.validationMessages();
-    if (!messages.empty()) {
-        std::string first = messages.front();
-        std::replace(first.begin(), first.end(), '\n', ' ');
-        throw CliError(ExitCode::Device, "the validation layer reported " + std::to_string(messages.size()) +
-                                             " message(s); the first: " + first);
-    }
+    throwOnValidationMessages(device);
     return result;
+}
+
+vkrun::HostImage runEffectOrThrow(vkrun::Device& device, vkrun::EffectSession& session, const vkrun::HostImage& color,
+                                  const vkrun::HostImage& depth, const vkrun::RunSettings& settings) {
+    vkrun::HostImage output;
+    try {
+        output = session.run(color, depth, settings);
+    } catch (const vkrun::Error& error) {
+        throw CliError(ExitCode::Device, std::string("running the effect failed: ") + error.what());
+    }
+    throwOnValidationMessages(device);
+    return output;
 }
 
 vkrun::HostImage toHostImage(const io::ImageRGBA& image) {

@@ -22,6 +22,11 @@ vkrun::RunSettings makeRunSettings(const EffectOptions& effect, const CocParamet
 vkrun::RunResult runEffectOrThrow(vkrun::Device& device, const vkrun::HostImage& color, const vkrun::HostImage& depth,
                                   const vkrun::RunSettings& settings);
 
+// The same through a session (apply: one backend and one set of images for every frame, a fresh
+// context per frame, so a frame's output does not depend on the frames before it).
+vkrun::HostImage runEffectOrThrow(vkrun::Device& device, vkrun::EffectSession& session, const vkrun::HostImage& color,
+                                  const vkrun::HostImage& depth, const vkrun::RunSettings& settings);
+
 // Conversions between the image library's and the harness's host images.
 vkrun::HostImage toHostImage(const io::ImageRGBA& image);
 vkrun::HostImage toHostImage(uint32_t width, uint32_t height, const std::vector<float>& singleChannel);

@@ -132,6 +132,14 @@ io::ExrPixelType chooseExrPixelType(const std::string& outType, const io::ImageR
     return io::ExrPixelType::Float;
 }
 
+double effectiveCocLimit(const EffectOptions& options, double largestRadius, uint32_t height) {
+    if (!options.cocLimitFollowsImage || height == 0) return options.cocLimit;
+    // Just above the largest radius, so the SDK's clamp never bites; float rounding of the factor and of
+    // the SDK's limit (factor * height * 0.5) is far below the margin.
+    const double factor = largestRadius / (0.5 * double(height)) * 1.001 + 1e-6;
+    return std::min(factor, kLargestAutoCocLimit);
+}
+
 void checkEffectOptions(const EffectOptions& options) {
     if (options.quality < 1 || options.quality > FFX_DOF_MAX_QUALITY) {
         throw CliError(ExitCode::InvalidValue, "--quality must be 1 to " + std::to_string(FFX_DOF_MAX_QUALITY) +

@@ -26,7 +26,9 @@ const char* exitCodeTable() {
            "  3  invalid value: impossible lens or projection, bad depths, mismatched sizes, out-of-range settings\n"
            "  4  device: no usable Vulkan device, or the effect or Vulkan reported an error\n"
            "  5  output: a file or directory could not be written\n"
-           "  6  internal error (a bug; please report it)\n";
+           "  6  internal error (a bug; please report it)\n"
+           "  130  interrupted by SIGINT (Ctrl-C); 143  by SIGTERM: frames written so far are whole, no partial\n"
+           "       or temporary file is left\n";
 }
 
 namespace {
@@ -64,13 +66,18 @@ CLI::Validator integerValidator(bool allowNegative) {
 const CLI::Validator kInteger = integerValidator(true);
 const CLI::Validator kUnsigned = integerValidator(false);
 
-void addEffectOptions(CLI::App& command, EffectOptions& effect) {
+// Returns the --coc-limit option. offline: apply and demo, where no --coc-limit means no clamp.
+CLI::Option* addEffectOptions(CLI::App& command, EffectOptions& effect, bool offline = false) {
     command.add_option("--quality", effect.quality, "Maximum number of kernel rings, 1 to 32")
         ->check(kUnsigned)
         ->capture_default_str();
-    command.add_option("--coc-limit", effect.cocLimit, "Largest CoC radius as a fraction of the image height")
-        ->check(kNumber)
-        ->capture_default_str();
+    CLI::Option* cocLimit =
+        command
+            .add_option("--coc-limit", effect.cocLimit,
+                        offline ? "Clamp CoC radii at this fraction of the image height (default: no clamp)"
+                                : "Largest CoC radius as a fraction of the image height")
+            ->check(kNumber);
+    if (!offline) cocLimit->capture_default_str();
     command.add_flag("--no-ring-merge", effect.noRingMerge, "Never gather inner rings from coarser MIP levels");
     // Stored through a wider type so that "-1" (the internal "first device" default) typed by a user is
     // refused as the out-of-range index it is instead of selecting the first device.
@@ -88,6 +95,7 @@ void addEffectOptions(CLI::App& command, EffectOptions& effect) {
         ->check(kInteger);
     command.add_flag("--validate", effect.validate,
                      "Run with the Khronos validation layer (synchronization included); any message is an error");
+    return cocLimit;
 }
 
 struct ApplyArguments {
@@ -96,7 +104,7 @@ struct ApplyArguments {
     std::vector<double> projection;
     double nearPlane = 0.0, farPlane = 0.0, fNumber = 0.0, apertureRadius = 0.0;
     CLI::Option *nearOption = nullptr, *farOption = nullptr, *projOption = nullptr, *fstopOption = nullptr,
-                *apertureOption = nullptr, *reverseOption = nullptr;
+                *apertureOption = nullptr, *reverseOption = nullptr, *focusOption = nullptr, *cocLimitOption = nullptr;
 };
 
 CLI::App* addApply(CLI::App& app, ApplyArguments& args) {
@@ -134,7 +142,11 @@ CLI::App* addApply(CLI::App& app, ApplyArguments& args) {
     args.nearOption->needs(args.farOption);
     args.farOption->needs(args.nearOption);
 
-    apply->add_option("--focus", o.lens.focusMetres, "Distance in focus, metres")->required()->check(kNumber);
+    args.focusOption = apply
+                           ->add_option("--focus", o.lens.focusMetres,
+                                        "Distance in focus, metres (required unless "
+                                        "--camera-track gives it)")
+                           ->check(kNumber);
     apply->add_option("--focal-length", o.lens.focalLengthMm, "Focal length, millimetres")
         ->check(kNumber)
         ->capture_default_str();
@@ -147,13 +159,28 @@ CLI::App* addApply(CLI::App& app, ApplyArguments& args) {
     args.apertureOption =
         apply->add_option("--aperture-radius", args.apertureRadius, "Aperture radius, metres")->check(kNumber);
     args.fstopOption->excludes(args.apertureOption);
-    addEffectOptions(*apply, o.effect);
+    args.cocLimitOption = addEffectOptions(*apply, o.effect, true);
+
+    apply->add_option("--frames", o.frames,
+                      "A sequence: frames FIRST-LAST[xSTEP], comma-separated; --color, --depth, --out then name "
+                      "files with a frame-number field (shot.####.exr or shot.%04d.exr)");
+    apply->add_option("--chunk", o.chunk, "With --frames: only the I-th of N contiguous shares (I/N, 1 to N)");
+    apply->add_option("--camera-track", o.cameraTrack,
+                      "With --frames: the lens per frame from a JSON or CSV file (frame, focus, fstop or "
+                      "aperture_radius, focal_length, sensor_width)");
+    apply->add_flag("--keep-layers", o.keepLayers,
+                    "Copy the color file's other channels and its header attributes into the output");
+    apply->add_flag("--overwrite", o.overwrite, "With --frames: redo frames whose output is already complete");
+    apply->add_flag("--no-overlap", o.noOverlap,
+                    "With --frames: read, compute and write one frame after the other (for measurements)");
     return apply;
 }
 
 // Checks that need the values of several options together, after parsing.
 ApplyOptions finishApply(ApplyArguments& args) {
     ApplyOptions o = args.options;
+    o.focusGiven = args.focusOption->count() > 0;
+    o.effect.cocLimitFollowsImage = args.cocLimitOption->count() == 0;
     o.depthKind = args.depthKind == "device" ? DepthKind::Device : DepthKind::Linear;
     if (o.depthKind == DepthKind::Linear) {
         for (const CLI::Option* option : {args.nearOption, args.farOption, args.projOption, args.reverseOption}) {
@@ -212,7 +239,7 @@ int run(int argc, char** argv) {
                      "EXR images: half, float, or auto (half unless a value exceeds half's largest, 65504)")
         ->check(CLI::IsMember({"auto", "half", "float"}))
         ->capture_default_str();
-    addEffectOptions(*demoCommand, demo.effect);
+    CLI::Option* demoCocLimit = addEffectOptions(*demoCommand, demo.effect, true);
 
     BenchOptions bench;
     CLI::App* benchCommand =
@@ -268,6 +295,7 @@ int run(int argc, char** argv) {
     if (apply->parsed()) {
         runApply(finishApply(applyArgs));
     } else if (demoCommand->parsed()) {
+        demo.effect.cocLimitFollowsImage = demoCocLimit->count() == 0;
         runDemo(demo);
     } else if (benchCommand->parsed()) {
         runBench(bench);

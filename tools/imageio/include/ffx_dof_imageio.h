@@ -20,6 +20,7 @@
 #include <cstdint>
 #include <functional>
 #include <iosfwd>
+#include <memory>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -76,6 +77,49 @@ void writeExr(const std::string& path, const ImageRGBA& image, ExrPixelType type
 // Writes one channel named channelName ("Y" by default, which viewers show as grey; use "Z" for depth).
 void writeExr(const std::string& path, const ImageR& image, ExrPixelType type = ExrPixelType::Float,
               const std::string& channelName = "Y");
+
+// ---- sequences (ffx-dof apply over frames) --------------------------------------------------------
+
+// What a writer does when the destination exists when the new file is complete. Replace: the new file
+// replaces it (rename). Keep: the existing file stays and the new one is discarded (renameat2 with
+// RENAME_NOREPLACE, or link() where the file system lacks it): of several processes writing the same
+// file at once, exactly one file lands, whole, and no temporary file is left.
+enum class IfExists { Replace, Keep };
+
+// What the header and offset table of an EXR file say, read without its pixels.
+struct ExrProbe {
+    uint32_t width = 0, height = 0;     // of the first part's data window
+    bool complete = false;              // every part has its chunks; the first part decodes whole
+    std::vector<std::string> channels;  // of every part, as listExrChannels
+};
+// Throws IoError when the file is missing, not an OpenEXR file, or its header is unreadable.
+ExrProbe probeExr(const std::string& path);
+
+// The channels of an EXR part other than one colour layer's R, G, B, A, in their own pixel types,
+// and the part's header attributes: what --keep-layers copies into the output.
+class ExrKeptLayers {
+public:
+    struct Impl;
+    ExrKeptLayers();
+    ~ExrKeptLayers();
+    ExrKeptLayers(ExrKeptLayers&&) noexcept;
+    ExrKeptLayers& operator=(ExrKeptLayers&&) noexcept;
+    std::vector<std::string> channelNames() const;
+    std::unique_ptr<Impl> impl;
+};
+// Reads the part that holds layerPrefix's R (the default layer's R for an empty prefix). Subsampled
+// channels are refused (IoError).
+ExrKeptLayers readExrKeptLayers(const std::string& path, const std::string& layerPrefix = "");
+
+struct ExrWriteOptions {
+    ExrPixelType type = ExrPixelType::Half;
+    IfExists ifExists = IfExists::Replace;
+    std::string layerPrefix;              // the image is written as <prefix>.R, ... (empty: R, G, B, A)
+    const ExrKeptLayers* kept = nullptr;  // also written: its channels and header attributes
+};
+// Writes R, G, B, A (and the kept layers) as one EXR part (ZIP compression). Returns false, leaving
+// the existing file as it is, when options.ifExists is Keep and the destination exists.
+bool writeExr(const std::string& path, const ImageRGBA& image, const ExrWriteOptions& options);
 
 // Writes an 8-bit sRGB-encoded PNG (libpng). Colour is clamped to [0, 1] before encoding; alpha is
 // written linearly when withAlpha, otherwise the file is RGB.

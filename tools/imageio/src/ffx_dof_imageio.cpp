@@ -199,8 +199,8 @@ int64_t injectedWriteLimit() {
 // destination; otherwise it is removed on destruction and the destination is never touched.
 class TempFile {
 public:
-    explicit TempFile(const std::string& destination)
-        : requested_(destination), destination_(resolveOutputPath(destination)) {
+    explicit TempFile(const std::string& destination, IfExists ifExists = IfExists::Replace)
+        : requested_(destination), destination_(resolveOutputPath(destination)), ifExists_(ifExists) {
         static std::atomic<unsigned> counter{0};
         const fs::path target(destination_);
         const fs::path directory = target.parent_path().empty() ? fs::path(".") : target.parent_path();
@@ -210,7 +210,7 @@ public:
         if (fs::is_directory(target, ec)) failWrite(requested_, "it is a directory");
         struct stat existing {};
         const bool replacing = ::stat(destination_.c_str(), &existing) == 0;
-        if (replacing && !(existing.st_mode & S_IWUSR)) {
+        if (replacing && ifExists_ == IfExists::Replace && !(existing.st_mode & S_IWUSR)) {
             // rename() would replace it regardless of its mode (only the folder's mode counts), so a
             // file marked read-only is refused here rather than silently replaced.
             char mode[8];
@@ -265,23 +265,47 @@ public:
         if (::lseek(fd_, off_t(position), SEEK_SET) < 0) failWrite(requested_, std::strerror(errno));
     }
 
-    void commit() {
+    // Returns false (the temporary file removed, the destination untouched) when ifExists is Keep and
+    // the destination exists by now.
+    bool commit() {
         // A full disk may only show at fsync or close (delayed allocation, network file systems).
         if (::fsync(fd_) != 0) failWrite(requested_, std::strerror(errno));
         const int fd = fd_;
         fd_ = -1;
         if (::close(fd) != 0) failWrite(requested_, std::strerror(errno));
+        if (ifExists_ == IfExists::Keep) return commitNoReplace();
         if (::rename(path_.c_str(), destination_.c_str()) != 0) {
             failWrite(requested_, std::string("cannot replace the file: ") + std::strerror(errno));
         }
         committed_ = true;
+        return true;
     }
 
 private:
+    // Atomic create-if-absent: renameat2(RENAME_NOREPLACE) where the file system has it (ext4, xfs,
+    // btrfs, tmpfs), otherwise link() + unlink() (NFS, older kernels): both fail with EEXIST instead of
+    // replacing a file another process landed first, and neither ever shows a partial file.
+    bool commitNoReplace() {
+        if (::renameat2(AT_FDCWD, path_.c_str(), AT_FDCWD, destination_.c_str(), RENAME_NOREPLACE) == 0) {
+            committed_ = true;
+            return true;
+        }
+        if (errno == EEXIST) return false;
+        if (errno != EINVAL && errno != ENOSYS && errno != ENOTSUP) {
+            failWrite(requested_, std::string("cannot create the file: ") + std::strerror(errno));
+        }
+        if (::link(path_.c_str(), destination_.c_str()) != 0) {
+            if (errno == EEXIST) return false;
+            failWrite(requested_, std::string("cannot create the file: ") + std::strerror(errno));
+        }
+        return true;  // the temporary name is unlinked by the destructor (committed_ stays false)
+    }
+
     std::string requested_;    // the path as given, for messages
     std::string destination_;  // the file that is replaced: requested_ with symbolic links followed
     std::string path_;
     int fd_ = -1;
+    IfExists ifExists_ = IfExists::Replace;
     int64_t writeLimit_ = -1;
     uint64_t bytesWritten_ = 0;
     bool committed_ = false;
@@ -314,14 +338,62 @@ void checkImage(const std::string& path, uint32_t width, uint32_t height, size_t
     }
 }
 
-// Writes interleaved float data (channelCount values per pixel) as one EXR part.
-void writeExrChannels(const std::string& path, uint32_t width, uint32_t height, const std::vector<float>& pixels,
-                      const std::vector<std::string>& names, ExrPixelType type) {
+}  // namespace
+
+struct ExrKeptLayers::Impl {
+    struct Channel {
+        std::string name;
+        Imf::Channel channel;
+        std::vector<char> bytes;  // width * height values of the channel's own type
+    };
+    uint32_t width = 0, height = 0;
+    Imf::Header header;
+    std::vector<Channel> channels;
+};
+ExrKeptLayers::ExrKeptLayers() = default;
+ExrKeptLayers::~ExrKeptLayers() = default;
+ExrKeptLayers::ExrKeptLayers(ExrKeptLayers&&) noexcept = default;
+ExrKeptLayers& ExrKeptLayers::operator=(ExrKeptLayers&&) noexcept = default;
+std::vector<std::string> ExrKeptLayers::channelNames() const {
+    std::vector<std::string> names;
+    if (impl) {
+        for (const Impl::Channel& channel : impl->channels) names.push_back(channel.name);
+    }
+    return names;
+}
+
+namespace {
+
+size_t pixelTypeSize(Imf::PixelType type) { return type == Imf::HALF ? 2 : 4; }
+
+// Header attributes that describe the file's structure, not its content: never copied by --keep-layers.
+bool isStructuralAttribute(const std::string& name) {
+    for (const char* structural : {"channels", "dataWindow", "displayWindow", "compression", "lineOrder", "tiles",
+                                   "type", "name", "chunkCount", "version", "view"}) {
+        if (name == structural) return true;
+    }
+    return false;
+}
+
+// Writes interleaved float data (channelCount values per pixel) as one EXR part, with the kept layers.
+bool writeExrChannels(const std::string& path, uint32_t width, uint32_t height, const std::vector<float>& pixels,
+                      const std::vector<std::string>& names, ExrPixelType type, IfExists ifExists = IfExists::Replace,
+                      const ExrKeptLayers* kept = nullptr) {
     const size_t channelCount = names.size();
     checkImage(path, width, height, pixels.size(), channelCount);
-    TempFile temp(path);
+    const ExrKeptLayers::Impl* extra = kept ? kept->impl.get() : nullptr;
+    if (extra && (extra->width != width || extra->height != height)) {
+        fail(path, "the kept layers are " + std::to_string(extra->width) + "x" + std::to_string(extra->height) +
+                       ", the image " + std::to_string(width) + "x" + std::to_string(height));
+    }
+    TempFile temp(path, ifExists);
     try {
         Imf::Header header{int(width), int(height)};
+        if (extra) {
+            for (auto it = extra->header.begin(); it != extra->header.end(); ++it) {
+                if (!isStructuralAttribute(it.name())) header.insert(it.name(), it.attribute());
+            }
+        }
         header.compression() = Imf::ZIP_COMPRESSION;
         const Imf::PixelType pixelType = type == ExrPixelType::Half ? Imf::HALF : Imf::FLOAT;
         for (const std::string& name : names) header.channels().insert(name, Imf::Channel(pixelType));
@@ -338,6 +410,16 @@ void writeExrChannels(const std::string& path, uint32_t width, uint32_t height, 
             frameBuffer.insert(names[i], Imf::Slice(pixelType, const_cast<char*>(base + i * elementSize),
                                                     elementSize * channelCount, elementSize * channelCount * width));
         }
+        if (extra) {
+            for (const ExrKeptLayers::Impl::Channel& channel : extra->channels) {
+                if (header.channels().findChannel(channel.name)) continue;  // the image's own channels win
+                header.channels().insert(channel.name, channel.channel);
+                const size_t size = pixelTypeSize(channel.channel.type);
+                frameBuffer.insert(
+                    channel.name,
+                    Imf::Slice(channel.channel.type, const_cast<char*>(channel.bytes.data()), size, size * width));
+            }
+        }
         TempFileExrStream exrStream(temp);
         Imf::OutputFile output(exrStream, header);
         output.setFrameBuffer(frameBuffer);
@@ -349,7 +431,7 @@ void writeExrChannels(const std::string& path, uint32_t width, uint32_t height, 
     } catch (const std::exception& error) {
         failWrite(path, error.what());
     }
-    temp.commit();
+    return temp.commit();
 }
 
 uint8_t encodeSrgb8(float linear) {
@@ -426,6 +508,93 @@ std::vector<std::string> listExrChannels(const std::string& path) {
         Imf::MultiPartInputFile file(path.c_str());
         return channelNames(file);
     });
+}
+
+ExrProbe probeExr(const std::string& path) {
+    checkReadable(path);
+    return guardExr<ExrProbe>(path, [&] {
+        Imf::MultiPartInputFile file(path.c_str());
+        ExrProbe probe;
+        const Imath::Box2i window = file.header(0).dataWindow();
+        probe.width = uint32_t(std::max(0, window.max.x - window.min.x + 1));
+        probe.height = uint32_t(std::max(0, window.max.y - window.min.y + 1));
+        probe.channels = channelNames(file);
+        probe.complete = true;
+        for (int part = 0; part < file.parts(); ++part) probe.complete = probe.complete && file.partComplete(part);
+        // The offset table sits at the start, so a file cut short still has a whole one: every chunk of
+        // the first part is decoded too (into one row of one channel), which fails on a missing or
+        // damaged chunk.
+        const Imf::Header& header = file.header(0);
+        if (probe.complete && header.channels().begin() != header.channels().end() &&
+            (!header.hasType() || header.type() == Imf::SCANLINEIMAGE)) {
+            try {
+                Imf::InputPart input(file, 0);
+                std::vector<float> row(size_t(probe.width) + 1);
+                Imf::FrameBuffer frameBuffer;
+                frameBuffer.insert(
+                    header.channels().begin().name(),
+                    Imf::Slice(Imf::FLOAT, reinterpret_cast<char*>(row.data() - window.min.x), sizeof(float), 0));
+                input.setFrameBuffer(frameBuffer);
+                input.readPixels(window.min.y, window.max.y);
+            } catch (const std::exception&) {
+                probe.complete = false;
+            }
+        }
+        return probe;
+    });
+}
+
+ExrKeptLayers readExrKeptLayers(const std::string& path, const std::string& layerPrefix) {
+    checkReadable(path);
+    return guardExr<ExrKeptLayers>(path, [&] {
+        Imf::MultiPartInputFile file(path.c_str());
+        const ChannelLocation location = findChannel(file, layerChannel(layerPrefix, "R"));
+        ExrKeptLayers kept;
+        kept.impl = std::make_unique<ExrKeptLayers::Impl>();
+        if (location.part < 0) return kept;  // the colour reader reports the missing layer
+        const Imf::Header& header = file.header(location.part);
+        checkPartReadable(path, header);
+        const Imath::Box2i window = header.dataWindow();
+        const int64_t w = int64_t(window.max.x) - window.min.x + 1, h = int64_t(window.max.y) - window.min.y + 1;
+        if (window != header.displayWindow() || w <= 0 || h <= 0 || w > kMaxSide || h > kMaxSide) {
+            fail(path, "the data window " + boxText(window) + " is not the display window or too large");
+        }
+        Imf::InputPart input(file, location.part);
+        if (!input.isComplete()) fail(path, "the file is truncated or incomplete");
+        kept.impl->width = uint32_t(w);
+        kept.impl->height = uint32_t(h);
+        kept.impl->header = header;
+        Imf::FrameBuffer frameBuffer;
+        for (auto it = header.channels().begin(); it != header.channels().end(); ++it) {
+            const std::string name = it.name();
+            bool isColor = false;
+            for (const char* channel : {"R", "G", "B", "A"})
+                isColor = isColor || name == layerChannel(layerPrefix, channel);
+            if (isColor) continue;
+            if (it.channel().xSampling != 1 || it.channel().ySampling != 1) {
+                fail(path, "channel " + name + " is subsampled, which --keep-layers does not support");
+            }
+            kept.impl->channels.push_back({name, it.channel(), {}});
+        }
+        for (ExrKeptLayers::Impl::Channel& channel : kept.impl->channels) {
+            const size_t size = pixelTypeSize(channel.channel.type);
+            channel.bytes.assign(size_t(w) * size_t(h) * size, 0);
+            frameBuffer.insert(channel.name, Imf::Slice::Make(channel.channel.type, channel.bytes.data(), window, size,
+                                                              size * size_t(w)));
+        }
+        if (!kept.impl->channels.empty()) {
+            input.setFrameBuffer(frameBuffer);
+            input.readPixels(window.min.y, window.max.y);
+        }
+        return kept;
+    });
+}
+
+bool writeExr(const std::string& path, const ImageRGBA& image, const ExrWriteOptions& options) {
+    std::vector<std::string> names;
+    for (const char* channel : {"R", "G", "B", "A"}) names.push_back(layerChannel(options.layerPrefix, channel));
+    return writeExrChannels(path, image.width, image.height, image.pixels, names, options.type, options.ifExists,
+                            options.kept);
 }
 
 void writeExr(const std::string& path, const ImageRGBA& image, ExrPixelType type) {

@@ -167,6 +167,27 @@ struct RunResult {
 // code and ffxDofGetLastErrorMessage, a Vulkan error).
 RunResult runEffect(Device& device, const HostImage& color, const HostImage& depth, const RunSettings& settings);
 
+// Runs the effect on frame after frame (ffx-dof apply over a sequence): the backend (its pipelines) is
+// created once, the engine images once per resolution and format, and the context for every frame,
+// so each frame is dispatched as the first of its context (frame index 0, which seeds the kernel
+// jitter): a frame's output never depends on which frames ran before it. Only the settings' formats,
+// flags, quality, cocLimitFactor, cocScale/cocBias and float32 switch are used (no repeats, timings,
+// in-place or copy pass). Not thread-safe: one thread submits.
+class EffectSession {
+public:
+    explicit EffectSession(Device& device);
+    ~EffectSession();
+    EffectSession(const EffectSession&) = delete;
+    EffectSession& operator=(const EffectSession&) = delete;
+
+    // Throws Error as runEffect does.
+    HostImage run(const HostImage& color, const HostImage& depth, const RunSettings& settings);
+
+private:
+    struct Impl;
+    std::unique_ptr<Impl> impl_;
+};
+
 // Which formats runEffect accepts (see RunSettings), and a format's name for messages.
 bool isSupportedColorFormat(VkFormat format);
 bool isSupportedDepthFormat(VkFormat format);

@@ -1,0 +1,375 @@
+// `ffx-dof apply --frames`: sequences run as the built program. A frame of a sequence equals the same
+// frame run alone byte for byte, resumed runs skip complete outputs, several processes on overlapping
+// ranges write every frame whole and once, SIGTERM / SIGINT leave no partial or temporary file.
+#include "ffx_dof_imageio.h"
+
+#include <ImfChannelList.h>
+#include <ImfFrameBuffer.h>
+#include <ImfHeader.h>
+#include <ImfInputFile.h>
+#include <ImfOutputFile.h>
+#include <ImfStringAttribute.h>
+#include <catch2/catch.hpp>
+
+#include <fcntl.h>
+#include <signal.h>
+#include <spawn.h>
+#include <sys/stat.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <atomic>
+#include <chrono>
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <regex>
+#include <sstream>
+#include <string>
+#include <thread>
+#include <vector>
+
+extern char** environ;
+
+namespace fs = std::filesystem;
+using ffxdof::io::ImageR;
+using ffxdof::io::ImageRGBA;
+
+namespace {
+
+std::string readText(const fs::path& path) {
+    std::ifstream file(path, std::ios::binary);
+    std::ostringstream text;
+    text << file.rdbuf();
+    return text.str();
+}
+
+class TempFolder {
+public:
+    TempFolder() {
+        static std::atomic<int> counter{0};
+        path_ = fs::temp_directory_path() /
+                ("ffx_dof_seq_test_" + std::to_string(getpid()) + "_" + std::to_string(counter++));
+        fs::create_directories(path_);
+    }
+    ~TempFolder() {
+        std::error_code ignored;
+        fs::remove_all(path_, ignored);
+    }
+    std::string operator/(const std::string& name) const { return (path_ / name).string(); }
+    const fs::path& path() const { return path_; }
+
+private:
+    fs::path path_;
+};
+
+// A running ffx-dof, its output in files of the folder.
+struct Process {
+    pid_t pid = -1;
+    std::string outPath, errPath;
+};
+
+Process start(const TempFolder& folder, const std::vector<std::string>& arguments, const std::string& tag) {
+    Process process;
+    process.outPath = folder / (tag + ".out");
+    process.errPath = folder / (tag + ".err");
+    posix_spawn_file_actions_t actions;
+    posix_spawn_file_actions_init(&actions);
+    posix_spawn_file_actions_addopen(&actions, 1, process.outPath.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+    posix_spawn_file_actions_addopen(&actions, 2, process.errPath.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+    std::vector<std::string> all = {FFX_DOF_CLI_PROGRAM};
+    all.insert(all.end(), arguments.begin(), arguments.end());
+    std::vector<char*> argv;
+    for (std::string& argument : all) argv.push_back(argument.data());
+    argv.push_back(nullptr);
+    REQUIRE(posix_spawn(&process.pid, FFX_DOF_CLI_PROGRAM, &actions, nullptr, argv.data(), environ) == 0);
+    posix_spawn_file_actions_destroy(&actions);
+    return process;
+}
+
+struct Finished {
+    int exitCode = -1;
+    std::string out, err;
+};
+
+Finished finish(const Process& process) {
+    int status = 0;
+    waitpid(process.pid, &status, 0);
+    return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, readText(process.outPath), readText(process.errPath)};
+}
+
+Finished run(const TempFolder& folder, const std::vector<std::string>& arguments, const std::string& tag = "run") {
+    return finish(start(folder, arguments, tag));
+}
+
+constexpr uint32_t kWidth = 64, kHeight = 48;
+
+// Frame f: a checker shifted by f pixels (a pan), depth near on the left, far on the right.
+void writeFrame(const TempFolder& folder, int frame, const std::string& colorName, const std::string& depthName) {
+    ImageRGBA color(kWidth, kHeight);
+    ImageR depth(kWidth, kHeight);
+    for (uint32_t y = 0; y < kHeight; ++y) {
+        for (uint32_t x = 0; x < kWidth; ++x) {
+            const bool bright = (((x + uint32_t(frame)) / 3) + (y / 3)) % 2 == 0;
+            float* pixel = color.at(x, y);
+            pixel[0] = bright ? 0.9f : 0.1f;
+            pixel[1] = bright ? 0.7f : 0.2f;
+            pixel[2] = bright ? 0.5f : 0.05f;
+            pixel[3] = 1.0f;
+            depth.at(x, y) = x < kWidth / 3 ? 0.6f : (x < 2 * kWidth / 3 ? 3.9f : 40.0f);
+        }
+    }
+    ffxdof::io::writeExr(folder / colorName, color, ffxdof::io::ExrPixelType::Float);
+    ffxdof::io::writeExr(folder / depthName, depth, ffxdof::io::ExrPixelType::Float, "Z");
+}
+
+std::string frameName(const char* prefix, int frame) {
+    char name[64];
+    std::snprintf(name, sizeof(name), "%s.%04d.exr", prefix, frame);
+    return name;
+}
+
+void writeShot(const TempFolder& folder, int first, int last) {
+    for (int frame = first; frame <= last; ++frame)
+        writeFrame(folder, frame, frameName("c", frame), frameName("z", frame));
+}
+
+std::vector<std::string> applyArguments(const TempFolder& folder, const std::string& frames,
+                                        std::vector<std::string> extra = {}) {
+    std::vector<std::string> arguments = {"apply",
+                                          "--color",
+                                          folder / "c.####.exr",
+                                          "--depth",
+                                          folder / "z.%04d.exr",
+                                          "--out",
+                                          folder / "o.####.exr",
+                                          "--frames",
+                                          frames,
+                                          "--focus",
+                                          "4",
+                                          "--fstop",
+                                          "1.4",
+                                          "--sensor-width",
+                                          "4"};
+    arguments.insert(arguments.end(), extra.begin(), extra.end());
+    return arguments;
+}
+
+// Files whose name says they are temporary (the writers' ".NAME.tmpPID_N").
+std::vector<std::string> temporaryFiles(const TempFolder& folder) {
+    std::vector<std::string> found;
+    for (const auto& entry : fs::directory_iterator(folder.path())) {
+        const std::string name = entry.path().filename().string();
+        if (name.find(".tmp") != std::string::npos) found.push_back(name);
+    }
+    return found;
+}
+
+bool isCompleteExr(const std::string& path) {
+    try {
+        const ffxdof::io::ExrProbe probe = ffxdof::io::probeExr(path);
+        return probe.complete && probe.width == kWidth && probe.height == kHeight;
+    } catch (const ffxdof::io::IoError&) {
+        return false;
+    }
+}
+
+size_t count(const std::string& text, const std::string& what) {
+    size_t n = 0;
+    for (size_t at = text.find(what); at != std::string::npos; at = text.find(what, at + 1)) ++n;
+    return n;
+}
+
+}  // namespace
+
+TEST_CASE("sequence usage errors", "[cli]") {
+    TempFolder folder;
+    const auto requireError = [&](const std::vector<std::string>& arguments, int code, const std::string& fragment) {
+        const Finished result = run(folder, arguments);
+        INFO(result.err);
+        CHECK(result.exitCode == code);
+        CHECK(result.err.rfind("ffx-dof: error: ", 0) == 0);
+        CHECK(count(result.err, "\n") == 1);
+        CHECK_THAT(result.err, Catch::Contains(fragment));
+    };
+    requireError(applyArguments(folder, "1-x"), 1, "--frames");
+    requireError(applyArguments(folder, "9-3"), 3, "before the first");
+    requireError(applyArguments(folder, "1-3", {"--chunk", "4/3"}), 3, "--chunk");
+    requireError({"apply", "--color", "c.####.exr", "--depth", "z.exr", "--out", "o.exr", "--focus", "2"}, 1,
+                 "--frames");
+    requireError({"apply", "--color", "c.exr", "--depth", "z.exr", "--out", "o.exr", "--focus", "2", "--chunk", "1/2"},
+                 1, "--chunk needs --frames");
+    requireError(
+        {"apply", "--color", "c.####.exr", "--depth", "z.exr", "--out", "o.exr", "--focus", "2", "--frames", "1-3"}, 1,
+        "frame-number field in --out");
+    requireError({"apply", "--color", "c.####.exr", "--depth", "z.exr", "--out", "o.####.png", "--focus", "2",
+                  "--frames", "1-3"},
+                 1, "must be .exr");
+    requireError({"apply", "--color", "c.####.exr", "--depth", "z.exr", "--out", "o.####.exr", "--frames", "1-3"}, 1,
+                 "--focus");
+}
+
+TEST_CASE("a sequence's frames equal the frames run alone; a resumed run skips them; --overwrite redoes them",
+          "[vulkan]") {
+    TempFolder folder;
+    writeShot(folder, 1, 3);
+    const Finished first = run(folder, applyArguments(folder, "1-3"));
+    INFO(first.out << first.err);
+    REQUIRE(first.exitCode == 0);
+    CHECK_THAT(first.out, Catch::Contains("written 3, skipped 0"));
+    CHECK(count(first.out, ": wrote ") == 3);  // plain lines, not a terminal
+
+    // Frame 2 alone, and the sequence with every stage one after the other: the same bytes.
+    const Finished alone =
+        run(folder, {"apply", "--color", folder / "c.0002.exr", "--depth", folder / "z.0002.exr", "--out",
+                     folder / "alone.exr", "--focus", "4", "--fstop", "1.4", "--sensor-width", "4"});
+    REQUIRE(alone.exitCode == 0);
+    CHECK((readText(folder / "alone.exr") == readText(folder / "o.0002.exr")));
+    CHECK((readText(folder / "o.0001.exr") != readText(folder / "o.0002.exr")));
+    fs::create_directories(folder / "serial");
+    std::vector<std::string> serial = applyArguments(folder, "1-3", {"--no-overlap"});
+    serial[6] = folder / "serial/o.####.exr";
+    REQUIRE(run(folder, serial).exitCode == 0);
+    for (int frame = 1; frame <= 3; ++frame) {
+        CHECK((readText(folder / ("serial/" + frameName("o", frame))) == readText(folder / frameName("o", frame))));
+    }
+
+    // Resumed: nothing to do. A truncated output is redone; --overwrite redoes everything.
+    struct stat before {};
+    REQUIRE(::stat((folder / "o.0001.exr").c_str(), &before) == 0);
+    const Finished resumed = run(folder, applyArguments(folder, "1-3"));
+    REQUIRE(resumed.exitCode == 0);
+    CHECK_THAT(resumed.out, Catch::Contains("written 0, skipped 3"));
+    struct stat after {};
+    REQUIRE(::stat((folder / "o.0001.exr").c_str(), &after) == 0);
+    CHECK(before.st_ino == after.st_ino);
+    const std::string good = readText(folder / "o.0003.exr");
+    fs::resize_file(folder / "o.0003.exr", good.size() / 2);
+    const Finished repaired = run(folder, applyArguments(folder, "1-3"));
+    INFO(repaired.out);
+    REQUIRE(repaired.exitCode == 0);
+    CHECK_THAT(repaired.out, Catch::Contains("redoing") && Catch::Contains("written 1, skipped 2"));
+    CHECK((readText(folder / "o.0003.exr") == good));
+    const Finished overwritten = run(folder, applyArguments(folder, "1-3", {"--overwrite"}));
+    REQUIRE(overwritten.exitCode == 0);
+    CHECK_THAT(overwritten.out, Catch::Contains("written 3, skipped 0"));
+    CHECK(temporaryFiles(folder).empty());
+}
+
+TEST_CASE("several processes on overlapping ranges write every frame whole, once, with no temporary file", "[vulkan]") {
+    TempFolder folder;
+    constexpr int kFrames = 8;
+    writeShot(folder, 1, kFrames);
+    std::vector<Process> processes;
+    const std::vector<std::string> ranges = {"1-8", "3-8", "1-6", "8-1x1"};
+    processes.push_back(start(folder, applyArguments(folder, "1-8"), "p0"));
+    processes.push_back(start(folder, applyArguments(folder, "3-8"), "p1"));
+    processes.push_back(start(folder, applyArguments(folder, "1-6"), "p2"));
+    processes.push_back(start(folder, applyArguments(folder, "1-8", {"--chunk", "2/2"}), "p3"));
+    size_t wrote = 0;
+    for (const Process& process : processes) {
+        const Finished result = finish(process);
+        INFO(result.out << result.err);
+        CHECK(result.exitCode == 0);
+        wrote += count(result.out, ": wrote ");
+    }
+    CHECK(wrote == kFrames);  // every frame landed exactly once; the others were skipped
+    for (int frame = 1; frame <= kFrames; ++frame) CHECK(isCompleteExr(folder / frameName("o", frame)));
+    CHECK(temporaryFiles(folder).empty());
+    // And each equals a run of that frame alone (the frames do not depend on who wrote them).
+    const Finished alone =
+        run(folder, {"apply", "--color", folder / "c.0005.exr", "--depth", folder / "z.0005.exr", "--out",
+                     folder / "alone.exr", "--focus", "4", "--fstop", "1.4", "--sensor-width", "4"});
+    REQUIRE(alone.exitCode == 0);
+    CHECK((readText(folder / "alone.exr") == readText(folder / "o.0005.exr")));
+}
+
+TEST_CASE("SIGTERM and SIGINT end a sequence with their codes and leave no partial or temporary file", "[vulkan]") {
+    TempFolder folder;
+    writeFrame(folder, 1, "c.exr", "z.exr");
+    for (const auto& [signal, code, name] : {std::tuple{SIGTERM, 143, "SIGTERM"}, std::tuple{SIGINT, 130, "SIGINT"}}) {
+        // One input for every frame (a constant name), a long range: the signal comes mid-way.
+        const Process process = start(folder,
+                                      {"apply", "--color", folder / "c.exr", "--depth", folder / "z.exr", "--out",
+                                       folder / (std::string(name) + ".####.exr"), "--frames", "1-2000", "--focus", "4",
+                                       "--fstop", "1.4", "--sensor-width", "4"},
+                                      name);
+        const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(30);
+        while (!fs::exists(folder / (std::string(name) + ".0003.exr")) && std::chrono::steady_clock::now() < deadline) {
+            std::this_thread::sleep_for(std::chrono::milliseconds(20));
+        }
+        ::kill(process.pid, signal);
+        const Finished result = finish(process);
+        INFO(result.out << result.err);
+        CHECK(result.exitCode == code);
+        CHECK_THAT(result.err, Catch::StartsWith("ffx-dof: error: interrupted by " + std::string(name)));
+        CHECK(count(result.err, "\n") == 1);
+        CHECK(temporaryFiles(folder).empty());
+        size_t outputs = 0;
+        for (const auto& entry : fs::directory_iterator(folder.path())) {
+            const std::string file = entry.path().filename().string();
+            if (file.rfind(name, 0) == 0 && entry.path().extension() == ".exr") {
+                ++outputs;
+                CHECK(isCompleteExr(entry.path().string()));
+            }
+        }
+        CHECK(outputs >= 3);
+        CHECK(outputs < 2000);
+    }
+}
+
+TEST_CASE("camera track, --keep-layers and the CoC clamp report", "[vulkan]") {
+    TempFolder folder;
+    writeShot(folder, 1, 2);
+    // A track: frame 1 as the command line (focus 4), frame 2 focused near.
+    std::ofstream(folder / "track.csv") << "frame,focus,fstop\n1,4,1.4\n2,0.8,1.4\n";
+    std::vector<std::string> tracked = applyArguments(folder, "1-2", {"--camera-track", folder / "track.csv"});
+    tracked[6] = folder / "t.####.exr";
+    const Finished withTrack = run(folder, tracked);
+    INFO(withTrack.out << withTrack.err);
+    REQUIRE(withTrack.exitCode == 0);
+    REQUIRE(run(folder, applyArguments(folder, "1-2")).exitCode == 0);
+    CHECK((readText(folder / "t.0001.exr") == readText(folder / "o.0001.exr")));
+    CHECK((readText(folder / "t.0002.exr") != readText(folder / "o.0002.exr")));
+
+    // --keep-layers: the colour file's other channels and its attributes reach the output.
+    {
+        const ImageRGBA color = ffxdof::io::readExrColor(folder / "c.0001.exr");
+        Imf::Header header{int(kWidth), int(kHeight)};
+        header.insert("owner", Imf::StringAttribute("shot 42"));
+        for (const char* channel : {"R", "G", "B", "A", "Z"})
+            header.channels().insert(channel, Imf::Channel(Imf::FLOAT));
+        std::vector<float> z(size_t(kWidth) * kHeight, 7.0f);
+        Imf::FrameBuffer frameBuffer;
+        const char* names[] = {"R", "G", "B", "A"};
+        for (int c = 0; c < 4; ++c) {
+            frameBuffer.insert(names[c],
+                               Imf::Slice(Imf::FLOAT, (char*)(color.pixels.data() + c), 16, 16 * size_t(kWidth)));
+        }
+        frameBuffer.insert("Z", Imf::Slice(Imf::FLOAT, (char*)z.data(), 4, 4 * size_t(kWidth)));
+        Imf::OutputFile file((folder / "layered.exr").c_str(), header);
+        file.setFrameBuffer(frameBuffer);
+        file.writePixels(int(kHeight));
+    }
+    const Finished kept = run(folder, {"apply", "--color", folder / "layered.exr", "--depth", folder / "z.0001.exr",
+                                       "--out", folder / "kept.exr", "--focus", "4", "--fstop", "1.4", "--sensor-width",
+                                       "4", "--keep-layers", "--out-type", "float"});
+    INFO(kept.err);
+    REQUIRE(kept.exitCode == 0);
+    Imf::InputFile keptFile((folder / "kept.exr").c_str());
+    CHECK(keptFile.header().channels().findChannel("Z") != nullptr);
+    const auto* owner = keptFile.header().findTypedAttribute<Imf::StringAttribute>("owner");
+    REQUIRE(owner != nullptr);
+    CHECK(owner->value() == "shot 42");
+    CHECK(ffxdof::io::readExrChannel(folder / "kept.exr", "Z").pixels[100] == 7.0f);
+
+    // Without --coc-limit nothing is clamped; with one that bites, the run says how many pixels.
+    const Finished clamped = run(folder, {"apply", "--color", folder / "c.0001.exr", "--depth", folder / "z.0001.exr",
+                                          "--out", folder / "clamped.exr", "--focus", "4", "--fstop", "1.4",
+                                          "--sensor-width", "4", "--coc-limit", "0.1"});
+    REQUIRE(clamped.exitCode == 0);
+    CHECK_THAT(clamped.out, Catch::Contains("--coc-limit 0.1 clamps 1008 pixels"));
+    CHECK_THAT(withTrack.out, !Catch::Contains("clamps"));
+}
