@@ -165,14 +165,28 @@ void ffxDofStoreOutput(FfxUInt32x2 pixel, FfxFloat32x4 color)
 #endif
 
 #if FFX_DOF_USES_GLOBALS
-FFX_DOF_BINDING_UAV_BUFFER(FFX_DOF_UAV_BUFFER_GLOBALS) buffer FfxDofGlobals { uint ffxDofGlobalMaxRadiusBits; };
-FfxFloat32 ffxDofLoadGlobalMaxRadius() { return uintBitsToFloat(ffxDofGlobalMaxRadiusBits); }
+FFX_DOF_BINDING_UAV_BUFFER(FFX_DOF_UAV_BUFFER_GLOBALS) buffer FfxDofGlobals
+{
+    uint ffxDofGlobalWords[FFX_DOF_GLOBALS_WORD_COUNT];
+};
+FfxFloat32 ffxDofLoadGlobalMaxRadius() { return uintBitsToFloat(ffxDofGlobalWords[FFX_DOF_GLOBALS_MAX_RADIUS]); }
 void ffxDofAtomicMaxGlobalRadius(FfxFloat32 radius)
 {
     // Non-negative floats order like their bit patterns.
-    atomicMax(ffxDofGlobalMaxRadiusBits, floatBitsToUint(max(radius, 0.0f)));
+    atomicMax(ffxDofGlobalWords[FFX_DOF_GLOBALS_MAX_RADIUS], floatBitsToUint(max(radius, 0.0f)));
 }
-void ffxDofResetGlobals() { ffxDofGlobalMaxRadiusBits = 0u; }
+void ffxDofResetGlobals() { ffxDofGlobalWords[FFX_DOF_GLOBALS_MAX_RADIUS] = 0u; }
+void ffxDofAtomicMaxColorPeak(FfxFloat32 peak)
+{
+    atomicMax(ffxDofGlobalWords[FFX_DOF_GLOBALS_COLOR_PEAK], floatBitsToUint(max(peak, 0.0f)));
+}
+FfxFloat32 ffxDofLoadColorPeak() { return uintBitsToFloat(ffxDofGlobalWords[FFX_DOF_GLOBALS_COLOR_PEAK]); }
+void ffxDofResetColorPeak() { ffxDofGlobalWords[FFX_DOF_GLOBALS_COLOR_PEAK] = 0u; }
+void ffxDofStoreColorScale(FfxFloat32 scale)
+{
+    ffxDofGlobalWords[FFX_DOF_GLOBALS_COLOR_SCALE] = floatBitsToUint(scale);
+}
+FfxFloat32 ffxDofLoadColorScale() { return uintBitsToFloat(ffxDofGlobalWords[FFX_DOF_GLOBALS_COLOR_SCALE]); }
 #endif
 
 #endif  // FFX_DOF_CALLBACKS_GLSL_H

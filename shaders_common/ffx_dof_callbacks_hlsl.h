@@ -200,14 +200,23 @@ FfxFloat32x4 ffxDofLoadInputColor(FfxUInt32x2 pixel)
 
 #if FFX_DOF_USES_GLOBALS
 FFX_DOF_BINDING_UAV_BUFFER(FFX_DOF_UAV_BUFFER_GLOBALS) RWStructuredBuffer<uint> ffxDofGlobals : register(u0, space1);
-FfxFloat32 ffxDofLoadGlobalMaxRadius() { return asfloat(ffxDofGlobals[0]); }
+FfxFloat32 ffxDofLoadGlobalMaxRadius() { return asfloat(ffxDofGlobals[FFX_DOF_GLOBALS_MAX_RADIUS]); }
 void ffxDofAtomicMaxGlobalRadius(FfxFloat32 radius)
 {
     // Non-negative floats order like their bit patterns.
     uint previous;
-    InterlockedMax(ffxDofGlobals[0], asuint(max(radius, 0.0f)), previous);
+    InterlockedMax(ffxDofGlobals[FFX_DOF_GLOBALS_MAX_RADIUS], asuint(max(radius, 0.0f)), previous);
 }
-void ffxDofResetGlobals() { ffxDofGlobals[0] = 0u; }
+void ffxDofResetGlobals() { ffxDofGlobals[FFX_DOF_GLOBALS_MAX_RADIUS] = 0u; }
+void ffxDofAtomicMaxColorPeak(FfxFloat32 peak)
+{
+    uint previous;
+    InterlockedMax(ffxDofGlobals[FFX_DOF_GLOBALS_COLOR_PEAK], asuint(max(peak, 0.0f)), previous);
+}
+FfxFloat32 ffxDofLoadColorPeak() { return asfloat(ffxDofGlobals[FFX_DOF_GLOBALS_COLOR_PEAK]); }
+void ffxDofResetColorPeak() { ffxDofGlobals[FFX_DOF_GLOBALS_COLOR_PEAK] = 0u; }
+void ffxDofStoreColorScale(FfxFloat32 scale) { ffxDofGlobals[FFX_DOF_GLOBALS_COLOR_SCALE] = asuint(scale); }
+FfxFloat32 ffxDofLoadColorScale() { return asfloat(ffxDofGlobals[FFX_DOF_GLOBALS_COLOR_SCALE]); }
 #endif
 
 #endif  // FFX_DOF_CALLBACKS_HLSL_H

@@ -246,6 +246,65 @@ FFX_DOF_INLINE FfxDofFloat3 ffxDofRoundForPackedColor(FfxDofFloat3 color)
                         FfxDofFloat(ffxDofRoundMantissa(FfxFloat32(color.z), 5u)));
 }
 
+// ---- HDR range ---------------------------------------------------------------------------------
+
+// The internal colour images are B10G11R11 float (largest finite value 65024) and the 16-bit
+// permutation computes colour in half (65504); weighted sums (the bilateral reduction's 4 taps, the
+// composite's fixed 3x3 blur) reach several times a pixel's value. A frame whose largest finite
+// colour channel (its colour peak, reduced by pass 1 into GLOBALS) exceeds this limit is scaled by
+// ffxDofColorRangeScale on the way in (passes 2 and 5) and back on the way out (pass 5). A power of
+// two, so that scaling is exact.
+#define FFX_DOF_COLOR_RANGE_LIMIT 4096.0f
+#define FFX_DOF_COLOR_RANGE_LIMIT_LOG2 12
+// The largest finite 32-bit float and the largest finite half.
+#define FFX_DOF_FLOAT32_MAX 3.402823466e38f
+#define FFX_DOF_FLOAT16_MAX 65504.0f
+
+// `value` when it is finite and not negative (so it can be a colour peak), else 0 (NaN, inf and
+// negative channels never set the peak: they are left as they are, as before).
+FFX_DOF_INLINE FfxFloat32 ffxDofPeakCandidate(FfxFloat32 value)
+{
+    return (value >= 0.0f && value <= FFX_DOF_FLOAT32_MAX) ? value : 0.0f;
+}
+// The largest finite, non-negative channel of an RGB(A) colour (alpha ignored), else 0.
+FFX_DOF_INLINE FfxFloat32 ffxDofColorPeak(FfxFloat32x4 color)
+{
+    return max(max(ffxDofPeakCandidate(color.x), ffxDofPeakCandidate(color.y)), ffxDofPeakCandidate(color.z));
+}
+
+// The factor the frame's colour is multiplied by inside the effect: 1 when `peak` (the largest finite
+// colour channel of the frame) is at most FFX_DOF_COLOR_RANGE_LIMIT, else the largest power of two
+// 2^-k with peak * 2^-k <= FFX_DOF_COLOR_RANGE_LIMIT (for any finite peak, k <= 116: a normal float).
+FFX_DOF_INLINE FfxFloat32 ffxDofColorRangeScale(FfxFloat32 peak)
+{
+    if (!(peak > FFX_DOF_COLOR_RANGE_LIMIT))
+        return 1.0f;
+    FfxUInt32 bits = ffxDofAsUInt(min(peak, FFX_DOF_FLOAT32_MAX));
+    // peak is in [2^exponent, 2^(exponent + 1)); an exact power of two needs one step less.
+    FfxInt32 exponent = FfxInt32((bits >> 23u) & 0xffu) - 127;
+    FfxInt32 k = exponent - FFX_DOF_COLOR_RANGE_LIMIT_LOG2 + ((bits & 0x7fffffu) != 0u ? 1 : 0);
+    return ffxDofAsFloat(FfxUInt32(127 - k) << 23u);
+}
+
+// A 32-bit colour channel scaled into the effect's range, clamped so that its conversion to half (or
+// to B10G11R11) cannot give inf. Values the clamp does not touch are unchanged.
+FFX_DOF_INLINE FfxFloat32 ffxDofScaleChannel(FfxFloat32 value, FfxFloat32 scale)
+{
+    return min(value * scale, FFX_DOF_FLOAT16_MAX);
+}
+FFX_DOF_INLINE FfxFloat32x4 ffxDofScaleColor(FfxFloat32x4 color, FfxFloat32 scale)
+{
+    return FfxFloat32x4(ffxDofScaleChannel(color.x, scale), ffxDofScaleChannel(color.y, scale),
+                        ffxDofScaleChannel(color.z, scale), color.w);
+}
+// Back from the effect's range: exact for a power-of-two scale (unless the result is a denormal),
+// clamped to the largest finite float.
+FFX_DOF_INLINE FfxFloat32x4 ffxDofUnscaleColor(FfxFloat32x4 color, FfxFloat32 scale)
+{
+    return FfxFloat32x4(min(color.x / scale, FFX_DOF_FLOAT32_MAX), min(color.y / scale, FFX_DOF_FLOAT32_MAX),
+                        min(color.z / scale, FFX_DOF_FLOAT32_MAX), color.w);
+}
+
 // ---- Workgroup and tile arithmetic --------------------------------------------------------------
 
 // Position of an invocation in its 8 x 8 workgroup.

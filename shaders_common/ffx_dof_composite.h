@@ -13,6 +13,11 @@
 //      background); fixed 3x3 blur for radii 0.5..1.5; layers blended (ffxDofFixedBlurBlend,
 //      ffxDofFarBlend, ffxDofCubicWeight).
 // The composite also writes 0 to GLOBALS for the next dispatch (pass 3 has read it).
+// HDR range: the input color is multiplied by the frame's ffxDofColorRangeScale (from GLOBALS, written
+// by pass 2) as it is read, in 32-bit, so all the work happens in the range of the half-res layers;
+// a composed pixel is divided by the scale when stored (exact for the power-of-two scale unless the
+// result is a denormal) and clamped to the largest finite float. Pixels that keep their input are
+// stored from the input itself, bit for bit, whatever the scale.
 #ifndef FFX_DOF_COMPOSITE_H
 #define FFX_DOF_COMPOSITE_H
 
@@ -31,6 +36,7 @@ FfxDofFloat3 ffxDofLoadFarColor(FfxInt32x2 texel);
 FfxFloat32x2 ffxDofLoadLayerAlpha(FfxInt32x2 texel);
 void ffxDofStoreOutput(FfxUInt32x2 pixel, FfxFloat32x4 color);
 void ffxDofResetGlobals();
+FfxFloat32 ffxDofLoadColorScale();
 #endif
 
 #define FFX_DOF_RAW_SIDE 12       // half-res texels loaded per side: tile + 2 each side
@@ -110,7 +116,8 @@ FFX_DOF_INLINE void ffxDofPostFilterTexel(FfxUInt32 index)
 // The input color of a full-res pixel within one pixel of the tile that holds `ownPixel` (a pixel
 // of the workgroup's own tile).
 #if FFX_DOF_OPTION_COMBINE_IN_PLACE
-FFX_DOF_INLINE FfxFloat32x4 ffxDofCompositeInput(FfxUInt32x2 pixel, FfxUInt32x2 ownPixel)
+// Returns the scaled color (the group-shared copy and MIP 0 are scaled already).
+FFX_DOF_INLINE FfxFloat32x4 ffxDofCompositeInput(FfxUInt32x2 pixel, FfxUInt32x2 ownPixel, FfxFloat32 scale)
 {
     FfxUInt32x2 tileOrigin = (ownPixel / 16u) * 16u;
     if (pixel.x >= tileOrigin.x && pixel.y >= tileOrigin.y && pixel.x < tileOrigin.x + 16u &&
@@ -120,17 +127,18 @@ FFX_DOF_INLINE FfxFloat32x4 ffxDofCompositeInput(FfxUInt32x2 pixel, FfxUInt32x2 
     return FfxFloat32x4(FfxFloat32(color.x), FfxFloat32(color.y), FfxFloat32(color.z), 1.0f);
 }
 #else
-#define ffxDofCompositeInput(pixel, ownPixel) ffxDofLoadInputColor(pixel)
+#define ffxDofCompositeInput(pixel, ownPixel, scale) ffxDofScaleColor(ffxDofLoadInputColor(pixel), scale)
 #endif
 
 // The input colors of the 4 x 4 full-res pixels around an invocation's 2 x 2 quad (row by row,
-// clamped to the image): the four fixed 3x3 blurs of the quad share them, 16 reads instead of 36.
+// clamped to the image), scaled: the four fixed 3x3 blurs of the quad share them, 16 reads instead of 36.
 struct FfxDofQuadNeighbourhood
 {
     FfxFloat32x4 color[16];
 };
 
-FFX_DOF_INLINE FfxDofQuadNeighbourhood ffxDofLoadQuadNeighbourhood(FfxUInt32x2 quad, FfxUInt32x2 fullSize)
+FFX_DOF_INLINE FfxDofQuadNeighbourhood ffxDofLoadQuadNeighbourhood(FfxUInt32x2 quad, FfxUInt32x2 fullSize,
+                                                                   FfxFloat32 scale)
 {
     FfxDofQuadNeighbourhood neighbourhood;
     FFX_DOF_UNROLL
@@ -138,7 +146,7 @@ FFX_DOF_INLINE FfxDofQuadNeighbourhood ffxDofLoadQuadNeighbourhood(FfxUInt32x2 q
     {
         FfxInt32x2 pixel = clamp(FfxInt32x2(quad) + FfxInt32x2(FfxInt32(k % 4u) - 1, FfxInt32(k / 4u) - 1),
                                  FfxInt32x2(0, 0), FfxInt32x2(fullSize) - FfxInt32x2(1, 1));
-        neighbourhood.color[k] = ffxDofCompositeInput(FfxUInt32x2(pixel), quad);
+        neighbourhood.color[k] = ffxDofCompositeInput(FfxUInt32x2(pixel), quad, scale);
     }
     return neighbourhood;
 }
@@ -240,6 +248,7 @@ FFX_DOF_INLINE void ffxDofComposite(FfxUInt32x2 groupId, FfxUInt32 localIndex)
         ffxDofResetGlobals();
 
     FfxUInt32x2 quad = groupId * 16u + ffxDofLocalCoord(localIndex) * 2u;
+    FfxFloat32 scale = ffxDofLoadColorScale();
     FfxFloat32x2 tile = ffxDofLoadTile(groupId);
     FfxFloat32x4 dilatedTile = ffxDofLoadDilatedTile(groupId);
     FfxFloat32x2 dilated = FfxFloat32x2(dilatedTile.x, dilatedTile.y);
@@ -265,7 +274,7 @@ FFX_DOF_INLINE void ffxDofComposite(FfxUInt32x2 groupId, FfxUInt32 localIndex)
         FfxUInt32x2 pixel = quad + FfxUInt32x2(k & 1u, k >> 1u);
         if (pixel.x < constants.fullSize.x && pixel.y < constants.fullSize.y)
             ffxDofSharedInput[(pixel.y - groupId.y * 16u) * 16u + pixel.x - groupId.x * 16u] =
-                ffxDofLoadInputColor(pixel);
+                ffxDofScaleColor(ffxDofLoadInputColor(pixel), scale);
     }
 #endif
     FfxInt32x2 tileOrigin = FfxInt32x2(groupId * FfxUInt32(FFX_DOF_TILE_SIZE));
@@ -294,7 +303,7 @@ FFX_DOF_INLINE void ffxDofComposite(FfxUInt32x2 groupId, FfxUInt32 localIndex)
     }
     ffxDofGroupBarrier();
 
-    FfxDofQuadNeighbourhood neighbourhood = ffxDofLoadQuadNeighbourhood(quad, constants.fullSize);
+    FfxDofQuadNeighbourhood neighbourhood = ffxDofLoadQuadNeighbourhood(quad, constants.fullSize, scale);
     FFX_DOF_UNROLL
     for (FfxUInt32 k = 0u; k < 4u; ++k)
     {
@@ -305,10 +314,12 @@ FFX_DOF_INLINE void ffxDofComposite(FfxUInt32x2 groupId, FfxUInt32 localIndex)
         FfxFloat32x4 color = neighbourhood.color[(inQuad.y + 1u) * 4u + inQuad.x + 1u];
 #if FFX_DOF_OPTION_COMBINE_IN_PLACE
         if (ffxDofComposePixel(pixel, inQuad, filteredOrigin, constants, neighbourhood, color))
-            ffxDofStoreOutput(pixel, color);
+            ffxDofStoreOutput(pixel, ffxDofUnscaleColor(color, scale));
 #else
-        ffxDofComposePixel(pixel, inQuad, filteredOrigin, constants, neighbourhood, color);
-        ffxDofStoreOutput(pixel, color);
+        if (ffxDofComposePixel(pixel, inQuad, filteredOrigin, constants, neighbourhood, color))
+            ffxDofStoreOutput(pixel, ffxDofUnscaleColor(color, scale));
+        else
+            ffxDofStoreOutput(pixel, ffxDofLoadInputColor(pixel));
 #endif
     }
 }

@@ -19,6 +19,7 @@ FfxDofConstants ffxDofGetConstants();
 FfxFloat32 ffxDofLoadGlobalMaxRadius();
 FfxFloat32x2 ffxDofLoadTile(FfxUInt32x2 tile);
 void ffxDofStoreDilatedTile(FfxUInt32x2 tile, FfxFloat32x4 farNearFootprint);
+void ffxDofResetColorPeak();
 #endif
 
 // The tiles within `range` tiles of `center` each way, clipped to the image: first..last inclusive.
@@ -83,6 +84,9 @@ FFX_DOF_INLINE FfxFloat32x2 ffxDofFootprintRange(FfxUInt32x2 centerTile, FfxUInt
 FFX_DOF_INLINE void ffxDofDilate(FfxUInt32x2 groupId, FfxUInt32 localIndex)
 {
     FfxDofConstants constants = ffxDofGetConstants();
+    // Pass 2 has read the colour peak; the next frame's pass 1 needs it at 0.
+    if (groupId.x == 0u && groupId.y == 0u && localIndex == 0u)
+        ffxDofResetColorPeak();
     FfxUInt32x2 tile = groupId * 8u + ffxDofLocalCoord(localIndex);
     if (tile.x >= constants.tileCount.x || tile.y >= constants.tileCount.y)
         return;

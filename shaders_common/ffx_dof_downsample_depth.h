@@ -1,4 +1,5 @@
-// Pass 1 of 5: depth to CoC, (min, max) signed CoC per tile, global max |CoC|.
+// Pass 1 of 5: depth to CoC, (min, max) signed CoC per tile, global max |CoC|, and the frame's colour
+// peak (largest finite colour channel, for ffxDofColorRangeScale; see docs/technique.md, HDR range).
 //
 // One workgroup covers one tile (FFX_DOF_TILE_SIZE half-res px = 16 full-res px square); each of
 // its 64 invocations reduces a 2 x 2 full-res quad. Depth is reduced instead of CoC: the radius is a
@@ -14,6 +15,8 @@
 // Accessors this pass calls; each API's callback header implements them.
 FfxDofConstants ffxDofGetConstants();
 FfxFloat32 ffxDofLoadInputDepth(FfxUInt32x2 pixel);
+FfxFloat32x4 ffxDofLoadInputColor(FfxUInt32x2 pixel);
+void ffxDofAtomicMaxColorPeak(FfxFloat32 peak);
 void ffxDofStoreTile(FfxUInt32x2 tile, FfxFloat32x2 cocMinMax);
 void ffxDofAtomicMaxGlobalRadius(FfxFloat32 radius);
 #endif
@@ -21,6 +24,7 @@ void ffxDofAtomicMaxGlobalRadius(FfxFloat32 radius);
 // One slot per wave (a wave of one lane on the CPU, so up to one per invocation).
 FFX_DOF_GROUPSHARED FfxFloat32 ffxDofSharedNearDepth[FFX_DOF_GROUP_THREADS];
 FFX_DOF_GROUPSHARED FfxFloat32 ffxDofSharedFarDepth[FFX_DOF_GROUP_THREADS];
+FFX_DOF_GROUPSHARED FfxFloat32 ffxDofSharedColorPeak[FFX_DOF_GROUP_THREADS];
 
 FFX_DOF_INLINE FfxFloat32 ffxDofWaveNearestDepth(FfxFloat32 depth)
 {
@@ -50,10 +54,17 @@ FFX_DOF_INLINE void ffxDofDownsampleDepth(FfxUInt32x2 groupId, FfxUInt32 localIn
     FfxUInt32x2 lastPixel = constants.fullSize - FfxUInt32x2(1u, 1u);
 
     // Pixels past the image edge repeat the edge, which leaves the extremes unchanged.
-    FfxFloat32 depth0 = ffxDofLoadInputDepth(min(quad, lastPixel));
-    FfxFloat32 depth1 = ffxDofLoadInputDepth(min(quad + FfxUInt32x2(1u, 0u), lastPixel));
-    FfxFloat32 depth2 = ffxDofLoadInputDepth(min(quad + FfxUInt32x2(0u, 1u), lastPixel));
-    FfxFloat32 depth3 = ffxDofLoadInputDepth(min(quad + FfxUInt32x2(1u, 1u), lastPixel));
+    FfxUInt32x2 pixel0 = min(quad, lastPixel);
+    FfxUInt32x2 pixel1 = min(quad + FfxUInt32x2(1u, 0u), lastPixel);
+    FfxUInt32x2 pixel2 = min(quad + FfxUInt32x2(0u, 1u), lastPixel);
+    FfxUInt32x2 pixel3 = min(quad + FfxUInt32x2(1u, 1u), lastPixel);
+    FfxFloat32 depth0 = ffxDofLoadInputDepth(pixel0);
+    FfxFloat32 depth1 = ffxDofLoadInputDepth(pixel1);
+    FfxFloat32 depth2 = ffxDofLoadInputDepth(pixel2);
+    FfxFloat32 depth3 = ffxDofLoadInputDepth(pixel3);
+    FfxFloat32 colorPeak = ffxDofWaveMax(
+        max(max(ffxDofColorPeak(ffxDofLoadInputColor(pixel0)), ffxDofColorPeak(ffxDofLoadInputColor(pixel1))),
+            max(ffxDofColorPeak(ffxDofLoadInputColor(pixel2)), ffxDofColorPeak(ffxDofLoadInputColor(pixel3)))));
     FfxFloat32 nearDepth =
         ffxDofWaveNearestDepth(ffxDofNearerDepth(ffxDofNearerDepth(depth0, depth1), ffxDofNearerDepth(depth2, depth3)));
     FfxFloat32 farDepth = ffxDofWaveFarthestDepth(
@@ -63,6 +74,7 @@ FFX_DOF_INLINE void ffxDofDownsampleDepth(FfxUInt32x2 groupId, FfxUInt32 localIn
         FfxUInt32 wave = ffxDofWaveIndex(localIndex);
         ffxDofSharedNearDepth[wave] = nearDepth;
         ffxDofSharedFarDepth[wave] = farDepth;
+        ffxDofSharedColorPeak[wave] = colorPeak;
     }
     ffxDofGroupBarrier();
 
@@ -74,11 +86,15 @@ FFX_DOF_INLINE void ffxDofDownsampleDepth(FfxUInt32x2 groupId, FfxUInt32 localIn
         {
             nearDepth = ffxDofNearerDepth(nearDepth, ffxDofSharedNearDepth[wave]);
             farDepth = ffxDofFartherDepth(farDepth, ffxDofSharedFarDepth[wave]);
+            colorPeak = max(colorPeak, ffxDofSharedColorPeak[wave]);
         }
         FfxFloat32 nearCoc = ffxDofCocFromDepth(nearDepth, constants.cocScale, constants.cocBias, constants.cocLimit);
         FfxFloat32 farCoc = ffxDofCocFromDepth(farDepth, constants.cocScale, constants.cocBias, constants.cocLimit);
         ffxDofStoreTile(groupId, FfxFloat32x2(farCoc, nearCoc));
         ffxDofAtomicMaxGlobalRadius(max(abs(farCoc), abs(nearCoc)));
+        // Most frames stay below the limit, and a peak the scale ignores need not cost an atomic.
+        if (colorPeak > FFX_DOF_COLOR_RANGE_LIMIT)
+            ffxDofAtomicMaxColorPeak(colorPeak);
     }
 }
 

@@ -22,9 +22,15 @@
 //   LAYER_ALPHA    half, R8G8 unorm          x: near-field opacity (coverage of the pixel by near-field
 //                                            blur, 0..1), y: far-field validity (1: FAR_COLOR holds
 //                                            gathered far-field color, 0: nothing was gathered)
-//   GLOBALS        16-byte storage buffer    [0]: global max |radius|, half-res px, as float bits
-//                  (atomic max on uint: non-negative floats order like their bits). Zero before the
-//                  first dispatch; the composite pass writes 0 back, so it is zero before each.
+//   GLOBALS        16-byte storage buffer    four uint words, all zero before the first dispatch:
+//                  [0] (FFX_DOF_GLOBALS_MAX_RADIUS): global max |radius|, half-res px, as float bits
+//                  (atomic max on uint: non-negative floats order like their bits); pass 1 writes,
+//                  pass 3 reads, the composite writes 0 back, so it is zero before each dispatch.
+//                  [1] (FFX_DOF_GLOBALS_COLOR_PEAK): the frame's largest finite colour channel as
+//                  float bits, atomic max by pass 1 (only where it exceeds FFX_DOF_COLOR_RANGE_LIMIT,
+//                  so 0 in most frames); pass 2 reads, pass 3 writes 0 back.
+//                  [2] (FFX_DOF_GLOBALS_COLOR_SCALE): ffxDofColorRangeScale of the peak as float bits,
+//                  written by pass 2, read by the composite. [3]: unused.
 #ifndef FFX_DOF_RESOURCES_H
 #define FFX_DOF_RESOURCES_H
 
@@ -64,6 +70,12 @@
 
 // Storage buffers
 #define FFX_DOF_UAV_BUFFER_GLOBALS 0
+
+// Words of GLOBALS
+#define FFX_DOF_GLOBALS_MAX_RADIUS 0
+#define FFX_DOF_GLOBALS_COLOR_PEAK 1
+#define FFX_DOF_GLOBALS_COLOR_SCALE 2
+#define FFX_DOF_GLOBALS_WORD_COUNT 4
 
 // Samplers. LINEAR_CLAMP: min/mag filter linear, mipmap mode NEAREST, address mode clamp-to-edge on
 // u, v and w, no anisotropy, no compare, LOD range [0, FFX_DOF_OPTION_MAX_MIP - 1]. The shaders always

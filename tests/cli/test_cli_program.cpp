@@ -658,3 +658,47 @@ TEST_CASE("apply: --out-type half and float", "[vulkan]") {
     requireError(runProgram(applyArguments(folder, {{"--out", folder / "o.png"}, {"--out-type", "float"}})), 1,
                  "--out-type");
 }
+
+TEST_CASE("apply: colour far beyond half's range is blurred, finite, kept in energy, and written as float",
+          "[vulkan]") {
+    // Issue 13 item 2: a patch of 1e5 in the far band used to come out black with inf/NaN around it.
+    // Its energy must be what a patch of 1000 (no range scaling inside the effect) keeps, within 1%.
+    TempFolder folder;
+    writeScene(folder);
+    const auto runWithPatch = [&](float value, double* kept) {
+        ImageRGBA color = makeColor();
+        for (uint32_t y = 24; y < 40; ++y) {
+            for (uint32_t x = 72; x < 88; ++x) color.at(x, y)[0] = color.at(x, y)[1] = color.at(x, y)[2] = value;
+        }
+        ffxdof::io::writeExr(folder / "color.exr", color, ffxdof::io::ExrPixelType::Float);
+        const ProgramResult result = runProgram(applyArguments(folder, {{"--out-type", "auto"}}));
+        INFO(result.err);
+        REQUIRE(result.exitCode == 0);
+        const ImageRGBA out = ffxdof::io::readExrColor(folder / "out.exr");
+        double energyIn = 0.0, energyOut = 0.0;
+        size_t nonFinite = 0;
+        for (uint32_t y = 0; y < kHeight; ++y) {
+            for (uint32_t x = 0; x < kWidth; ++x) {
+                for (int c = 0; c < 3; ++c) {
+                    nonFinite += !std::isfinite(out.at(x, y)[c]);
+                    energyIn += color.at(x, y)[c];
+                    energyOut += out.at(x, y)[c];
+                }
+            }
+        }
+        CHECK(nonFinite == 0);
+        CHECK(out.at(70, 32)[0] > 0.01f * value);  // blurred out of the patch
+        *kept = energyOut / energyIn;
+    };
+    double kept = 0.0, keptOrdinary = 0.0;
+    runWithPatch(1e5f, &kept);
+    const std::string outPath = folder / "out.exr";
+    {
+        Imf::InputFile file(outPath.c_str());
+        CHECK(file.header().channels().findChannel("R")->type == Imf::FLOAT);
+    }
+    runWithPatch(1000.0f, &keptOrdinary);
+    CAPTURE(kept, keptOrdinary);
+    CHECK(kept == Approx(keptOrdinary).epsilon(0.01));
+    CHECK(std::abs(kept - 1.0) < 0.05);  // the blur's own loss at the band's edge, as at 1000
+}

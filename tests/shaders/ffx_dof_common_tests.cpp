@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <map>
 #include <random>
 #include <set>
@@ -614,4 +615,62 @@ TEST_CASE("The kernel footprint covers the radius, the texel rounding and the MI
     CHECK(ffxDofTileKernelRadius(FfxFloat32x2(-3.0f, 5.0f)) == 5.0f);
     CHECK(ffxDofTileKernelRadius(FfxFloat32x2(-7.0f, 5.0f)) == 7.0f);
     CHECK(ffxDofTileKernelRadius(FfxFloat32x2(0.2f, 0.3f)) == 0.3f);
+}
+
+TEST_CASE("Colour range scale: 1 up to the limit, else the power of two that brings the peak under it", "[hdr]") {
+    CHECK(ffxDofColorRangeScale(0.0f) == 1.0f);
+    CHECK(ffxDofColorRangeScale(1.0f) == 1.0f);
+    CHECK(ffxDofColorRangeScale(FFX_DOF_COLOR_RANGE_LIMIT) == 1.0f);
+    CHECK(ffxDofColorRangeScale(std::nextafter(FFX_DOF_COLOR_RANGE_LIMIT, 1e9f)) == 0.5f);
+    CHECK(ffxDofColorRangeScale(8192.0f) == 0.5f);
+    CHECK(ffxDofColorRangeScale(16400.0f) == 0.125f);
+    CHECK(ffxDofColorRangeScale(std::numeric_limits<float>::quiet_NaN()) == 1.0f);
+    std::mt19937 rng(11);
+    std::uniform_real_distribution<float> exponent(-10.0f, 128.0f);
+    std::vector<float> peaks = {4097.0f, 65504.0f, 70000.0f, 1e5f, 1e6f, 1e30f, std::numeric_limits<float>::max()};
+    for (int i = 0; i < 2000; ++i) peaks.push_back(std::exp2(exponent(rng)));
+    for (int e = 0; e < 128; ++e) peaks.push_back(std::ldexp(1.0f, e));
+    for (float peak : peaks) {
+        INFO("peak " << peak);
+        const float scale = ffxDofColorRangeScale(peak);
+        if (peak <= FFX_DOF_COLOR_RANGE_LIMIT) {
+            REQUIRE(scale == 1.0f);
+            continue;
+        }
+        int exp2 = 0;
+        REQUIRE(std::frexp(scale, &exp2) == 0.5f);  // an exact power of two
+        REQUIRE(std::isnormal(scale));
+        // In the limit, and the largest such power of two (double math: no rounding).
+        REQUIRE(double(peak) * double(scale) <= double(FFX_DOF_COLOR_RANGE_LIMIT));
+        REQUIRE(double(peak) * double(scale) * 2.0 > double(FFX_DOF_COLOR_RANGE_LIMIT));
+    }
+    // The infinite peak cannot occur (pass 1 ignores non-finite channels) but still gives a finite scale.
+    CHECK(std::isnormal(ffxDofColorRangeScale(std::numeric_limits<float>::infinity())));
+}
+
+TEST_CASE("Colour peak: the largest finite non-negative channel, alpha ignored", "[hdr]") {
+    const float inf = std::numeric_limits<float>::infinity();
+    const float nan = std::numeric_limits<float>::quiet_NaN();
+    CHECK(ffxDofColorPeak(FfxFloat32x4(1.0f, 3.0f, 2.0f, 100.0f)) == 3.0f);
+    CHECK(ffxDofColorPeak(FfxFloat32x4(inf, 5.0f, nan, 1.0f)) == 5.0f);
+    CHECK(ffxDofColorPeak(FfxFloat32x4(-1e9f, -inf, nan, 1.0f)) == 0.0f);
+    CHECK(ffxDofColorPeak(FfxFloat32x4(std::numeric_limits<float>::max(), 0.0f, 0.0f, 1.0f)) ==
+          std::numeric_limits<float>::max());
+}
+
+TEST_CASE("Scaling into the range and back is exact for power-of-two scales", "[hdr]") {
+    std::mt19937 rng(5);
+    std::uniform_real_distribution<float> exponent(-20.0f, 127.0f);
+    for (int i = 0; i < 2000; ++i) {
+        const float value = std::exp2(exponent(rng));
+        const float scale = ffxDofColorRangeScale(value);
+        const FfxFloat32x4 color(value, value * 0.5f, value * 0.25f, 1.0f);
+        const FfxFloat32x4 scaled = ffxDofScaleColor(color, scale);
+        REQUIRE(scaled.x <= FFX_DOF_COLOR_RANGE_LIMIT);
+        const FfxFloat32x4 back = ffxDofUnscaleColor(scaled, scale);
+        if (std::isnormal(scaled.z)) REQUIRE(back == color);
+    }
+    // Clamps: nothing scaled exceeds a half, nothing unscaled is infinite.
+    CHECK(ffxDofScaleChannel(std::numeric_limits<float>::infinity(), 1.0f) == FFX_DOF_FLOAT16_MAX);
+    CHECK(std::isfinite(ffxDofUnscaleColor(FfxFloat32x4(4096.0f), std::ldexp(1.0f, -126)).x));
 }

@@ -45,7 +45,7 @@ struct State {
     Image<glm::vec4> dilatedTiles;
     Image<glm::vec3> nearColor, farColor;
     Image<glm::vec4> output;
-    std::atomic<uint32_t> globals{0};
+    std::atomic<uint32_t> globals[FFX_DOF_GLOBALS_WORD_COUNT] = {};
 };
 State* g_state = nullptr;
 
@@ -104,15 +104,23 @@ FfxFloat32x4 ffxDofLoadInputColor(FfxUInt32x2 p) {
     return g_state->scene->color[size_t(p.y) * g_state->scene->width + p.x];
 }
 void ffxDofStoreTile(FfxUInt32x2 t, FfxFloat32x2 v) { g_state->tiles.store(t.x, t.y, v); }
-void ffxDofAtomicMaxGlobalRadius(FfxFloat32 r) {
-    uint32_t bits = ffxDofAsUInt(std::max(r, 0.0f));
-    uint32_t current = g_state->globals.load();
-    while (bits > current && !g_state->globals.compare_exchange_weak(current, bits)) {
+static void atomicMaxWord(uint32_t word, FfxFloat32 value) {
+    uint32_t bits = ffxDofAsUInt(std::max(value, 0.0f));
+    uint32_t current = g_state->globals[word].load();
+    while (bits > current && !g_state->globals[word].compare_exchange_weak(current, bits)) {
     }
 }
+void ffxDofAtomicMaxGlobalRadius(FfxFloat32 r) { atomicMaxWord(FFX_DOF_GLOBALS_MAX_RADIUS, r); }
+void ffxDofAtomicMaxColorPeak(FfxFloat32 peak) { atomicMaxWord(FFX_DOF_GLOBALS_COLOR_PEAK, peak); }
+FfxFloat32 ffxDofLoadColorPeak() { return ffxDofAsFloat(g_state->globals[FFX_DOF_GLOBALS_COLOR_PEAK].load()); }
+void ffxDofResetColorPeak() { g_state->globals[FFX_DOF_GLOBALS_COLOR_PEAK].store(0); }
+void ffxDofStoreColorScale(FfxFloat32 scale) {
+    g_state->globals[FFX_DOF_GLOBALS_COLOR_SCALE].store(ffxDofAsUInt(scale));
+}
+FfxFloat32 ffxDofLoadColorScale() { return ffxDofAsFloat(g_state->globals[FFX_DOF_GLOBALS_COLOR_SCALE].load()); }
 void ffxDofStoreColorMip(FfxUInt32 mip, FfxUInt32x2 t, FfxDofFloat3 c) { g_state->colorMips[mip].store(t.x, t.y, c); }
 void ffxDofStoreCocMip(FfxUInt32 mip, FfxUInt32x2 t, FfxFloat32 c) { g_state->cocMips[mip].store(t.x, t.y, c); }
-FfxFloat32 ffxDofLoadGlobalMaxRadius() { return ffxDofAsFloat(g_state->globals.load()); }
+FfxFloat32 ffxDofLoadGlobalMaxRadius() { return ffxDofAsFloat(g_state->globals[FFX_DOF_GLOBALS_MAX_RADIUS].load()); }
 FfxFloat32x2 ffxDofLoadTile(FfxUInt32x2 t) { return g_state->tiles.at(int32_t(t.x), int32_t(t.y)); }
 void ffxDofStoreDilatedTile(FfxUInt32x2 t, FfxFloat32x4 v) { g_state->dilatedTiles.store(t.x, t.y, v); }
 FfxFloat32x4 ffxDofLoadDilatedTile(FfxUInt32x2 t) { return g_state->dilatedTiles.at(int32_t(t.x), int32_t(t.y)); }
@@ -129,7 +137,7 @@ FfxDofFloat3 ffxDofLoadNearColor(FfxInt32x2 t) { return g_state->nearColor.at(t.
 FfxDofFloat3 ffxDofLoadFarColor(FfxInt32x2 t) { return g_state->farColor.at(t.x, t.y); }
 FfxFloat32x2 ffxDofLoadLayerAlpha(FfxInt32x2 t) { return g_state->layerAlpha.at(t.x, t.y); }
 void ffxDofStoreOutput(FfxUInt32x2 p, FfxFloat32x4 c) { g_state->output.store(p.x, p.y, c); }
-void ffxDofResetGlobals() { g_state->globals.store(0); }
+void ffxDofResetGlobals() { g_state->globals[FFX_DOF_GLOBALS_MAX_RADIUS].store(0); }
 
 namespace ffxdoftest {
 
@@ -165,9 +173,11 @@ std::vector<glm::vec4> runPipeline(const Scene& scene, const Settings& settings,
     auto groups = [](uint32_t domain, uint32_t extent) { return ceilDiv(domain, extent); };
     runGroups(groups(scene.width, FFX_DOF_DOWNSAMPLE_DEPTH_GROUP_EXTENT),
               groups(scene.height, FFX_DOF_DOWNSAMPLE_DEPTH_GROUP_EXTENT), ffxDofDownsampleDepth);
-    float globalMax = ffxDofAsFloat(state.globals.load());
+    float globalMax = ffxDofAsFloat(state.globals[FFX_DOF_GLOBALS_MAX_RADIUS].load());
+    float colorPeak = ffxDofAsFloat(state.globals[FFX_DOF_GLOBALS_COLOR_PEAK].load());
     runGroups(groups(scene.width, FFX_DOF_DOWNSAMPLE_COLOR_GROUP_EXTENT),
               groups(scene.height, FFX_DOF_DOWNSAMPLE_COLOR_GROUP_EXTENT), ffxDofDownsampleColor);
+    float colorScale = ffxDofAsFloat(state.globals[FFX_DOF_GLOBALS_COLOR_SCALE].load());
     runGroups(groups(k.tileCount.x, FFX_DOF_DILATE_GROUP_EXTENT), groups(k.tileCount.y, FFX_DOF_DILATE_GROUP_EXTENT),
               ffxDofDilate);
     if (settings.forceMixedBlurPath) {
@@ -197,7 +207,10 @@ std::vector<glm::vec4> runPipeline(const Scene& scene, const Settings& settings,
         layers->farColor = state.farColor.texels;
         layers->layerAlpha = state.layerAlpha.texels;
         layers->globalMaxRadius = globalMax;
-        layers->globalsAfterComposite = state.globals.load();
+        layers->globalsAfterComposite =
+            state.globals[FFX_DOF_GLOBALS_MAX_RADIUS].load() | state.globals[FFX_DOF_GLOBALS_COLOR_PEAK].load();
+        layers->colorPeak = colorPeak;
+        layers->colorScale = colorScale;
     }
     g_state = nullptr;
     return state.output.texels;

@@ -36,7 +36,9 @@ struct Layers {
     std::vector<glm::vec3> nearColor, farColor;
     std::vector<glm::vec2> layerAlpha;
     float globalMaxRadius = 0.0f;        // GLOBALS after pass 1
-    uint32_t globalsAfterComposite = 1;  // GLOBALS bits after pass 5 (must be 0)
+    uint32_t globalsAfterComposite = 1;  // GLOBALS words 0 and 1 after pass 5, or-ed (must be 0)
+    float colorPeak = 0.0f;              // GLOBALS colour peak after pass 1 (0 unless above the limit)
+    float colorScale = 0.0f;             // GLOBALS colour scale after pass 2
 };
 
 std::vector<glm::vec4> runPipeline(const Scene& scene, const Settings& settings, Layers* layers = nullptr);

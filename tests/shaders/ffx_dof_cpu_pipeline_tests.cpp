@@ -320,3 +320,77 @@ TEST_CASE("A small far light in front of a farther background keeps its energy a
         CHECK(centre == Approx(discLevel).epsilon(0.20).margin(0.05));
     }
 }
+
+TEST_CASE("HDR: colour far above the half range stays finite, is blurred and keeps its energy", "[pipeline][hdr]") {
+    // Issue 13: a patch of 16,400 (or 1e5, or a sun of 1e6) used to come out black with inf/NaN
+    // around it. The effect scales such frames into its range by a power of two (docs/technique.md).
+    struct Case {
+        const char* name;
+        Rect rect;
+        float value;
+        float coc;         // of the patch (the black background is far, radius 6)
+        double tolerance;  // |energy out / in - 1|: what the blur keeps at any intensity (measured at 1:
+                           // 0.4% for the far patches, 3.7% for the 4 x 4 px sun, 5% for the near patch)
+    };
+    const Case cases[] = {
+        {"sun of 1e6 (far)", {94, 78, 98, 82}, 1e6f, -6.0f, 0.05},
+        {"patch of 16400 (far)", {80, 64, 112, 96}, 16400.0f, -6.0f, 0.01},
+        {"patch of 1e5 (far)", {80, 64, 112, 96}, 1e5f, -6.0f, 0.01},
+        {"patch of 1e5 (near)", {80, 64, 112, 96}, 1e5f, 5.0f, 0.06},
+        {"patch of 1e30 (far)", {80, 64, 112, 96}, 1e30f, -6.0f, 0.015},
+    };
+    for (const Case& c : cases) {
+        INFO(c.name);
+        Scene scene = makeScene(192, 160, glm::vec4(0, 0, 0, 1), -6.0f);
+        Scene reference = scene;  // the same scene at an intensity the effect handles without scaling
+        const float low = 1.0f;
+        for (int y = c.rect.y0; y < c.rect.y1; ++y)
+            for (int x = c.rect.x0; x < c.rect.x1; ++x) {
+                const size_t i = size_t(y) * scene.width + size_t(x);
+                scene.color[i] = glm::vec4(c.value, c.value, c.value, 1.0f);
+                scene.depth[i] = -c.coc;
+                reference.color[i] = glm::vec4(low, low, low, 1.0f);
+                reference.depth[i] = -c.coc;
+            }
+        Layers layers;
+        const std::vector<glm::vec4> out = ffxdoftest::runPipeline(scene, Settings{}, &layers);
+        const std::vector<glm::vec4> lowOut = ffxdoftest::runPipeline(reference, Settings{});
+        CHECK(layers.colorPeak == c.value);
+        CHECK(layers.colorScale == ffxDofColorRangeScale(c.value));
+        CHECK(layers.colorScale < 1.0f);
+        CHECK(layers.globalsAfterComposite == 0u);
+        double energyIn = 0.0, energyOut = 0.0, lowIn = 0.0, lowEnergyOut = 0.0;
+        size_t nonFinite = 0, spread = 0;
+        for (size_t i = 0; i < out.size(); ++i) {
+            for (int ch = 0; ch < 3; ++ch) nonFinite += !std::isfinite(out[i][ch]);
+            energyIn += double(scene.color[i].x) + scene.color[i].y + scene.color[i].z;
+            energyOut += double(out[i].x) + out[i].y + out[i].z;
+            lowIn += double(reference.color[i].x) + reference.color[i].y + reference.color[i].z;
+            lowEnergyOut += double(lowOut[i].x) + lowOut[i].y + lowOut[i].z;
+            const int x = int(i % scene.width), y = int(i / scene.width);
+            spread += !c.rect.contains(x, y) && out[i].x > 1e-3 * c.value;
+        }
+        CHECK(nonFinite == 0);
+        CHECK(spread > 0);  // blurred, not copied
+        // Energy: as well kept as at an ordinary intensity within 1% (the HDR path is the same blur,
+        // scaled), and near the input's.
+        INFO("energy in " << energyIn << ", out " << energyOut << "; at low intensity in " << lowIn << ", out "
+                          << lowEnergyOut);
+        CHECK(energyOut / energyIn == Approx(lowEnergyOut / lowIn).epsilon(0.01));
+        CHECK(std::abs(energyOut / energyIn - 1.0) <= c.tolerance);
+    }
+}
+
+TEST_CASE("HDR: an in-focus frame above the range is still copied bit for bit", "[pipeline][hdr]") {
+    Scene scene = makeScene(70, 50, kBackground, 0.3f);
+    std::mt19937 rng(9);
+    std::uniform_real_distribution<float> exponent(-30.0f, 120.0f);
+    for (size_t i = 0; i < scene.color.size(); ++i) {
+        scene.color[i] = glm::vec4(std::exp2(exponent(rng)), std::exp2(exponent(rng)), std::exp2(exponent(rng)), 1.0f);
+        scene.depth[i] = ((i * 7) % 10 - 4.5f) * 0.1f;  // |radius| < 0.5
+    }
+    std::vector<glm::vec4> out = ffxdoftest::runPipeline(scene, Settings{});
+    size_t changed = 0;
+    for (size_t i = 0; i < out.size(); ++i) changed += !bitIdentical(out[i], scene.color[i]);
+    CHECK(changed == 0);
+}

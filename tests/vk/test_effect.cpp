@@ -277,3 +277,69 @@ TEST_CASE("timestamps and memory are reported, and the copy pass runs", "[vulkan
     CHECK(repeated.totalMilliseconds > 0.0);
     CHECK(repeated.internalMemoryBytes == single.internalMemoryBytes);
 }
+
+TEST_CASE("HDR colour far above the half range stays finite and keeps its energy, 16- and 32-bit", "[vulkan]") {
+    // Issue 13: finite colour above about 16,400 came out black with inf/NaN spreading. Black far
+    // background (radius 6 half-res px), a far patch or a small "sun" of the given value. The energy
+    // must be what the same scene gives at an intensity that needs no range scaling (1000, same
+    // permutation) within 1%, and near the input's: the blur itself loses a little energy at small
+    // lights and image edges at any intensity (Case::tolerance: about 1.3% for the patches, 10% for
+    // the 3 x 3 px sun, measured at 1000 too).
+    struct Case {
+        const char* name;
+        uint32_t x0, y0, size;
+        float value;
+        double tolerance;  // |energy out / energy in - 1|, as at ordinary intensity
+    };
+    const Case cases[] = {{"patch of 16400", 40, 32, 24, 16400.0f, 0.02},
+                          {"patch of 1e5", 40, 32, 24, 1e5f, 0.02},
+                          {"sun of 1e6", 50, 42, 3, 1e6f, 0.12},
+                          {"patch of 1e30", 40, 32, 24, 1e30f, 0.02}};
+    const uint32_t width = 128, height = 96;
+    const float radius = 6.0f;
+    const auto makeHdrScene = [&](const Case& c, float value) {
+        Scene scene{vkrun::HostImage(width, height, 4), vkrun::HostImage(width, height, 1)};
+        for (uint32_t y = 0; y < height; ++y) {
+            for (uint32_t x = 0; x < width; ++x) {
+                const bool lit = x >= c.x0 && x < c.x0 + c.size && y >= c.y0 && y < c.y0 + c.size;
+                float* color = scene.color.at(x, y);
+                color[0] = color[1] = color[2] = lit ? value : 0.0f;
+                color[3] = 1.0f;
+                scene.depth.at(x, y)[0] = 1.0f;  // radius = -R: far field
+            }
+        }
+        scene.cocScale = -2.0f * radius;
+        scene.cocBias = radius;
+        return scene;
+    };
+    const auto energyOf = [](const vkrun::HostImage& image) {
+        double energy = 0.0;
+        for (size_t i = 0; i < size_t(image.width) * image.height; ++i) {
+            for (int ch = 0; ch < 3; ++ch) energy += image.pixels[i * 4 + size_t(ch)];
+        }
+        return energy;
+    };
+    for (const Case& c : cases) {
+        const Scene scene = makeHdrScene(c, c.value);
+        const Scene ordinary = makeHdrScene(c, 1000.0f);
+        for (bool float32 : {true, false}) {
+            CAPTURE(c.name, float32);
+            vkrun::RunSettings settings = settingsFor(scene);
+            settings.forceFloat32 = float32;
+            const vkrun::RunResult result = run(scene, settings);  // requires a finite output
+            const vkrun::RunResult reference = run(ordinary, settings);
+            size_t spread = 0;
+            for (uint32_t y = 0; y < height; ++y) {
+                for (uint32_t x = 0; x < width; ++x) {
+                    spread += scene.color.at(x, y)[0] == 0.0f && result.output.at(x, y)[0] > 1e-3f * c.value;
+                }
+            }
+            const double kept = energyOf(result.output) / energyOf(scene.color);
+            const double keptOrdinary = energyOf(reference.output) / energyOf(ordinary.color);
+            CAPTURE(kept, keptOrdinary);
+            CHECK(spread > 0);  // blurred
+            CHECK(kept == Approx(keptOrdinary).epsilon(0.01));
+            CHECK(std::abs(kept - 1.0) <= c.tolerance);
+        }
+    }
+}
