@@ -35,7 +35,7 @@
 // a time; between half a pixel and one pixel the groups of rings are merged one after the other as
 // the spread falls, the one part-way mixed ring by ring (ffxDofRingMergeAmount,
 // ffxDofGatherInnerRings), so the result is continuous and costs at most one ring more than the
-// full path.
+// full path. Walks at two MIPs judge their common border by the coarse texels (FfxDofAnnulus).
 // Samples are point-sampled (no bilinear mixing of a foreground and a background texel, which
 // would let the foreground color leak with a halfway radius).
 //
@@ -106,7 +106,8 @@ struct FfxDofGatherParts
 // branch, and a step of the walk that lands on an empty row counts with weight 0 (`valid`) rather
 // than looping on to the next row.
 FFX_DOF_INLINE void ffxDofGatherRing(FFX_DOF_INOUT(FfxDofGather) gather, FfxDofKernel kernel, FfxUInt32 firstRing,
-                                     FfxUInt32 lastRing, FfxUInt32 mip, FfxFloat32 presence, FfxBoolean trackSpread,
+                                     FfxUInt32 lastRing, FfxUInt32 mip, FfxUInt32 innerBorderMip,
+                                     FfxUInt32 outerBorderMip, FfxFloat32 presence, FfxBoolean trackSpread,
                                      FfxDofGatherParts parts, FfxDofConstants constants)
 {
     FfxBoolean holeFill = parts.nearField && parts.farField;
@@ -121,8 +122,13 @@ FFX_DOF_INLINE void ffxDofGatherRing(FFX_DOF_INOUT(FfxDofGather) gather, FfxDofK
     // offset of the texel's centre.
     FfxFloat32x2 centerToCorner = kernel.center * mipScale - FfxFloat32x2(0.5f, 0.5f);
     FfxFloat32x2 lastTexel = FfxFloat32x2(ffxDofMipSize(constants.halfSize, mip) - FfxUInt32x2(1u, 1u));
-    FfxDofAnnulus annulus = ffxDofMakeAnnulus(kernel.origin * mipScale, ffxDofRingInnerRadius(firstRing, spacing),
-                                              ffxDofRingInnerRadius(lastRing + 1u, spacing));
+    // Borders shared with a walk at a coarser MIP are judged by its texels (FfxDofAnnulus).
+    FfxFloat32 innerRadius = ffxDofRingInnerRadius(firstRing, spacing);
+    FfxFloat32 outerRadius = ffxDofRingInnerRadius(lastRing + 1u, spacing);
+    FfxFloat32 innerBlock = FfxFloat32(1u << (innerBorderMip - mip));
+    FfxFloat32 outerBlock = FfxFloat32(1u << (outerBorderMip - mip));
+    FfxDofAnnulus annulus =
+        ffxDofMakeAnnulus(kernel.origin * mipScale, innerRadius, outerRadius, innerBlock, outerBlock);
     FfxDofAnnulusWalk walk = ffxDofAnnulusBegin(annulus);
     FFX_DOF_LOOP
     while (ffxDofAnnulusRowsLeft(annulus, walk))
@@ -188,12 +194,17 @@ FFX_DOF_INLINE void ffxDofGatherRing(FFX_DOF_INOUT(FfxDofGather) gather, FfxDofK
 // lanes in lock step (lavapipe: 8), lanes that merge and lanes that do not share the passes instead
 // of running a merged loop and a full loop one after the other.
 FFX_DOF_INLINE void ffxDofGatherInnerRings(FFX_DOF_INOUT(FfxDofGather) gather, FfxDofKernel kernel,
-                                           FfxFloat32 mergeAmount, FfxDofGatherParts parts, FfxDofConstants constants)
+                                           FfxBoolean mergeEligible, FfxFloat32 mergeAmount, FfxDofGatherParts parts,
+                                           FfxDofConstants constants)
 {
     FfxUInt32 mergeLog = FfxUInt32(FFX_DOF_OPTION_MAX_RING_MERGE_LOG);
     FfxUInt32 groupSize = 1u << mergeLog;
     FfxUInt32 groupCount = (kernel.rings - 1u + groupSize - 1u) / groupSize;
     FfxFloat32 mergedGroups = mergeAmount * FfxFloat32(groupCount);
+    FfxUInt32 coarseMip = min(kernel.baseMip + mergeLog, FfxUInt32(FFX_DOF_OPTION_MAX_MIP - 1));
+    // The border with the outermost ring is judged at the coarse MIP wherever merging may happen
+    // (ffxDofGatherKernel judges it so on the outermost ring's side).
+    FfxBoolean outerBorderCoarse = mergeEligible;
     FfxInt32 top = FfxInt32(kernel.rings) - 1;  // outermost ring of the current group
     FfxUInt32 group = 0u;
     FfxUInt32 walk = 0u;  // rings of the current group walked so far
@@ -208,15 +219,22 @@ FFX_DOF_INLINE void ffxDofGatherInnerRings(FFX_DOF_INOUT(FfxDofGather) gather, F
         FfxUInt32 walks = mergedWalks + (merged < 1.0f ? topRing - first + 1u : 0u);
         FfxBoolean mergedWalk = walk < mergedWalks;
         FfxUInt32 ring = mergedWalk ? topRing : topRing + mergedWalks - walk;
-        FfxUInt32 mip = min(kernel.baseMip + (mergedWalk ? mergeLog : 0u), FfxUInt32(FFX_DOF_OPTION_MAX_MIP - 1));
+        FfxUInt32 mip = mergedWalk ? coarseMip : kernel.baseMip;
         FfxFloat32 presence = mergedWalk ? merged : 1.0f - merged;
-        ffxDofGatherRing(gather, kernel, mergedWalk ? first : ring, ring, mip, presence, false, parts, constants);
+        // A group with a merged part judges both its borders at the coarse MIP, in every walk of it.
+        FfxBoolean innerBorderCoarse = merged > 0.0f;
+        FfxUInt32 firstWalked = mergedWalk ? first : ring;
+        FfxUInt32 innerBorderMip = firstWalked == first && innerBorderCoarse ? coarseMip : mip;
+        FfxUInt32 outerBorderMip = ring == topRing && outerBorderCoarse ? coarseMip : mip;
+        ffxDofGatherRing(gather, kernel, firstWalked, ring, mip, innerBorderMip, outerBorderMip, presence, false, parts,
+                         constants);
         ++walk;
         if (walk == walks)
         {
             top = FfxInt32(first) - 1;
             ++group;
             walk = 0u;
+            outerBorderCoarse = innerBorderCoarse;
         }
     }
 }
@@ -252,13 +270,18 @@ FFX_DOF_INLINE void ffxDofGatherKernel(FFX_DOF_INOUT(FfxDofGather) gather, FfxDo
                                        FfxDofConstants constants)
 {
     FfxBoolean trackSpread = !parts.equalWeights;
-    ffxDofGatherRing(gather, kernel, kernel.rings, kernel.rings, kernel.baseMip, 1.0f, trackSpread, parts, constants);
+    FfxBoolean mergeEligible =
+        FFX_DOF_OPTION_MAX_RING_MERGE_LOG > 0 && kernel.rings >= 2u && kernel.centerCoc <= -FFX_DOF_IN_FOCUS_RADIUS;
+    // Whether the inner rings merge is known only after this ring, so its inner border is judged at
+    // the coarse MIP wherever they may.
+    FfxUInt32 coarseMip =
+        min(kernel.baseMip + FfxUInt32(FFX_DOF_OPTION_MAX_RING_MERGE_LOG), FfxUInt32(FFX_DOF_OPTION_MAX_MIP - 1));
+    ffxDofGatherRing(gather, kernel, kernel.rings, kernel.rings, kernel.baseMip,
+                     mergeEligible ? coarseMip : kernel.baseMip, kernel.baseMip, 1.0f, trackSpread, parts, constants);
     FfxFloat32 mergeAmount = 0.0f;
-#if FFX_DOF_OPTION_MAX_RING_MERGE_LOG > 0
-    if (kernel.rings >= 2u && kernel.centerCoc <= -FFX_DOF_IN_FOCUS_RADIUS)
+    if (mergeEligible)
         mergeAmount = parts.equalWeights ? 1.0f : ffxDofRingMergeAmount(gather.cocSpread);
-#endif
-    ffxDofGatherInnerRings(gather, kernel, mergeAmount, parts, constants);
+    ffxDofGatherInnerRings(gather, kernel, mergeEligible, mergeAmount, parts, constants);
 }
 
 FFX_DOF_INLINE FfxDofGatherParts ffxDofMakeGatherParts(FfxBoolean nearField, FfxBoolean farField,

@@ -410,11 +410,19 @@ FFX_DOF_INLINE FfxFloat32 ffxDofRingInnerRadius(FfxUInt32 ring, FfxFloat32 spaci
 
 // The texels whose centres lie at [innerRadius, outerRadius) from `origin` (all in texels of one
 // MIP level), walked row by row: what does not change during the walk ...
+// Each border may be judged at a coarser MIP than the walk's (a block of `innerBlock` / `outerBlock`
+// texels per side, a power of two; 1: the walk's own texels): where a walk meets a walk of a coarser
+// MIP, both judge their common border by the coarse texels' centres, so a texel of the finer level
+// is read once, by one of them. Judged by each side's own centres, a one-texel source next to the
+// border was read twice or not at all: a notched, soft rim and a dip at the centre of a single
+// point's disc, and a small light losing or gaining energy (issue 17).
 struct FfxDofAnnulus
 {
     FfxFloat32x2 origin;
     FfxFloat32 innerRadius;
     FfxFloat32 outerRadius;
+    FfxFloat32 innerBlock;
+    FfxFloat32 outerBlock;
     FfxFloat32 lastRow;
 };
 // ... and the walk's position.
@@ -426,35 +434,58 @@ struct FfxDofAnnulusWalk
     FfxFloat32 holeEnd;    // first texel after them (holeFirst when the row has none)
 };
 
-FFX_DOF_INLINE FfxDofAnnulus ffxDofMakeAnnulus(FfxFloat32x2 origin, FfxFloat32 innerRadius, FfxFloat32 outerRadius)
+// The texels (first, last) whose block of `block` x `block` texels has its centre less than `radius`
+// from `origin`, in row `y` (or, for a column, the rows: pass the column's coordinates). A block's
+// texels are all in or all out, and with block 1 this is ffxDofTexelSpan of the row. The coarse
+// figures are the ones the coarse walk computes itself (scaling by a power of two is exact), so the
+// two walks agree to the bit on every block.
+FFX_DOF_INLINE FfxFloat32x2 ffxDofBlockSpan(FfxFloat32 originAlong, FfxFloat32 originAcross, FfxFloat32 radius,
+                                            FfxFloat32 block, FfxFloat32 across)
+{
+    FfxFloat32 scale = 1.0f / block;
+    FfxFloat32 offset = floor(across * scale) + 0.5f - originAcross * scale;
+    FfxFloat32x2 span = ffxDofTexelSpan(originAlong * scale, ffxDofKernelRowHalfWidth(radius * scale, offset));
+    return FfxFloat32x2(span.x * block, span.y * block + block - 1.0f);
+}
+FFX_DOF_INLINE FfxFloat32x2 ffxDofBlockRows(FfxFloat32 originY, FfxFloat32 radius, FfxFloat32 block)
+{
+    FfxFloat32 scale = 1.0f / block;
+    FfxFloat32x2 span = ffxDofTexelSpan(originY * scale, radius * scale);
+    return FfxFloat32x2(span.x * block, span.y * block + block - 1.0f);
+}
+
+FFX_DOF_INLINE FfxDofAnnulus ffxDofMakeAnnulus(FfxFloat32x2 origin, FfxFloat32 innerRadius, FfxFloat32 outerRadius,
+                                               FfxFloat32 innerBlock, FfxFloat32 outerBlock)
 {
     FfxDofAnnulus annulus;
     annulus.origin = origin;
     annulus.innerRadius = innerRadius;
     annulus.outerRadius = outerRadius;
-    annulus.lastRow = ffxDofTexelSpan(origin.y, outerRadius).y;
+    annulus.innerBlock = innerBlock;
+    annulus.outerBlock = outerBlock;
+    annulus.lastRow = ffxDofBlockRows(origin.y, outerRadius, outerBlock).y;
     return annulus;
 }
 
 // Row `y` of the annulus, positioned on its first texel (past its last one when it has none).
 FFX_DOF_INLINE FfxDofAnnulusWalk ffxDofAnnulusRow(FfxDofAnnulus annulus, FfxFloat32 y)
 {
-    FfxFloat32 dy = y + 0.5f - annulus.origin.y;
-    FfxFloat32x2 row = ffxDofTexelSpan(annulus.origin.x, ffxDofKernelRowHalfWidth(annulus.outerRadius, dy));
-    FfxFloat32x2 hole = ffxDofTexelSpan(annulus.origin.x, ffxDofKernelRowHalfWidth(annulus.innerRadius, dy));
+    FfxFloat32x2 row = ffxDofBlockSpan(annulus.origin.x, annulus.origin.y, annulus.outerRadius, annulus.outerBlock, y);
+    FfxFloat32x2 hole = ffxDofBlockSpan(annulus.origin.x, annulus.origin.y, annulus.innerRadius, annulus.innerBlock, y);
     FfxDofAnnulusWalk walk;
     walk.rowLast = row.y;
     walk.holeFirst = hole.x;
     // An empty hole (first > last, by 2 where the origin lies exactly on a texel centre) must not
     // send the walk backwards.
     walk.holeEnd = max(hole.y + 1.0f, hole.x);
-    walk.texel = FfxFloat32x2(row.x == walk.holeFirst ? walk.holeEnd : row.x, y);
+    // Judged in blocks of different sizes, the hole may begin before the row does.
+    walk.texel = FfxFloat32x2(row.x >= walk.holeFirst && row.x < walk.holeEnd ? walk.holeEnd : row.x, y);
     return walk;
 }
 
 FFX_DOF_INLINE FfxDofAnnulusWalk ffxDofAnnulusBegin(FfxDofAnnulus annulus)
 {
-    return ffxDofAnnulusRow(annulus, ffxDofTexelSpan(annulus.origin.y, annulus.outerRadius).x);
+    return ffxDofAnnulusRow(annulus, ffxDofBlockRows(annulus.origin.y, annulus.outerRadius, annulus.outerBlock).x);
 }
 
 // Whether the walk has rows left. Its position may still be no texel: a row at the top or bottom,

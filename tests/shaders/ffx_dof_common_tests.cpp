@@ -137,8 +137,9 @@ TEST_CASE("Ring merge amount: merged when flat, full when not, continuous in bet
 namespace {
 
 // The texels a walk of the annulus visits, in order; fails on a runaway walk.
-std::vector<std::pair<int, int>> walkAnnulus(FfxFloat32x2 origin, float innerRadius, float outerRadius) {
-    const FfxDofAnnulus annulus = ffxDofMakeAnnulus(origin, innerRadius, outerRadius);
+std::vector<std::pair<int, int>> walkAnnulus(FfxFloat32x2 origin, float innerRadius, float outerRadius,
+                                             float innerBlock = 1.0f, float outerBlock = 1.0f) {
+    const FfxDofAnnulus annulus = ffxDofMakeAnnulus(origin, innerRadius, outerRadius, innerBlock, outerBlock);
     std::vector<std::pair<int, int>> texels;
     int steps = 0;
     for (FfxDofAnnulusWalk walk = ffxDofAnnulusBegin(annulus); ffxDofAnnulusRowsLeft(annulus, walk);
@@ -155,6 +156,36 @@ double centreDistance(FfxFloat32x2 origin, int x, int y) {
 }
 
 }  // namespace
+
+TEST_CASE("Walks at two MIPs sharing a border judged by the coarse texels read every fine texel once", "[kernel]") {
+    // The blur's schedule in small: an outer ring at MIP m, a merged group at MIP m + 1 (block 2)
+    // inside it, a centre ring at MIP m inside that. The fine walks judge their borders with the
+    // coarse walk by the coarse texels; every fine texel of the whole kernel must be read exactly once,
+    // directly or as a quarter of the coarse texel holding it.
+    std::mt19937 rng(23);
+    std::uniform_real_distribution<float> unit(0.0f, 1.0f);
+    for (int trial = 0; trial < 400; ++trial) {
+        const FfxFloat32x2 origin(20.0f + 4.0f * unit(rng), 20.0f + 4.0f * unit(rng));
+        const float spacing = 0.7f + 0.8f * unit(rng);
+        const uint32_t rings = 2u + uint32_t(unit(rng) * 9.0f);
+        const float kernelOuter = ffxDofRingInnerRadius(rings + 1u, spacing);
+        const float groupOuter = ffxDofRingInnerRadius(rings, spacing);
+        const float groupInner = ffxDofRingInnerRadius(1u, spacing);
+        std::map<std::pair<int, int>, int> reads;
+        for (const auto& t : walkAnnulus(origin, groupOuter, kernelOuter, 2.0f, 1.0f)) ++reads[t];
+        for (const auto& t : walkAnnulus(origin, 0.0f, groupInner, 1.0f, 2.0f)) ++reads[t];
+        for (const auto& t : walkAnnulus(origin * 0.5f, groupInner * 0.5f, groupOuter * 0.5f))
+            for (int dy = 0; dy < 2; ++dy)
+                for (int dx = 0; dx < 2; ++dx) ++reads[{2 * t.first + dx, 2 * t.second + dy}];
+        INFO("trial " << trial << ": origin " << origin.x << ", " << origin.y << ", spacing " << spacing << ", rings "
+                      << rings);
+        for (const auto& [texel, count] : reads) REQUIRE(count == 1);
+        // Nothing of the kernel is missed: every texel whose centre lies well inside is read.
+        for (int y = 0; y < 48; ++y)
+            for (int x = 0; x < 48; ++x)
+                if (centreDistance(origin, x, y) < kernelOuter - 1e-3) REQUIRE(reads.count({x, y}) == 1);
+    }
+}
 
 TEST_CASE("Kernel row half-width is the circle's", "[kernel]") {
     CHECK(ffxDofKernelRowHalfWidth(5.0f, 0.0f) == 5.0f);

@@ -8,6 +8,7 @@
 #include "ffx_dof_composite.h"
 
 #include <algorithm>
+#include <cmath>
 #include <atomic>
 #include <condition_variable>
 #include <functional>
@@ -214,6 +215,70 @@ std::vector<glm::vec4> runPipeline(const Scene& scene, const Settings& settings,
     }
     g_state = nullptr;
     return state.output.texels;
+}
+
+PointDisc measurePointDisc(float radius, int position, uint32_t frame) {
+    const uint32_t width = 96, height = 80;
+    const int px = 48 + position, py = 40 + 3 * position;
+    Scene scene;
+    scene.width = width;
+    scene.height = height;
+    scene.color.assign(size_t(width) * height, glm::vec4(0.0f, 0.0f, 0.0f, 1.0f));
+    scene.depth.assign(size_t(width) * height, radius);  // radius = -depth: far field
+    scene.color[size_t(py) * width + size_t(px)] = glm::vec4(10.0f, 10.0f, 10.0f, 1.0f);
+    Settings settings;
+    settings.frameIndex = frame;
+    Layers layers;
+    runPipeline(scene, settings, &layers);
+    PointDisc disc;
+    double sum = 0.0, sum2 = 0.0, count = 0.0;
+    for (uint32_t y = 0; y < layers.halfHeight; ++y) {
+        for (uint32_t x = 0; x < layers.halfWidth; ++x) {
+            const size_t i = size_t(y) * layers.halfWidth + x;
+            const double value = layers.farColor[i].x * layers.layerAlpha[i].y;
+            disc.energy += value;
+            const double dx = x + 0.5 - (px + 0.5) / 2.0, dy = y + 0.5 - (py + 0.5) / 2.0;
+            if (dx * dx + dy * dy > 0.49 * radius * radius) continue;
+            sum += value, sum2 += value * value, count += 1.0;
+        }
+    }
+    const double mean = sum / count;
+    disc.flatness = std::sqrt(std::max(0.0, sum2 / count - mean * mean)) / mean;
+    return disc;
+}
+
+std::vector<LightCase> runSmallFarLightCases() {
+    const uint32_t w = 128, h = 112;
+    const float lightRadius = 10.4f, backgroundRadius = 16.0f;  // far field: depth = radius
+    Scene plain;
+    plain.width = w;
+    plain.height = h;
+    plain.color.assign(size_t(w) * h, glm::vec4(0.05f, 0.05f, 0.05f, 1.0f));
+    plain.depth.assign(size_t(w) * h, backgroundRadius);
+    Settings settings;
+    settings.cocLimit = 40.0f;
+    const std::vector<glm::vec4> without = runPipeline(plain, settings);
+    std::vector<LightCase> cases;
+    for (const int size : {1, 3, 5, 9, 13}) {
+        Scene scene = plain;
+        const int x0 = int(w) / 2 - size / 2, y0 = int(h) / 2 - size / 2;
+        for (int y = y0; y < y0 + size; ++y)
+            for (int x = x0; x < x0 + size; ++x) {
+                scene.color[size_t(y) * w + size_t(x)] = glm::vec4(50.0f, 50.0f, 50.0f, 1.0f);
+                scene.depth[size_t(y) * w + size_t(x)] = lightRadius;
+            }
+        const std::vector<glm::vec4> out = runPipeline(scene, settings);
+        LightCase light;
+        light.size = size;
+        for (size_t i = 0; i < out.size(); ++i) light.energyAdded += out[i].y - without[i].y;
+        light.inputEnergy = double(size * size) * (50.0 - 0.05);
+        const double discRadius = 2.0 * lightRadius;  // full-res px
+        const double coverage = size * size / (3.14159265 * discRadius * discRadius);
+        light.discLevel = 50.0 * coverage + 0.05 * (1.0 - coverage);
+        light.centre = out[size_t(h / 2) * w + w / 2].y;
+        cases.push_back(light);
+    }
+    return cases;
 }
 
 }  // namespace ffxdoftest

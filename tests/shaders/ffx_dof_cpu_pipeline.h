@@ -43,4 +43,26 @@ struct Layers {
 
 std::vector<glm::vec4> runPipeline(const Scene& scene, const Settings& settings, Layers* layers = nullptr);
 
+// Issue 17's minimal case at half-res radii: a square light of value 50 at radius -10.4 in front of a
+// background of 0.05 at -16, 1 to 13 px wide. Before the far field was composed as layers, the
+// light's centre kept its input value (the ring occlusion let it hide its whole kernel), and a 1 or
+// 3 px light vanished in the bilateral downsample (dropped as an outlier at every MIP).
+struct LightCase {
+    int size = 0;              // px per side
+    double inputEnergy = 0.0;  // what the light adds to the input (green channel, summed)
+    double energyAdded = 0.0;  // what it adds to the output
+    double centre = 0.0;       // output at the light's centre
+    double discLevel = 0.0;    // thin lens: its energy over its disc, over the background it leaves
+};
+std::vector<LightCase> runSmallFarLightCases();
+
+// A single bright far pixel (value 10) on black, both at far radius `radius` (half-res px), at one of
+// two positions in the quad grid: the energy of the half-res far layer (2.5: a quarter of one
+// half-res texel's light) and its flatness (std / mean within 0.7 R of the point).
+struct PointDisc {
+    double energy = 0.0;
+    double flatness = 0.0;
+};
+PointDisc measurePointDisc(float radius, int position, uint32_t frame);
+
 }  // namespace ffxdoftest
