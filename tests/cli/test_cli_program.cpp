@@ -512,7 +512,7 @@ TEST_CASE("numbers: a non-finite circle of confusion names the option or the pix
     requireError(runProgram(applyArguments(folder, {{"--depth", folder / "tiny.exr"}})), 3, "x=5, y=3");
 }
 
-TEST_CASE("--out naming an input, in any spelling, is refused and the input kept", "[cli]") {
+TEST_CASE("apply: an --out naming an input, in any spelling, is refused and the input kept", "[cli]") {
     TempFolder folder;
     writeScene(folder);
     const FileId color = fileId(folder / "color.exr");
