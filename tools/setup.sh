@@ -18,6 +18,8 @@ packages=(
   catch2 clang-format git
   mesa-vulkan-drivers vulkan-validationlayers vulkan-tools
   g++-mingw-w64-x86-64
+  # tests: the SLURM job-array script of docs/cli.md on a one-node SLURM started on localhost (issue 16)
+  slurm-wlm munge
   # docs: tools/shaderc/bench_permutations.sh (docs/permutations.md) and docs/technique.md's arithmetic;
   # docs/quality.md and docs/performance.md come from the project's own C++ tools (ffx_dof_quality_report,
   # ffx-dof bench)

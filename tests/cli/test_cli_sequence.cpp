@@ -2,6 +2,8 @@
 // frame run alone byte for byte, resumed runs skip complete outputs, several processes on overlapping
 // ranges write every frame whole and once, SIGTERM / SIGINT leave no partial or temporary file.
 #include "ffx_dof_imageio.h"
+#include "ffx_dof_metrics.h"
+#include "ffx_dof_reference.h"
 
 #include <ImfChannelList.h>
 #include <ImfFrameBuffer.h>
@@ -211,7 +213,7 @@ TEST_CASE("sequence usage errors", "[cli]") {
                  "--focus");
 }
 
-TEST_CASE("a sequence's frames equal the frames run alone; a resumed run skips them; --overwrite redoes them",
+TEST_CASE("a sequence's frames equal the frames run alone, a resumed run skips them, --overwrite redoes them",
           "[vulkan]") {
     TempFolder folder;
     writeShot(folder, 1, 3);
@@ -372,4 +374,214 @@ TEST_CASE("camera track, --keep-layers and the CoC clamp report", "[vulkan]") {
     REQUIRE(clamped.exitCode == 0);
     CHECK_THAT(clamped.out, Catch::Contains("--coc-limit 0.1 clamps 1008 pixels"));
     CHECK_THAT(withTrack.out, !Catch::Contains("clamps"));
+}
+
+TEST_CASE("a slow pan rendered by the reference renderer flickers at most 1.2 times the truth", "[vulkan]") {
+    // 8 frames of busy-background at 96x64, the camera moving sideways by 1 cm a frame (about a third of a
+    // pixel on the in-focus object); the truth with 32 lens samples, the same sample pattern every frame.
+    TempFolder folder;
+    ffxdof::ref::SceneSetup setup = ffxdof::ref::makeScene("busy-background", 96, 64);
+    ffxdof::ref::RenderSettings settings;
+    settings.lensSamples = 32;
+    ffxdof::metrics::TemporalChange truthChange, outputChange;
+    const ffxdof::ref::Camera start = setup.camera;
+    for (int frame = 1; frame <= 8; ++frame) {
+        ffxdof::ref::Camera camera = start;
+        camera.position.x += 0.01 * frame;
+        camera.target.x += 0.01 * frame;
+        const ffxdof::ref::PinholeImages pinhole = ffxdof::ref::renderPinhole(setup.scene, camera, settings);
+        ffxdof::io::writeExr(folder / frameName("c", frame), pinhole.color, ffxdof::io::ExrPixelType::Float);
+        ffxdof::io::writeExr(folder / frameName("z", frame), pinhole.depth, ffxdof::io::ExrPixelType::Float, "Z");
+        ffxdof::io::writeExr(folder / frameName("truth", frame),
+                             ffxdof::ref::renderThinLens(setup.scene, camera, settings).color,
+                             ffxdof::io::ExrPixelType::Float);
+    }
+    const auto number = [](double value) { return std::to_string(value); };
+    const Finished applied = run(
+        folder, {"apply", "--color", folder / "c.####.exr", "--depth", folder / "z.####.exr", "--out",
+                 folder / "o.####.exr", "--frames", "1-8", "--out-type", "float", "--focus",
+                 number(start.focusDistance), "--focal-length", number(start.focalLength * 1000.0), "--sensor-width",
+                 number(start.sensorWidth * 1000.0), "--aperture-radius", number(start.apertureRadius)});
+    INFO(applied.out << applied.err);
+    REQUIRE(applied.exitCode == 0);
+    for (int frame = 1; frame <= 8; ++frame) {
+        truthChange.add(ffxdof::io::readExrColor(folder / frameName("truth", frame)));
+        outputChange.add(ffxdof::io::readExrColor(folder / frameName("o", frame)));
+    }
+    const double ratio = outputChange.mean() / truthChange.mean();
+    CAPTURE(truthChange.mean(), outputChange.mean(), ratio);
+    CHECK(truthChange.mean() > 0.0);
+    CHECK(ratio <= 1.2);
+    // The same figures from `ffx-dof compare --frames`.
+    const Finished compared = run(
+        folder, {"compare", "--ref", folder / "truth.####.exr", "--test", folder / "o.####.exr", "--frames", "1-8"});
+    INFO(compared.out << compared.err);
+    REQUIRE(compared.exitCode == 0);
+    char expected[64];
+    std::snprintf(expected, sizeof(expected), "flicker ratio %.3f", ratio);
+    CHECK_THAT(compared.out, Catch::Contains(expected));
+    WARN("pan flicker: truth " << truthChange.mean() << ", ffx-dof " << outputChange.mean() << ", ratio " << ratio);
+}
+
+namespace {
+
+std::string shellQuote(const std::string& text) {
+    std::string quoted = "'";
+    for (char c : text) quoted += c == '\'' ? std::string("'\\''") : std::string(1, c);
+    return quoted + "'";
+}
+
+// The first ```sh block after `heading` in a Markdown file.
+std::string markdownBlock(const std::string& path, const std::string& heading) {
+    const std::string text = readText(path);
+    const size_t at = text.find(heading);
+    if (at == std::string::npos) return "";
+    const size_t begin = text.find("```sh\n", at);
+    const size_t end = text.find("\n```", begin + 6);
+    if (begin == std::string::npos || end == std::string::npos) return "";
+    return text.substr(begin + 6, end - begin - 6 + 1);
+}
+
+bool replaceOnce(std::string& text, const std::string& from, const std::string& to) {
+    const size_t at = text.find(from);
+    if (at == std::string::npos) return false;
+    text.replace(at, from.size(), to);
+    return true;
+}
+
+// munged, slurmctld and slurmd for this node only, in a folder of their own, on ports of their own;
+// stopped (by the process ids they wrote) at the end.
+class LocalSlurm {
+public:
+    explicit LocalSlurm(const TempFolder& folder) : root_(folder / "slurm") {
+        fs::create_directories(root_ + "/state");
+        fs::create_directories(root_ + "/spool");
+        fs::create_directories(root_ + "/munge");
+        fs::permissions(root_ + "/munge", fs::perms::owner_all, fs::perm_options::replace);
+        const int port = 20000 + int(getpid() % 5000) * 2;
+        char host[256] = {};
+        gethostname(host, sizeof(host) - 1);
+        std::string shortHost(host);
+        shortHost = shortHost.substr(0, shortHost.find('.'));
+        std::ofstream(root_ + "/slurm.conf")
+            << "ClusterName=ffxdoftest\nSlurmctldHost=" << shortHost << "\nSlurmUser=root\nSlurmdUser=root\n"
+            << "AuthType=auth/munge\nAuthInfo=socket=" << root_ << "/munge/munge.sock\nCredType=cred/munge\n"
+            << "StateSaveLocation=" << root_ << "/state\nSlurmdSpoolDir=" << root_ << "/spool\n"
+            << "SlurmctldPidFile=" << root_ << "/slurmctld.pid\nSlurmdPidFile=" << root_ << "/slurmd.pid\n"
+            << "SlurmctldLogFile=" << root_ << "/slurmctld.log\nSlurmdLogFile=" << root_ << "/slurmd.log\n"
+            << "SlurmctldPort=" << port << "\nSlurmdPort=" << port + 1 << "\n"
+            << "ProctrackType=proctrack/linuxproc\nTaskPlugin=task/none\nSchedulerType=sched/builtin\n"
+            << "SelectType=select/cons_tres\nSelectTypeParameters=CR_Core\nReturnToService=2\nMpiDefault=none\n"
+            << "JobAcctGatherType=jobacct_gather/none\nAccountingStorageType=accounting_storage/none\n"
+            << "NodeName=" << shortHost << " CPUs=2 RealMemory=8192 State=UNKNOWN\n"
+            << "PartitionName=debug Nodes=ALL Default=YES MaxTime=INFINITE State=UP\n";
+        const std::string munge = root_ + "/munge/";
+        started_ =
+            std::system(("dd if=/dev/urandom of=" + munge + "munge.key bs=1024 count=1 2>/dev/null && chmod 600 " +
+                         munge + "munge.key && munged --force --socket=" + munge + "munge.sock --key-file=" + munge +
+                         "munge.key --pid-file=" + munge + "munged.pid --log-file=" + munge +
+                         "munged.log --seed-file=" + munge + "munge.seed && slurmctld -i -f " + conf() +
+                         " && slurmd -f " + conf())
+                            .c_str()) == 0;
+        // Ready once the node is idle.
+        for (int i = 0; started_ && i < 100 && !ready_; ++i) {
+            ready_ = std::system(("SLURM_CONF=" + conf() + " sinfo -h -o %t 2>/dev/null | grep -q idle").c_str()) == 0;
+            if (!ready_) std::this_thread::sleep_for(std::chrono::milliseconds(200));
+        }
+    }
+    ~LocalSlurm() {
+        for (const char* pidFile : {"/slurmd.pid", "/slurmctld.pid", "/munge/munged.pid"}) {
+            const std::string text = readText(root_ + pidFile);
+            const pid_t pid = pid_t(std::atoi(text.c_str()));
+            if (pid <= 1) continue;
+            ::kill(pid, SIGTERM);
+            for (int i = 0; i < 50 && ::kill(pid, 0) == 0; ++i)
+                std::this_thread::sleep_for(std::chrono::milliseconds(100));
+        }
+    }
+    bool ready() const { return ready_; }
+    std::string conf() const { return root_ + "/slurm.conf"; }
+    std::string logs() const { return readText(root_ + "/slurmctld.log") + readText(root_ + "/slurmd.log"); }
+
+private:
+    std::string root_;
+    bool started_ = false, ready_ = false;
+};
+
+}  // namespace
+
+TEST_CASE("the SLURM job-array script of docs/cli.md on a one-node SLURM on this machine", "[vulkan][slurm]") {
+    // Needs slurm-wlm and munge (tools/setup.sh installs them) and root (the daemons run as root here).
+    if (std::system("command -v munged slurmctld slurmd sbatch sinfo >/dev/null 2>&1") != 0 || ::geteuid() != 0) {
+        WARN("SKIPPED: the SLURM test needs slurm-wlm and munge installed (tools/setup.sh) and root");
+        return;
+    }
+    TempFolder folder;
+    const LocalSlurm slurm(folder);
+    if (!slurm.ready()) {
+        WARN("SKIPPED: a one-node SLURM could not be started here:\n" << slurm.logs());
+        return;
+    }
+    std::string script = markdownBlock(FFX_DOF_SOURCE_DIR "/docs/cli.md", "#### On a farm (SLURM)");
+    INFO(script);
+    REQUIRE(script.find("#!/bin/bash") == 0);
+    // The docs' shot is 100 frames in 20 shares of 2 CPUs; here 12 frames in 4 shares of 1 CPU (two run at
+    // once on this 2-CPU node), in this test's folder.
+    const std::string shot = (folder.path() / "s42").string();
+    while (replaceOnce(script, "/shows/s42", shot)) {
+    }
+    REQUIRE(replaceOnce(script, "--frames 1001-1100", "--frames 1001-1012"));
+    REQUIRE(replaceOnce(script, "--array=1-20%8", "--array=1-4"));
+    REQUIRE(replaceOnce(script, "--cpus-per-task=2", "--cpus-per-task=1"));
+    std::ofstream(folder / "dof-shot.sh") << script;
+    fs::create_directories(shot);
+    std::ofstream camera(shot + "/camera.csv");
+    camera << "frame,focus,fstop\n";
+    for (int frame = 1001; frame <= 1012; ++frame) {
+        writeFrame(folder, frame, "s42/" + frameName("beauty", frame), "s42/" + frameName("z", frame));
+        camera << frame << "," << 4.0 + 0.01 * (frame - 1001) << ",1.4\n";
+    }
+    camera.close();
+
+    const std::string binDirectory = fs::path(FFX_DOF_CLI_PROGRAM).parent_path().string();
+    // sbatch --wait polls with a growing interval; this test asks squeue every 100 ms instead.
+    const std::string environment = "SLURM_CONF=" + shellQuote(slurm.conf()) + " ";
+    const int status =
+        std::system((environment + "PATH=" + shellQuote(binDirectory) +
+                     ":\"$PATH\" sbatch --parsable --chdir=" + shellQuote(folder.path().string()) + " " +
+                     shellQuote(folder / "dof-shot.sh") + " > " + shellQuote(folder / "sbatch.out") + " 2>&1")
+                        .c_str());
+    const std::string jobId = readText(folder / "sbatch.out").substr(0, readText(folder / "sbatch.out").find('\n'));
+    const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(120);
+    while (std::chrono::steady_clock::now() < deadline &&
+           std::system((environment + "squeue -h -j " + shellQuote(jobId) + " 2>/dev/null | grep -q .").c_str()) == 0) {
+        std::this_thread::sleep_for(std::chrono::milliseconds(100));
+    }
+    std::string logs;
+    for (const auto& entry : fs::directory_iterator(folder.path())) {
+        if (entry.path().extension() == ".log") logs += readText(entry.path());
+    }
+    INFO("sbatch: " << readText(folder / "sbatch.out") << "\ntask logs:\n" << logs);
+    CHECK(WIFEXITED(status));
+    CHECK(WEXITSTATUS(status) == 0);
+    CHECK(count(logs, "done: ") == 4);
+    CHECK(count(logs, ": wrote ") == 12);
+    for (int frame = 1001; frame <= 1012; ++frame) CHECK(isCompleteExr(shot + "/dof/" + frameName("dof", frame)));
+    CHECK(temporaryFiles(folder).empty());
+}
+
+TEST_CASE("frame-to-frame change: the mean |luminance difference| of clamped frames", "[cli]") {
+    ImageRGBA black(4, 2), white(4, 2), bright(4, 2);
+    for (size_t i = 0; i < white.pixels.size(); ++i) {
+        white.pixels[i] = 1.0f;
+        bright.pixels[i] = 50.0f;
+    }
+    CHECK(ffxdof::metrics::frameChange(black, black) == 0.0);
+    CHECK(ffxdof::metrics::frameChange(black, white) == Approx(1.0));
+    CHECK(ffxdof::metrics::frameChange(white, bright) == 0.0);  // what a display shows does not change
+    ffxdof::metrics::TemporalChange change;
+    for (const ImageRGBA* frame : {&black, &white, &white, &black}) change.add(*frame);
+    CHECK(change.pairs() == 3);
+    CHECK(change.mean() == Approx(2.0 / 3.0));
+    CHECK_THROWS_AS(change.add(ImageRGBA(2, 2)), std::invalid_argument);
 }

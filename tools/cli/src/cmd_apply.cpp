@@ -358,13 +358,15 @@ public:
             std::fflush(stdout);
         }
     }
-    void summary(const std::string& device, float largestRadius) {
+    // stageSeconds: time spent reading, computing and writing (they overlap unless --no-overlap).
+    void summary(const std::string& device, float largestRadius, const double (&stageSeconds)[3]) {
         if (tty_ && !status_.empty()) std::printf("\r\033[K");
         const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
         std::printf(
-            "done: %zu frames (%s) on %s: written %zu, skipped %zu, in %.1f s, %.2f fps; largest CoC radius "
-            "%.2f half-res px\n",
-            total_, range_.c_str(), device.c_str(), written_, skipped_, seconds, fps(), largestRadius);
+            "done: %zu frames (%s) on %s: written %zu, skipped %zu, in %.1f s, %.2f fps (read %.1f s, "
+            "effect %.1f s, write %.1f s); largest CoC radius %.2f half-res px\n",
+            total_, range_.c_str(), device.c_str(), written_, skipped_, seconds, fps(), stageSeconds[0],
+            stageSeconds[1], stageSeconds[2], largestRadius);
         std::fflush(stdout);
     }
     size_t written() const { return written_; }
@@ -450,7 +452,8 @@ public:
         if (error_) std::rethrow_exception(error_);
         throwIfInterrupted(std::to_string(progress_->written()) + " frames written, " +
                            std::to_string(progress_->skippedCount()) + " skipped; every written frame is whole");
-        progress_->summary(device_->name(), largestRadius_);
+        const double stageSeconds[3] = {stageSeconds_[0].load(), stageSeconds_[1].load(), stageSeconds_[2].load()};
+        progress_->summary(device_->name(), largestRadius_, stageSeconds);
     }
 
 private:
@@ -464,7 +467,24 @@ private:
     }
 
     // Stage 1: decide whether the frame is done already, otherwise read and check it.
+    // Adds the time until it goes out of scope to one stage's total.
+    class StageTimer {
+    public:
+        explicit StageTimer(std::atomic<double>& total) : total_(total), start_(std::chrono::steady_clock::now()) {}
+        ~StageTimer() {
+            const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+            double old = total_.load();
+            while (!total_.compare_exchange_weak(old, old + seconds)) {
+            }
+        }
+
+    private:
+        std::atomic<double>& total_;
+        std::chrono::steady_clock::time_point start_;
+    };
+
     ReadItem read(int64_t frame) {
+        const StageTimer timer(stageSeconds_[0]);
         ReadItem item;
         item.files = filesOf(frame);
         io::IfExists ifExists = io::IfExists::Keep;
@@ -493,6 +513,7 @@ private:
 
     // Stage 2: the effect on the device (this thread only submits).
     ComputedItem compute(ReadItem item) {
+        const StageTimer timer(stageSeconds_[1]);
         ComputedItem computed;
         computed.error = item.error;
         computed.files = item.files;
@@ -518,7 +539,11 @@ private:
             progress_->skipped(item.files.frame, item.skipReason);
             return;
         }
-        const WrittenFrame written = writeFrame(options_, *item.computed);
+        WrittenFrame written;
+        {
+            const StageTimer timer(stageSeconds_[2]);
+            written = writeFrame(options_, *item.computed);
+        }
         std::lock_guard<std::mutex> lock(progressMutex_);
         if (written.landed) {
             progress_->written(item.files.frame, item.files.output, written.type);
@@ -614,6 +639,7 @@ private:
     std::unique_ptr<Progress> progress_;
     std::mutex progressMutex_;
     float largestRadius_ = 0.0f;
+    std::atomic<double> stageSeconds_[3] = {0.0, 0.0, 0.0};  // read, effect, write
     std::exception_ptr error_;
 };
 

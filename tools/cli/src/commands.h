@@ -84,6 +84,7 @@ struct CompareOptions {
     std::string testPath;
     std::string depthPath;
     std::string cameraPath;
+    std::string frames;  // sequences: --ref and --test with a frame-number field; adds the flicker figures
 };
 void runCompare(const CompareOptions& options);
 

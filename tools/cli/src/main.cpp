@@ -262,6 +262,9 @@ int run(int argc, char** argv) {
         compareCommand->add_option("--depth", compare.depthPath, "Linear depth EXR, for PSNR per region");
     CLI::Option* cameraOption =
         compareCommand->add_option("--camera", compare.cameraPath, "Camera JSON of the reference renderer");
+    compareCommand->add_option("--frames", compare.frames,
+                               "Sequences (--ref and --test named with ####): mean PSNR and SSIM, and the "
+                               "frame-to-frame change of each (flicker)");
     depthOption->needs(cameraOption);
     cameraOption->needs(depthOption);
 

@@ -65,6 +65,26 @@ Comparison compareImages(const io::ImageRGBA& reference, const io::ImageRGBA& te
 // Several lines, "psnr 31.20 dB", "ssim 0.9512", "psnr in-focus 40.10 dB (1234 px)", ...
 std::string formatComparison(const Comparison& comparison);
 
+// ---- temporal stability --------------------------------------------------------------------------
+
+// How much a frame changes from the previous one: the mean over pixels of |luminance difference| of
+// the clamped values. For a sequence, the mean of it over consecutive frames; the flicker of an effect
+// is its output's figure over the truth's for the same camera move (1 = as steady as the truth).
+double frameChange(const io::ImageRGBA& previous, const io::ImageRGBA& current);
+
+// Accumulates frameChange over a sequence, one frame at a time (frames need not stay in memory).
+class TemporalChange {
+public:
+    void add(const io::ImageRGBA& frame);  // std::invalid_argument when the size changes
+    double mean() const { return pairs_ ? sum_ / double(pairs_) : 0.0; }
+    size_t pairs() const { return pairs_; }
+
+private:
+    io::ImageRGBA previous_;
+    double sum_ = 0.0;
+    size_t pairs_ = 0;
+};
+
 // ---- bokeh ---------------------------------------------------------------------------------------
 
 // A single bright disc on a known background (image minus background; no background means black).

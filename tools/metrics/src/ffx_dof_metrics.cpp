@@ -312,4 +312,29 @@ BokehCheck checkBokeh(const BokehMeasurement& measured, double expectedRadius, d
     return check;
 }
 
+double frameChange(const io::ImageRGBA& previous, const io::ImageRGBA& current) {
+    if (previous.width != current.width || previous.height != current.height) {
+        throw std::invalid_argument("frameChange: the frames differ in size");
+    }
+    const auto clamped = [](const float* rgba) {
+        const float c[3] = {std::clamp(rgba[0], 0.0f, 1.0f), std::clamp(rgba[1], 0.0f, 1.0f),
+                            std::clamp(rgba[2], 0.0f, 1.0f)};
+        return luminance(c);
+    };
+    double sum = 0.0;
+    const size_t pixels = size_t(current.width) * current.height;
+    for (size_t i = 0; i < pixels; ++i) {
+        sum += std::fabs(clamped(&current.pixels[i * 4]) - clamped(&previous.pixels[i * 4]));
+    }
+    return pixels ? sum / double(pixels) : 0.0;
+}
+
+void TemporalChange::add(const io::ImageRGBA& frame) {
+    if (!previous_.pixels.empty()) {
+        sum_ += frameChange(previous_, frame);
+        ++pairs_;
+    }
+    previous_ = frame;
+}
+
 }  // namespace ffxdof::metrics
