@@ -416,13 +416,22 @@ FFX_DOF_INLINE FfxFloat32 ffxDofRingInnerRadius(FfxUInt32 ring, FfxFloat32 spaci
 // is read once, by one of them. Judged by each side's own centres, a one-texel source next to the
 // border was read twice or not at all: a notched, soft rim and a dip at the centre of a single
 // point's disc, and a small light losing or gaining energy (issue 17).
+// One border of an annulus, judged in blocks of `block` texels: what a row's span needs, computed
+// once per walk (the span of the next row is computed at every step of the walk).
+struct FfxDofAnnulusBorder
+{
+    FfxFloat32 block;          // texels per block side (a power of two)
+    FfxFloat32 scale;          // 1 / block
+    FfxFloat32 radiusSquared;  // in blocks^2
+    FfxFloat32 spanCenter;     // origin.x in blocks, less half a block (ffxDofTexelSpan's centre - 0.5)
+    FfxFloat32 rowOffset;      // half a block less origin.y, in blocks
+};
 struct FfxDofAnnulus
 {
     FfxFloat32x2 origin;
-    FfxFloat32 innerRadius;
-    FfxFloat32 outerRadius;
-    FfxFloat32 innerBlock;
-    FfxFloat32 outerBlock;
+    FfxDofAnnulusBorder inner;
+    FfxDofAnnulusBorder outer;
+    FfxFloat32 firstRow;
     FfxFloat32 lastRow;
 };
 // ... and the walk's position.
@@ -434,24 +443,31 @@ struct FfxDofAnnulusWalk
     FfxFloat32 holeEnd;    // first texel after them (holeFirst when the row has none)
 };
 
-// The texels (first, last) whose block of `block` x `block` texels has its centre less than `radius`
-// from `origin`, in row `y` (or, for a column, the rows: pass the column's coordinates). A block's
-// texels are all in or all out, and with block 1 this is ffxDofTexelSpan of the row. The coarse
-// figures are the ones the coarse walk computes itself (scaling by a power of two is exact), so the
-// two walks agree to the bit on every block.
-FFX_DOF_INLINE FfxFloat32x2 ffxDofBlockSpan(FfxFloat32 originAlong, FfxFloat32 originAcross, FfxFloat32 radius,
-                                            FfxFloat32 block, FfxFloat32 across)
+// A border of `radius` around `origin` judged in blocks of `block` texels. The block figures are the
+// ones the coarse walk computes for itself (scaling by a power of two is exact), so the two walks
+// agree to the bit on every block.
+FFX_DOF_INLINE FfxDofAnnulusBorder ffxDofMakeAnnulusBorder(FfxFloat32x2 origin, FfxFloat32 radius, FfxFloat32 block)
 {
-    FfxFloat32 scale = 1.0f / block;
-    FfxFloat32 offset = floor(across * scale) + 0.5f - originAcross * scale;
-    FfxFloat32x2 span = ffxDofTexelSpan(originAlong * scale, ffxDofKernelRowHalfWidth(radius * scale, offset));
-    return FfxFloat32x2(span.x * block, span.y * block + block - 1.0f);
+    FfxDofAnnulusBorder border;
+    border.block = block;
+    border.scale = 1.0f / block;
+    FfxFloat32 blockRadius = radius * border.scale;
+    border.radiusSquared = blockRadius * blockRadius;
+    border.spanCenter = origin.x * border.scale - 0.5f;
+    border.rowOffset = 0.5f - origin.y * border.scale;
+    return border;
 }
-FFX_DOF_INLINE FfxFloat32x2 ffxDofBlockRows(FfxFloat32 originY, FfxFloat32 radius, FfxFloat32 block)
+
+// The texels (first, last) of row `y` whose block has its centre less than the border's radius from
+// the origin: ffxDofTexelSpan of the block row, widened to whole blocks (with block 1, the texels of
+// the row whose centres are inside). first > last when there are none.
+FFX_DOF_INLINE FfxFloat32x2 ffxDofBorderSpan(FfxDofAnnulusBorder border, FfxFloat32 y)
 {
-    FfxFloat32 scale = 1.0f / block;
-    FfxFloat32x2 span = ffxDofTexelSpan(originY * scale, radius * scale);
-    return FfxFloat32x2(span.x * block, span.y * block + block - 1.0f);
+    FfxFloat32 dy = floor(y * border.scale) + border.rowOffset;
+    FfxFloat32 halfWidth = sqrt(max(border.radiusSquared - dy * dy, 0.0f));
+    FfxFloat32 first = floor(border.spanCenter - halfWidth) + 1.0f;
+    FfxFloat32 last = ceil(border.spanCenter + halfWidth) - 1.0f;
+    return FfxFloat32x2(first * border.block, last * border.block + border.block - 1.0f);
 }
 
 FFX_DOF_INLINE FfxDofAnnulus ffxDofMakeAnnulus(FfxFloat32x2 origin, FfxFloat32 innerRadius, FfxFloat32 outerRadius,
@@ -459,19 +475,19 @@ FFX_DOF_INLINE FfxDofAnnulus ffxDofMakeAnnulus(FfxFloat32x2 origin, FfxFloat32 i
 {
     FfxDofAnnulus annulus;
     annulus.origin = origin;
-    annulus.innerRadius = innerRadius;
-    annulus.outerRadius = outerRadius;
-    annulus.innerBlock = innerBlock;
-    annulus.outerBlock = outerBlock;
-    annulus.lastRow = ffxDofBlockRows(origin.y, outerRadius, outerBlock).y;
+    annulus.inner = ffxDofMakeAnnulusBorder(origin, innerRadius, innerBlock);
+    annulus.outer = ffxDofMakeAnnulusBorder(origin, outerRadius, outerBlock);
+    FfxFloat32x2 rows = ffxDofTexelSpan(origin.y * annulus.outer.scale, outerRadius * annulus.outer.scale);
+    annulus.firstRow = rows.x * outerBlock;
+    annulus.lastRow = rows.y * outerBlock + outerBlock - 1.0f;
     return annulus;
 }
 
 // Row `y` of the annulus, positioned on its first texel (past its last one when it has none).
 FFX_DOF_INLINE FfxDofAnnulusWalk ffxDofAnnulusRow(FfxDofAnnulus annulus, FfxFloat32 y)
 {
-    FfxFloat32x2 row = ffxDofBlockSpan(annulus.origin.x, annulus.origin.y, annulus.outerRadius, annulus.outerBlock, y);
-    FfxFloat32x2 hole = ffxDofBlockSpan(annulus.origin.x, annulus.origin.y, annulus.innerRadius, annulus.innerBlock, y);
+    FfxFloat32x2 row = ffxDofBorderSpan(annulus.outer, y);
+    FfxFloat32x2 hole = ffxDofBorderSpan(annulus.inner, y);
     FfxDofAnnulusWalk walk;
     walk.rowLast = row.y;
     walk.holeFirst = hole.x;
@@ -485,7 +501,7 @@ FFX_DOF_INLINE FfxDofAnnulusWalk ffxDofAnnulusRow(FfxDofAnnulus annulus, FfxFloa
 
 FFX_DOF_INLINE FfxDofAnnulusWalk ffxDofAnnulusBegin(FfxDofAnnulus annulus)
 {
-    return ffxDofAnnulusRow(annulus, ffxDofBlockRows(annulus.origin.y, annulus.outerRadius, annulus.outerBlock).x);
+    return ffxDofAnnulusRow(annulus, annulus.firstRow);
 }
 
 // Whether the walk has rows left. Its position may still be no texel: a row at the top or bottom,
