@@ -194,7 +194,7 @@ TEST_CASE("depth images: bad values are counted and located", "[inputs]") {
                     "19 values are outside [0, 1] in the device depth (first at x=0, y=0: 3); use --depth-kind linear");
 }
 
-TEST_CASE("linear depth is converted into (0, 1]", "[inputs]") {
+TEST_CASE("linear depth is converted into 0 < d <= 1", "[inputs]") {
     ffxdof::io::ImageR depth(3, 1);
     depth.pixels = {2.0f, 0.5f, 1e9f};
     const EffectDepth converted = linearToEffectDepth(depth, "d.exr");
