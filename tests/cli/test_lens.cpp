@@ -204,7 +204,7 @@ TEST_CASE("linear depth is converted into 0 < d <= 1", "[inputs]") {
     CHECK(converted.deviceDepth[2] == Approx(5e-10f));
 }
 
-TEST_CASE("color and depth must match in size; color must be finite", "[inputs]") {
+TEST_CASE("color and depth must match in size and color must be finite", "[inputs]") {
     ffxdof::io::ImageRGBA color(8, 6);
     ffxdof::io::ImageR depth(8, 5);
     requireCliError([&] { checkResolutions(color, "c.exr", depth, "d.exr"); }, ExitCode::InvalidValue,
