@@ -285,8 +285,12 @@ private:
     // Atomic create-if-absent: renameat2(RENAME_NOREPLACE) where the file system has it (ext4, xfs,
     // btrfs, tmpfs), otherwise link() + unlink() (NFS, older kernels): both fail with EEXIST instead of
     // replacing a file another process landed first, and neither ever shows a partial file.
+    // Test hook: FFX_DOF_TEST_NO_RENAMEAT2=1 takes the link() path, as on a file system without renameat2.
     bool commitNoReplace() {
-        if (::renameat2(AT_FDCWD, path_.c_str(), AT_FDCWD, destination_.c_str(), RENAME_NOREPLACE) == 0) {
+        const char* noRenameat2 = std::getenv("FFX_DOF_TEST_NO_RENAMEAT2");
+        if (noRenameat2 != nullptr && *noRenameat2 != '\0') {
+            errno = EINVAL;
+        } else if (::renameat2(AT_FDCWD, path_.c_str(), AT_FDCWD, destination_.c_str(), RENAME_NOREPLACE) == 0) {
             committed_ = true;
             return true;
         }
