@@ -17,6 +17,9 @@ const std::vector<SceneGate>& sceneGates() {
          "a large blurred near sphere: most of the input's error is there and the effect removes most of it"},
         {"far-highlights", 6.0,
          "bright far bokeh: the effect's discs are brighter in the centre than the truth's flat ones"},
+        {"mid-lights", 6.0,
+         "small lights nearer than a far background (issue 17): each must spread into its own disc, no sharp "
+         "core left, no light lost"},
         {"fence", 4.0,
          "thin near posts over a sharp wall: partial occlusion, which a post-process can only "
          "approximate, so the gain is smaller"},

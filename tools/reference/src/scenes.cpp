@@ -107,6 +107,50 @@ SceneSetup farHighlights(uint32_t width, uint32_t height) {
     return setup;
 }
 
+// Issue 17: small lights nearer than a much farther background, the case where a light used to keep
+// its sharp core on top of its disc (the ring occlusion) or vanish (the bilateral downsample).
+SceneSetup midLights(uint32_t width, uint32_t height) {
+    SceneSetup setup{"mid-lights",
+                     "lights of 1 to 4 px at 2.2 to 15 m in front of a background at 40 m, focus at 2 m, two "
+                     "partly behind a sharp box",
+                     {},
+                     baseCamera(width, height, 0.05, 2.0)};
+    Camera& camera = setup.camera;
+    Scene& scene = setup.scene;
+    scene.background = {0.02f, 0.02f, 0.03f};
+    scene.addQuad({0, 0, 40}, kRight * 40.0, kUp * 30.0, noise({0.03f, 0.03f, 0.06f}, {0.12f, 0.1f, 0.14f}, 1.5f));
+    scene.addBox({0.12, -0.05, 2.0}, {0.08, 0.12, 0.05}, checker({0.9f, 0.85f, 0.8f}, {0.2f, 0.3f, 0.5f}, 0.04f));
+    const glm::vec3 colors[] = {{1.0f, 0.8f, 0.5f}, {0.6f, 0.8f, 1.0f}, {1.0f, 0.4f, 0.3f}, {0.7f, 1.0f, 0.6f}};
+    // Depths give radii of about 3 to 27 px against the background's 30 (the aperture below); the
+    // lights' pinhole radii are 0.5 to 2 px, their values up to 1000. Each light is centred on a pixel
+    // centre: the pinhole depth is traced through pixel centres only, so a light between them would be
+    // missing from the depth buffer (blurred with the background's radius), a mismatch of the input,
+    // not of the effect.
+    const double depths[] = {2.2, 2.6, 3.5, 5.0, 8.0, 15.0};
+    const double halfWidth = 0.5 * camera.sensorWidth / camera.imageDistance();  // at depth 1
+    const double halfHeight = halfWidth * height / width;
+    auto atPixel = [&](double px, double py, double z) {
+        return glm::dvec3((2.0 * (std::floor(px) + 0.5) / width - 1.0) * halfWidth * z,
+                          (1.0 - 2.0 * (std::floor(py) + 0.5) / height) * halfHeight * z, z);
+    };
+    for (int i = 0; i < 12; ++i) {
+        const double z = depths[i % 6];
+        const double px = width * (0.1 + 0.8 * (i / 11.0)), py = height * (0.2 + 0.6 * latticeValue(i, 3));
+        const double pixels = 0.5 + 0.5 * (i % 4);
+        const float emission = i % 3 == 0 ? 1000.0f : (i % 3 == 1 ? 200.0f : 40.0f);
+        scene.addEmitter(atPixel(px, py, z), emitterRadiusForPixels(camera, z, pixels), colors[i % 4], emission);
+    }
+    // Two lights whose discs are partly hidden by the box: centred on the pixel just right of its
+    // right edge, 1.5 px wide, one at 3 m and one at 10 m.
+    const double edgePixel = (0.20 / (halfWidth * 1.95) + 1.0) * 0.5 * width;
+    scene.addEmitter(atPixel(edgePixel + 1.0, 0.5 * height, 3.0), emitterRadiusForPixels(camera, 3.0, 1.5), colors[0],
+                     300.0f);
+    scene.addEmitter(atPixel(edgePixel + 1.0, 0.6 * height, 10.0), emitterRadiusForPixels(camera, 10.0, 1.5), colors[1],
+                     300.0f);
+    setApertureForBlur(camera, 40.0, std::max(8.0, 0.09 * width));
+    return setup;
+}
+
 SceneSetup fence(uint32_t width, uint32_t height) {
     SceneSetup setup{"fence",
                      "thin fence posts close to the camera in front of a sharp brick wall (partial occlusion)",
@@ -180,6 +224,7 @@ const std::vector<SceneEntry>& sceneCatalog() {
     static const std::vector<SceneEntry> catalog = {
         {"near-object", nearObject},
         {"far-highlights", farHighlights},
+        {"mid-lights", midLights},
         {"fence", fence},
         {"busy-background", busyBackground},
         {"floor", floorScene},
