@@ -10,6 +10,8 @@
 #include <ImfTiledOutputFile.h>
 #include <Imath/half.h>
 #include <catch2/catch.hpp>
+
+#include "ffx_dof_temp_folder.h"
 #include <nlohmann/json.hpp>
 
 #include <sys/mount.h>
@@ -41,32 +43,12 @@ struct ProgramResult {
     std::string err;
 };
 
-std::string readText(const fs::path& path) {
-    std::ifstream file(path, std::ios::binary);
-    std::ostringstream text;
-    text << file.rdbuf();
-    return text.str();
-}
-
 // A fresh folder per test case, removed at the end.
-class TempFolder {
+class TempFolder : public ffxdof::testing::TempFolder {
 public:
-    TempFolder() {
-        static std::atomic<int> counter{0};
-        path_ = fs::temp_directory_path() /
-                ("ffx_dof_cli_test_" + std::to_string(getpid()) + "_" + std::to_string(counter++));
-        fs::create_directories(path_);
-    }
-    ~TempFolder() {
-        std::error_code ignored;
-        fs::remove_all(path_, ignored);
-    }
-    std::string operator/(const std::string& name) const { return (path_ / name).string(); }
-    const fs::path& path() const { return path_; }
-
-private:
-    fs::path path_;
+    TempFolder() : ffxdof::testing::TempFolder("ffx_dof_cli_test_") {}
 };
+using ffxdof::testing::readText;
 
 std::string quote(const std::string& text) {
     std::string quoted = "'";

@@ -13,6 +13,8 @@
 #include <ImfStringAttribute.h>
 #include <catch2/catch.hpp>
 
+#include "ffx_dof_temp_folder.h"
+
 #include <fcntl.h>
 #include <signal.h>
 #include <spawn.h>
@@ -41,31 +43,12 @@ using ffxdof::io::ImageRGBA;
 
 namespace {
 
-std::string readText(const fs::path& path) {
-    std::ifstream file(path, std::ios::binary);
-    std::ostringstream text;
-    text << file.rdbuf();
-    return text.str();
-}
-
-class TempFolder {
+// A fresh folder per test case, removed at the end.
+class TempFolder : public ffxdof::testing::TempFolder {
 public:
-    TempFolder() {
-        static std::atomic<int> counter{0};
-        path_ = fs::temp_directory_path() /
-                ("ffx_dof_seq_test_" + std::to_string(getpid()) + "_" + std::to_string(counter++));
-        fs::create_directories(path_);
-    }
-    ~TempFolder() {
-        std::error_code ignored;
-        fs::remove_all(path_, ignored);
-    }
-    std::string operator/(const std::string& name) const { return (path_ / name).string(); }
-    const fs::path& path() const { return path_; }
-
-private:
-    fs::path path_;
+    TempFolder() : ffxdof::testing::TempFolder("ffx_dof_seq_test_") {}
 };
+using ffxdof::testing::readText;
 
 // A running ffx-dof, its output in files of the folder.
 struct Process {
