@@ -67,6 +67,8 @@ double emitterRadiusForPixels(const Camera& camera, double viewDepth, double pix
 }
 
 const glm::dvec3 kRight{1, 0, 0}, kUp{0, 1, 0}, kForward{0, 0, 1};
+// The tints of the highlight scenes' lights (warm, cool, red, green), cycled.
+const glm::vec3 kLightColors[] = {{1.0f, 0.8f, 0.5f}, {0.6f, 0.8f, 1.0f}, {1.0f, 0.4f, 0.3f}, {0.7f, 1.0f, 0.6f}};
 
 SceneSetup nearObject(uint32_t width, uint32_t height) {
     SceneSetup setup{"near-object",
@@ -96,12 +98,12 @@ SceneSetup farHighlights(uint32_t width, uint32_t height) {
     scene.addQuad({0, 0, 40}, kRight * 40.0, kUp * 30.0, noise({0.02f, 0.02f, 0.05f}, {0.08f, 0.07f, 0.1f}, 1.0f));
     scene.addBox({0.0, -0.35, 2.0}, {0.2, 0.25, 0.2}, checker({0.9f, 0.85f, 0.8f}, {0.2f, 0.3f, 0.5f}, 0.05f));
     scene.addSphere({0.25, 0.1, 2.1}, 0.12, checker({0.9f, 0.5f, 0.1f}, {0.1f, 0.1f, 0.1f}, 0.03f));
-    const glm::vec3 colors[] = {{1.0f, 0.8f, 0.5f}, {0.6f, 0.8f, 1.0f}, {1.0f, 0.4f, 0.3f}, {0.7f, 1.0f, 0.6f}};
     for (int i = 0; i < 14; ++i) {
         const double z = 18.0 + 1.5 * (i % 5);
         const double x = -6.0 + 12.0 * (i / 13.0) + 0.4 * std::sin(i * 2.3);
         const double y = -1.5 + 3.5 * latticeValue(i, 7);
-        scene.addEmitter({x, y, z}, emitterRadiusForPixels(camera, z, 1.0), colors[i % 4], 150.0f + 50.0f * (i % 3));
+        scene.addEmitter({x, y, z}, emitterRadiusForPixels(camera, z, 1.0), kLightColors[i % 4],
+                         150.0f + 50.0f * (i % 3));
     }
     setApertureForBlur(camera, 20.0, std::max(4.0, 0.025 * width));
     return setup;
@@ -120,7 +122,6 @@ SceneSetup midLights(uint32_t width, uint32_t height) {
     scene.background = {0.02f, 0.02f, 0.03f};
     scene.addQuad({0, 0, 40}, kRight * 40.0, kUp * 30.0, noise({0.03f, 0.03f, 0.06f}, {0.12f, 0.1f, 0.14f}, 1.5f));
     scene.addBox({0.12, -0.05, 2.0}, {0.08, 0.12, 0.05}, checker({0.9f, 0.85f, 0.8f}, {0.2f, 0.3f, 0.5f}, 0.04f));
-    const glm::vec3 colors[] = {{1.0f, 0.8f, 0.5f}, {0.6f, 0.8f, 1.0f}, {1.0f, 0.4f, 0.3f}, {0.7f, 1.0f, 0.6f}};
     // Depths give radii of about 3 to 27 px against the background's 30 (the aperture below); the
     // lights' pinhole radii are 0.5 to 2 px, their values up to 1000. Each light is centred on a pixel
     // centre: the pinhole depth is traced through pixel centres only, so a light between them would be
@@ -138,15 +139,15 @@ SceneSetup midLights(uint32_t width, uint32_t height) {
         const double px = width * (0.1 + 0.8 * (i / 11.0)), py = height * (0.2 + 0.6 * latticeValue(i, 3));
         const double pixels = 0.5 + 0.5 * (i % 4);
         const float emission = i % 3 == 0 ? 1000.0f : (i % 3 == 1 ? 200.0f : 40.0f);
-        scene.addEmitter(atPixel(px, py, z), emitterRadiusForPixels(camera, z, pixels), colors[i % 4], emission);
+        scene.addEmitter(atPixel(px, py, z), emitterRadiusForPixels(camera, z, pixels), kLightColors[i % 4], emission);
     }
     // Two lights whose discs are partly hidden by the box: centred on the pixel just right of its
     // right edge, 1.5 px wide, one at 3 m and one at 10 m.
     const double edgePixel = (0.20 / (halfWidth * 1.95) + 1.0) * 0.5 * width;
-    scene.addEmitter(atPixel(edgePixel + 1.0, 0.5 * height, 3.0), emitterRadiusForPixels(camera, 3.0, 1.5), colors[0],
-                     300.0f);
-    scene.addEmitter(atPixel(edgePixel + 1.0, 0.6 * height, 10.0), emitterRadiusForPixels(camera, 10.0, 1.5), colors[1],
-                     300.0f);
+    scene.addEmitter(atPixel(edgePixel + 1.0, 0.5 * height, 3.0), emitterRadiusForPixels(camera, 3.0, 1.5),
+                     kLightColors[0], 300.0f);
+    scene.addEmitter(atPixel(edgePixel + 1.0, 0.6 * height, 10.0), emitterRadiusForPixels(camera, 10.0, 1.5),
+                     kLightColors[1], 300.0f);
     setApertureForBlur(camera, 40.0, std::max(8.0, 0.09 * width));
     return setup;
 }
