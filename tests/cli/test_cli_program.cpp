@@ -511,7 +511,9 @@ TEST_CASE("apply: an --out naming an input, in any spelling, is refused and the 
     CHECK(fileId(folder / "depth.exr").bytes == depth.bytes);
 }
 
-TEST_CASE("EXR files: an offset data window and a header claiming more than the file holds are refused", "[cli]") {
+// [vulkan]: the aligned file is read and accepted, then fails at the device, which loads the driver
+// (whose own allocations LeakSanitizer would report in the sanitizer build's cpu tests).
+TEST_CASE("EXR files: an offset data window and a header claiming more than the file holds are refused", "[vulkan]") {
     TempFolder folder;
     writeScene(folder);
     const Imath::Box2i display({0, 0}, {int(kWidth) - 1, int(kHeight) - 1});
