@@ -1,5 +1,5 @@
 #include "ffx_dof_imageio.h"
-#include "test_temp_dir.h"
+#include "ffx_dof_temp_folder.h"
 
 #include <ImfChannelList.h>
 #include <ImfFrameBuffer.h>
@@ -93,18 +93,18 @@ void writeMultiPart(const std::string& path, uint32_t width, uint32_t height) {
 }  // namespace
 
 TEST_CASE("EXR colour round-trips in float exactly and in half within half precision", "[imageio]") {
-    TestTempDir dir;
+    const ffxdof::testing::TempFolder dir("ffx_dof_reference_test_");
     const ImageRGBA image = makeGradient(37, 11);
-    writeExr(dir.file("float.exr"), image, ExrPixelType::Float);
-    const ImageRGBA floats = readExrColor(dir.file("float.exr"));
+    writeExr(dir / "float.exr", image, ExrPixelType::Float);
+    const ImageRGBA floats = readExrColor(dir / "float.exr");
     CHECK(floats.width == 37);
     CHECK(floats.height == 11);
     CHECK(floats.pixels == image.pixels);
 
     ImageRGBA inexact = image;
     inexact.pixels[5] = 0.1f;  // not representable in half: within half's 2^-11 relative precision
-    writeExr(dir.file("half.exr"), inexact, ExrPixelType::Half);
-    const ImageRGBA halves = readExrColor(dir.file("half.exr"));
+    writeExr(dir / "half.exr", inexact, ExrPixelType::Half);
+    const ImageRGBA halves = readExrColor(dir / "half.exr");
     REQUIRE(halves.pixels.size() == inexact.pixels.size());
     for (size_t i = 0; i < inexact.pixels.size(); ++i) {
         CHECK(halves.pixels[i] == Approx(inexact.pixels[i]).epsilon(1.0 / 2048).margin(1e-7));
@@ -113,36 +113,36 @@ TEST_CASE("EXR colour round-trips in float exactly and in half within half preci
 }
 
 TEST_CASE("a missing alpha channel reads as 1 and single channels round-trip", "[imageio]") {
-    TestTempDir dir;
+    const ffxdof::testing::TempFolder dir("ffx_dof_reference_test_");
     ImageR depth(5, 3);
     for (size_t i = 0; i < depth.pixels.size(); ++i) depth.pixels[i] = 0.5f + float(i);
-    writeExr(dir.file("depth.exr"), depth, ExrPixelType::Float, "Z");
-    CHECK(readExrChannel(dir.file("depth.exr")).pixels == depth.pixels);
-    CHECK(readExrChannel(dir.file("depth.exr"), "Z").pixels == depth.pixels);
-    CHECK(listExrChannels(dir.file("depth.exr")) == std::vector<std::string>{"Z"});
+    writeExr(dir / "depth.exr", depth, ExrPixelType::Float, "Z");
+    CHECK(readExrChannel(dir / "depth.exr").pixels == depth.pixels);
+    CHECK(readExrChannel(dir / "depth.exr", "Z").pixels == depth.pixels);
+    CHECK(listExrChannels(dir / "depth.exr") == std::vector<std::string>{"Z"});
 
-    writeMultiPart(dir.file("layers.exr"), 4, 2);
-    const ImageRGBA color = readExrColor(dir.file("layers.exr"));
+    writeMultiPart(dir / "layers.exr", 4, 2);
+    const ImageRGBA color = readExrColor(dir / "layers.exr");
     CHECK(color.at(1, 0)[0] == 1001.0f);
     CHECK(color.at(1, 0)[2] == 3001.0f);
     CHECK(color.at(3, 1)[3] == 1.0f);
 }
 
 TEST_CASE("multilayer and multi-part files: colour by layer prefix, channels by name", "[imageio]") {
-    TestTempDir dir;
-    writeMultiPart(dir.file("layers.exr"), 6, 3);
-    const ImageRGBA beauty = readExrColor(dir.file("layers.exr"), "beauty");
+    const ffxdof::testing::TempFolder dir("ffx_dof_reference_test_");
+    writeMultiPart(dir / "layers.exr", 6, 3);
+    const ImageRGBA beauty = readExrColor(dir / "layers.exr", "beauty");
     CHECK(beauty.at(2, 1)[0] == 4008.0f);
     CHECK(beauty.at(2, 1)[1] == 5008.0f);
-    const ImageR z = readExrChannel(dir.file("layers.exr"), "depth.Z");
+    const ImageR z = readExrChannel(dir / "layers.exr", "depth.Z");
     CHECK(z.width == 6);
     CHECK(z.at(5, 2) == 7017.0f);
-    CHECK(readExrChannel(dir.file("layers.exr"), "Depth.V").at(0, 0) == 8000.0f);
-    CHECK(readExrChannel(dir.file("layers.exr"), "G").at(1, 0) == 2001.0f);
+    CHECK(readExrChannel(dir / "layers.exr", "Depth.V").at(0, 0) == 8000.0f);
+    CHECK(readExrChannel(dir / "layers.exr", "G").at(1, 0) == 2001.0f);
 }
 
 TEST_CASE("PNG output is 8-bit sRGB, alpha optional", "[imageio]") {
-    TestTempDir dir;
+    const ffxdof::testing::TempFolder dir("ffx_dof_reference_test_");
     ImageRGBA image(3, 2);
     const float values[] = {0.0f, 0.5f, 1.0f, 2.0f, 0.0031308f, -1.0f};
     for (int i = 0; i < 6; ++i) {
@@ -150,11 +150,11 @@ TEST_CASE("PNG output is 8-bit sRGB, alpha optional", "[imageio]") {
         p[0] = p[1] = p[2] = values[i];
         p[3] = 0.5f;
     }
-    writePng(dir.file("rgb.png"), image);
-    writeImage(dir.file("by_extension.PNG"), image);
-    writePng(dir.file("rgba.png"), image, true);
+    writePng(dir / "rgb.png", image);
+    writeImage(dir / "by_extension.PNG", image);
+    writePng(dir / "rgba.png", image, true);
     int w = 0, h = 0, channels = 0;
-    unsigned char* rgb = stbi_load(dir.file("rgb.png").c_str(), &w, &h, &channels, 0);
+    unsigned char* rgb = stbi_load((dir / "rgb.png").c_str(), &w, &h, &channels, 0);
     REQUIRE(rgb);
     CHECK(w == 3);
     CHECK(h == 2);
@@ -162,77 +162,77 @@ TEST_CASE("PNG output is 8-bit sRGB, alpha optional", "[imageio]") {
     const int expected[] = {0, 188, 255, 255, 10, 0};  // sRGB(0.5) = 0.7354 -> 188; 0.0031308 -> 0.04045
     for (int i = 0; i < 6; ++i) CHECK(int(rgb[i * 3]) == expected[i]);
     stbi_image_free(rgb);
-    unsigned char* rgba = stbi_load(dir.file("rgba.png").c_str(), &w, &h, &channels, 0);
+    unsigned char* rgba = stbi_load((dir / "rgba.png").c_str(), &w, &h, &channels, 0);
     REQUIRE(rgba);
     CHECK(channels == 4);
     CHECK(int(rgba[3]) == 128);
     stbi_image_free(rgba);
-    CHECK(readBytes(dir.file("by_extension.PNG")) == readBytes(dir.file("rgb.png")));
+    CHECK(readBytes(dir / "by_extension.PNG") == readBytes(dir / "rgb.png"));
 }
 
 TEST_CASE("read errors are specific IoErrors, never crashes", "[imageio][errors]") {
-    TestTempDir dir;
-    CHECK_THAT(errorOf([&] { readExrColor(dir.file("missing.exr")); }), Catch::Contains("file not found"));
+    const ffxdof::testing::TempFolder dir("ffx_dof_reference_test_");
+    CHECK_THAT(errorOf([&] { readExrColor(dir / "missing.exr"); }), Catch::Contains("file not found"));
     CHECK_THAT(errorOf([&] { readExrColor(dir.path().string()); }), Catch::Contains("directory"));
 
-    writeBytes(dir.file("text.exr"), "this is not an image");
-    CHECK_THAT(errorOf([&] { readExrColor(dir.file("text.exr")); }), Catch::Contains("not an OpenEXR file"));
+    writeBytes(dir / "text.exr", "this is not an image");
+    CHECK_THAT(errorOf([&] { readExrColor(dir / "text.exr"); }), Catch::Contains("not an OpenEXR file"));
 
     // A valid file cut short, and one with its header bytes scrambled after the magic number.
     const ImageRGBA image = makeGradient(64, 64);
-    writeExr(dir.file("good.exr"), image, ExrPixelType::Float);
-    const std::string good = readBytes(dir.file("good.exr"));
-    writeBytes(dir.file("truncated.exr"), good.substr(0, good.size() / 2));
-    CHECK_THAT(errorOf([&] { readExrColor(dir.file("truncated.exr")); }), Catch::Contains("corrupt"));
+    writeExr(dir / "good.exr", image, ExrPixelType::Float);
+    const std::string good = readBytes(dir / "good.exr");
+    writeBytes(dir / "truncated.exr", good.substr(0, good.size() / 2));
+    CHECK_THAT(errorOf([&] { readExrColor(dir / "truncated.exr"); }), Catch::Contains("corrupt"));
     for (size_t offset : {8u, 20u, 40u, 80u}) {
         std::string scrambled = good;
         for (size_t i = offset; i < offset + 24 && i < scrambled.size(); ++i) scrambled[i] = char(scrambled[i] ^ 0x5a);
-        writeBytes(dir.file("scrambled.exr"), scrambled);
-        CHECK_THROWS_AS(readExrColor(dir.file("scrambled.exr")), IoError);
+        writeBytes(dir / "scrambled.exr", scrambled);
+        CHECK_THROWS_AS(readExrColor(dir / "scrambled.exr"), IoError);
     }
     std::string corruptPixels = good;
     for (size_t i = good.size() - 200; i < good.size(); ++i) corruptPixels[i] = char(i * 37);
-    writeBytes(dir.file("corrupt_pixels.exr"), corruptPixels);
-    CHECK_THROWS_AS(readExrColor(dir.file("corrupt_pixels.exr")), IoError);
+    writeBytes(dir / "corrupt_pixels.exr", corruptPixels);
+    CHECK_THROWS_AS(readExrColor(dir / "corrupt_pixels.exr"), IoError);
 }
 
 TEST_CASE("channel errors list the channels that exist", "[imageio][errors]") {
-    TestTempDir dir;
-    writeExr(dir.file("rgba.exr"), makeGradient(4, 4), ExrPixelType::Half);
-    CHECK_THAT(errorOf([&] { readExrChannel(dir.file("rgba.exr")); }),
+    const ffxdof::testing::TempFolder dir("ffx_dof_reference_test_");
+    writeExr(dir / "rgba.exr", makeGradient(4, 4), ExrPixelType::Half);
+    CHECK_THAT(errorOf([&] { readExrChannel(dir / "rgba.exr"); }),
                Catch::Contains("4 channels") && Catch::Contains("A, B, G, R"));
-    CHECK_THAT(errorOf([&] { readExrChannel(dir.file("rgba.exr"), "Z"); }),
+    CHECK_THAT(errorOf([&] { readExrChannel(dir / "rgba.exr", "Z"); }),
                Catch::Contains("no channel named Z") && Catch::Contains("A, B, G, R"));
     ImageR depth(4, 4);
-    writeExr(dir.file("depth.exr"), depth, ExrPixelType::Float, "Z");
-    CHECK_THAT(errorOf([&] { readExrColor(dir.file("depth.exr")); }),
+    writeExr(dir / "depth.exr", depth, ExrPixelType::Float, "Z");
+    CHECK_THAT(errorOf([&] { readExrColor(dir / "depth.exr"); }),
                Catch::Contains("no colour channel R") && Catch::Contains("Z"));
-    CHECK_THAT(errorOf([&] { readExrColor(dir.file("rgba.exr"), "beauty"); }), Catch::Contains("beauty.R"));
+    CHECK_THAT(errorOf([&] { readExrColor(dir / "rgba.exr", "beauty"); }), Catch::Contains("beauty.R"));
 }
 
 TEST_CASE("write errors leave existing files untouched and no temporary files behind", "[imageio][errors]") {
-    TestTempDir dir;
+    const ffxdof::testing::TempFolder dir("ffx_dof_reference_test_");
     const ImageRGBA image = makeGradient(8, 8);
-    CHECK_THAT(errorOf([&] { writeExr(dir.file("no/such/dir/out.exr"), image); }), Catch::Contains("does not exist"));
-    writeBytes(dir.file("plain_file"), "x");
-    CHECK_THROWS_AS(writeExr(dir.file("plain_file/out.exr"), image), IoError);
-    CHECK_THAT(errorOf([&] { writeImage(dir.file("out.tiff"), image); }), Catch::Contains("unknown output format"));
+    CHECK_THAT(errorOf([&] { writeExr(dir / "no/such/dir/out.exr", image); }), Catch::Contains("does not exist"));
+    writeBytes(dir / "plain_file", "x");
+    CHECK_THROWS_AS(writeExr(dir / "plain_file/out.exr", image), IoError);
+    CHECK_THAT(errorOf([&] { writeImage(dir / "out.tiff", image); }), Catch::Contains("unknown output format"));
     CHECK_THAT(errorOf([&] { writeExr(dir.path().string(), image); }), Catch::Contains("directory"));
 
-    writeExr(dir.file("keep.exr"), image, ExrPixelType::Float);
-    const std::string before = readBytes(dir.file("keep.exr"));
+    writeExr(dir / "keep.exr", image, ExrPixelType::Float);
+    const std::string before = readBytes(dir / "keep.exr");
     ImageRGBA broken = image;
     broken.pixels.resize(10);  // inconsistent with its size
-    CHECK_THAT(errorOf([&] { writeExr(dir.file("keep.exr"), broken); }), Catch::Contains("expected 256"));
-    CHECK_THROWS_AS(writePng(dir.file("keep.exr"), ImageRGBA{}), IoError);
+    CHECK_THAT(errorOf([&] { writeExr(dir / "keep.exr", broken); }), Catch::Contains("expected 256"));
+    CHECK_THROWS_AS(writePng(dir / "keep.exr", ImageRGBA{}), IoError);
     // A writer that fails half-way: the destination keeps its old bytes and the temporary file goes.
-    CHECK_THROWS_AS(writeFileReplacing(dir.file("keep.exr"),
+    CHECK_THROWS_AS(writeFileReplacing(dir / "keep.exr",
                                        [](std::ostream& stream) {
                                            stream << "partial";
                                            throw IoError("simulated failure");
                                        }),
                     IoError);
-    CHECK(readBytes(dir.file("keep.exr")) == before);
+    CHECK(readBytes(dir / "keep.exr") == before);
     size_t entries = 0;
     for (const auto& entry : std::filesystem::directory_iterator(dir.path())) {
         (void)entry;
@@ -241,6 +241,6 @@ TEST_CASE("write errors leave existing files untouched and no temporary files be
     CHECK(entries == 2);  // keep.exr and plain_file
 
     // A successful write replaces the file.
-    writeExr(dir.file("keep.exr"), makeGradient(2, 2), ExrPixelType::Float);
-    CHECK(readExrColor(dir.file("keep.exr")).width == 2);
+    writeExr(dir / "keep.exr", makeGradient(2, 2), ExrPixelType::Float);
+    CHECK(readExrColor(dir / "keep.exr").width == 2);
 }
