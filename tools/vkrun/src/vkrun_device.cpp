@@ -13,6 +13,13 @@ void check(VkResult result, const char* what) {
     if (result != VK_SUCCESS) throw Error(std::string(what) + " failed: VkResult " + std::to_string(int(result)));
 }
 
+void checkDof(FfxDofErrorCode code, const char* call) {
+    if (code != FFX_DOF_OK) {
+        throw Error(std::string(call) + ": " + ffxDofGetErrorString(code) + " (" + ffxDofGetLastErrorMessage() + ")",
+                    code);
+    }
+}
+
 const char* passName(uint32_t pass) { return pass < kPassCount ? ffxdof::kPassNames[pass] : "unknown pass"; }
 
 struct Device::Impl {

@@ -15,6 +15,8 @@ using vk::makeInfo;
 
 // Throws Error("<what> failed: VK_ERROR_...") unless result is VK_SUCCESS.
 void check(VkResult result, const char* what);
+// Throws Error("<call>: <error string> (<last error message>)", code) unless code is FFX_DOF_OK.
+void checkDof(FfxDofErrorCode code, const char* call);
 
 // Bytes of one texel as copied between a buffer and the image (D24_UNORM_S8_UINT: X8_D24, 4 bytes).
 uint32_t bytesPerTexel(VkFormat format);

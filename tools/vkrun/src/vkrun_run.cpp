@@ -18,13 +18,6 @@ double median(std::vector<double> values) {
     return values.size() % 2 ? values[middle] : 0.5 * (values[middle - 1] + values[middle]);
 }
 
-void checkDof(FfxDofErrorCode code, const char* call) {
-    if (code != FFX_DOF_OK) {
-        throw Error(std::string(call) + ": " + ffxDofGetErrorString(code) + " (" + ffxDofGetLastErrorMessage() + ")",
-                    code);
-    }
-}
-
 // Destroys a backend and a context in the right order, also when an exception leaves runEffect.
 struct Effect {
     FfxDofBackend backend = nullptr;

@@ -6,13 +6,6 @@
 namespace ffxdof::vkrun {
 namespace {
 
-void checkDof(FfxDofErrorCode code, const char* call) {
-    if (code != FFX_DOF_OK) {
-        throw Error(std::string(call) + ": " + ffxDofGetErrorString(code) + " (" + ffxDofGetLastErrorMessage() + ")",
-                    code);
-    }
-}
-
 struct Context {
     FfxDofContext handle = nullptr;
     ~Context() { ffxDofContextDestroy(&handle); }
