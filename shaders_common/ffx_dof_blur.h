@@ -29,7 +29,7 @@
 // taken. lavapipe runs every `if` under lane masks, taken or not, but each path is made of loops
 // (rings, samples), and a loop ends once no lane is left in it: a path not taken costs one pass of
 // its loops, a few samples (docs/performance.md).
-// Ring merging (FFX_DOF_OPTION_MAX_RING_MERGE_LOG > 0) is decided per texel, not per tile: the
+// Ring merging (unless FFX_DOF_OPTION_DISABLE_RING_MERGE) is decided per texel, not per tile: the
 // outermost ring is gathered at full resolution first; where its radii are all within half a pixel
 // of the texel's own (a flat far field), inner rings are gathered from a coarser MIP, 2^log rings at
 // a time; between half a pixel and one pixel the groups of rings are merged one after the other as
@@ -183,7 +183,7 @@ FFX_DOF_INLINE void ffxDofGatherRing(FFX_DOF_INOUT(FfxDofGather) gather, FfxDofK
 }
 
 // Gathers every ring inside the outermost one, from the outside in. Rings 1 .. rings - 1 form groups
-// of 2^FFX_DOF_OPTION_MAX_RING_MERGE_LOG; a group is gathered either ring by ring at the kernel's MIP
+// of 2^FFX_DOF_RING_MERGE_LOG; a group is gathered either ring by ring at the kernel's MIP
 // (full) or in one walk over the group's annulus from a MIP that much coarser (merged). A border
 // between the two levels is judged by each side's own texel centres, so there a one-texel source
 // can be read twice or not at all (docs/technique.md, Kernel shape and walk). mergeAmount (0..1) merges
@@ -197,7 +197,7 @@ FFX_DOF_INLINE void ffxDofGatherInnerRings(FFX_DOF_INOUT(FfxDofGather) gather, F
                                            FfxBoolean mergeEligible, FfxFloat32 mergeAmount, FfxDofGatherParts parts,
                                            FfxDofConstants constants)
 {
-    FfxUInt32 mergeLog = FfxUInt32(FFX_DOF_OPTION_MAX_RING_MERGE_LOG);
+    FfxUInt32 mergeLog = FfxUInt32(FFX_DOF_RING_MERGE_LOG);
     FfxUInt32 groupSize = 1u << mergeLog;
     FfxUInt32 groupCount = (kernel.rings - 1u + groupSize - 1u) / groupSize;
     FfxFloat32 mergedGroups = mergeAmount * FfxFloat32(groupCount);
@@ -271,11 +271,11 @@ FFX_DOF_INLINE void ffxDofGatherKernel(FFX_DOF_INOUT(FfxDofGather) gather, FfxDo
 {
     FfxBoolean trackSpread = !parts.equalWeights;
     FfxBoolean mergeEligible =
-        FFX_DOF_OPTION_MAX_RING_MERGE_LOG > 0 && kernel.rings >= 2u && kernel.centerCoc <= -FFX_DOF_IN_FOCUS_RADIUS;
+        FFX_DOF_RING_MERGE_LOG > 0 && kernel.rings >= 2u && kernel.centerCoc <= -FFX_DOF_IN_FOCUS_RADIUS;
     // Whether the inner rings merge is known only after this ring, so its inner border is judged at
     // the coarse MIP wherever they may.
     FfxUInt32 coarseMip =
-        min(kernel.baseMip + FfxUInt32(FFX_DOF_OPTION_MAX_RING_MERGE_LOG), FfxUInt32(FFX_DOF_OPTION_MAX_MIP - 1));
+        min(kernel.baseMip + FfxUInt32(FFX_DOF_RING_MERGE_LOG), FfxUInt32(FFX_DOF_OPTION_MAX_MIP - 1));
     ffxDofGatherRing(gather, kernel, kernel.rings, kernel.rings, kernel.baseMip,
                      mergeEligible ? coarseMip : kernel.baseMip, kernel.baseMip, 1.0f, trackSpread, parts, constants);
     FfxFloat32 mergeAmount = 0.0f;

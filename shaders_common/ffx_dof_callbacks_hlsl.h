@@ -31,7 +31,7 @@ FfxDofConstants ffxDofGetConstants() { return ffxDofPushedConstants; }
 // input through the output UAV (ffxDofLoadInputColor below, next to the output). Vulkan (SPIR-V from
 // glslang or dxc -spirv) keeps the sampled view of the same GENERAL-layout image, which is valid
 // there and needs no shaderStorageImageReadWithoutFormat.
-#if defined(FFX_DOF_PASS_COMPOSITE) && FFX_DOF_OPTION_COMBINE_IN_PLACE && defined(__DXC_VERSION_MAJOR) && \
+#if defined(FFX_DOF_PASS_COMPOSITE) && FFX_DOF_OPTION_OUTPUT_PRE_INIT && defined(__DXC_VERSION_MAJOR) && \
     !defined(__spirv__)
 #define FFX_DOF_INPUT_COLOR_THROUGH_OUTPUT 1
 #else

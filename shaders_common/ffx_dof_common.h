@@ -25,17 +25,19 @@
 #if FFX_DOF_OPTION_MAX_MIP < 1 || FFX_DOF_OPTION_MAX_MIP > 4
 #error "FFX_DOF_OPTION_MAX_MIP must be 1..4"
 #endif
-// log2 of the number of rings merged into one in flat far-field tiles (0: never merge).
-#ifndef FFX_DOF_OPTION_MAX_RING_MERGE_LOG
-#define FFX_DOF_OPTION_MAX_RING_MERGE_LOG 1
+// 1: never merge inner kernel rings in flat far-field tiles (FFX_DOF_DISABLE_RING_MERGE).
+#ifndef FFX_DOF_OPTION_DISABLE_RING_MERGE
+#define FFX_DOF_OPTION_DISABLE_RING_MERGE 0
 #endif
+// log2 of the number of rings merged into one in flat far-field tiles (0: never merge).
+#define FFX_DOF_RING_MERGE_LOG (FFX_DOF_OPTION_DISABLE_RING_MERGE ? 0 : 1)
 // 1: the depth buffer is inverted (near plane at 1).
 #ifndef FFX_DOF_OPTION_REVERSE_DEPTH
 #define FFX_DOF_OPTION_REVERSE_DEPTH 0
 #endif
 // 1: the output already holds the input; only changed pixels are written.
-#ifndef FFX_DOF_OPTION_COMBINE_IN_PLACE
-#define FFX_DOF_OPTION_COMBINE_IN_PLACE 0
+#ifndef FFX_DOF_OPTION_OUTPUT_PRE_INIT
+#define FFX_DOF_OPTION_OUTPUT_PRE_INIT 0
 #endif
 
 // ---- Tuning constants -------------------------------------------------------------------------

@@ -2,7 +2,7 @@
 //
 // One workgroup covers one tile (16 x 16 full-res px); each invocation writes a 2 x 2 quad.
 //   1. A tile that is in focus and that no near-field blur reaches is copied (or, with
-//      FFX_DOF_OPTION_COMBINE_IN_PLACE, left alone): exactly what the per-pixel path would do.
+//      FFX_DOF_OPTION_OUTPUT_PRE_INIT, left alone): exactly what the per-pixel path would do.
 //   2. The group loads the 12 x 12 half-res texels around the tile and post-filters the 10 x 10 that
 //      bilinear upsampling touches, once per texel: median-luminance filter of near and far color,
 //      3x3 average of near opacity, invalid near texels filled from the most opaque neighbour.
@@ -50,7 +50,7 @@ FFX_DOF_GROUPSHARED FfxDofFloat3 ffxDofSharedFar[FFX_DOF_FILTERED_SIDE * FFX_DOF
 FFX_DOF_GROUPSHARED FfxFloat32x2 ffxDofSharedAlpha[FFX_DOF_FILTERED_SIDE * FFX_DOF_FILTERED_SIDE];
 FFX_DOF_GROUPSHARED FfxFloat32 ffxDofSharedCoc[FFX_DOF_FILTERED_SIDE * FFX_DOF_FILTERED_SIDE];
 
-#if FFX_DOF_OPTION_COMBINE_IN_PLACE
+#if FFX_DOF_OPTION_OUTPUT_PRE_INIT
 // In place the output image is the input: other workgroups write their tiles during this pass, and
 // this group writes its own. So the group reads the input only for its own tile, into group-shared
 // memory before any write, and takes the pixels just outside the tile (the fixed 3x3 blur's border)
@@ -115,7 +115,7 @@ FFX_DOF_INLINE void ffxDofPostFilterTexel(FfxUInt32 index)
 
 // The input color of a full-res pixel within one pixel of the tile that holds `ownPixel` (a pixel
 // of the workgroup's own tile).
-#if FFX_DOF_OPTION_COMBINE_IN_PLACE
+#if FFX_DOF_OPTION_OUTPUT_PRE_INIT
 // Returns the scaled color (the group-shared copy and MIP 0 are scaled already).
 FFX_DOF_INLINE FfxFloat32x4 ffxDofCompositeInput(FfxUInt32x2 pixel, FfxUInt32x2 ownPixel, FfxFloat32 scale)
 {
@@ -255,7 +255,7 @@ FFX_DOF_INLINE void ffxDofComposite(FfxUInt32x2 groupId, FfxUInt32 localIndex)
     // Uniform per workgroup, so returning before the barriers is allowed.
     if (max(abs(tile.x), abs(tile.y)) < FFX_DOF_IN_FOCUS_RADIUS && dilated.y < FFX_DOF_NEAR_THRESHOLD)
     {
-#if !FFX_DOF_OPTION_COMBINE_IN_PLACE
+#if !FFX_DOF_OPTION_OUTPUT_PRE_INIT
         FFX_DOF_UNROLL
         for (FfxUInt32 k = 0u; k < 4u; ++k)
         {
@@ -267,7 +267,7 @@ FFX_DOF_INLINE void ffxDofComposite(FfxUInt32x2 groupId, FfxUInt32 localIndex)
         return;
     }
 
-#if FFX_DOF_OPTION_COMBINE_IN_PLACE
+#if FFX_DOF_OPTION_OUTPUT_PRE_INIT
     FFX_DOF_UNROLL
     for (FfxUInt32 k = 0u; k < 4u; ++k)
     {
@@ -312,7 +312,7 @@ FFX_DOF_INLINE void ffxDofComposite(FfxUInt32x2 groupId, FfxUInt32 localIndex)
         if (pixel.x >= constants.fullSize.x || pixel.y >= constants.fullSize.y)
             continue;
         FfxFloat32x4 color = neighbourhood.color[(inQuad.y + 1u) * 4u + inQuad.x + 1u];
-#if FFX_DOF_OPTION_COMBINE_IN_PLACE
+#if FFX_DOF_OPTION_OUTPUT_PRE_INIT
         if (ffxDofComposePixel(pixel, inQuad, filteredOrigin, constants, neighbourhood, color))
             ffxDofStoreOutput(pixel, ffxDofUnscaleColor(color, scale));
 #else

@@ -31,7 +31,7 @@
 #define FFX_DOF_USES_LAYERS 1
 #define FFX_DOF_USES_RW_OUTPUT 1
 #define FFX_DOF_USES_GLOBALS 1
-#if FFX_DOF_OPTION_COMBINE_IN_PLACE
+#if FFX_DOF_OPTION_OUTPUT_PRE_INIT
 // In place, the input pixels next to the tile are read from the half-res color (other workgroups
 // write the full-res ones during the pass); see ffx_dof_composite.h.
 #define FFX_DOF_USES_COLOR_MIPS 1

@@ -26,8 +26,8 @@ struct PassGrid {
 // device-dependent axes (FFX_HALF, FFX_DOF_OPTION_WAVE64).
 struct PermutationOptions {
     uint32_t reverseDepth = 0;    // FFX_DOF_OPTION_REVERSE_DEPTH
-    uint32_t ringMergeLog = 1;    // FFX_DOF_OPTION_MAX_RING_MERGE_LOG
-    uint32_t combineInPlace = 0;  // FFX_DOF_OPTION_COMBINE_IN_PLACE
+    uint32_t ringMergeLog = 1;    // 1 - FFX_DOF_OPTION_DISABLE_RING_MERGE
+    uint32_t combineInPlace = 0;  // FFX_DOF_OPTION_OUTPUT_PRE_INIT
 };
 
 // Number of MIP levels of COLOR_MIPS / COC_MIPS the SDK allocates (FFX_DOF_OPTION_MAX_MIP).

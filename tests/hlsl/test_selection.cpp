@@ -56,9 +56,9 @@ const shaders::Blob& expectedBlob(const shaders::PassTable& table, const Options
             value = options.half;
         else if (macro == "FFX_DOF_OPTION_REVERSE_DEPTH")
             value = options.reversedDepth;
-        else if (macro == "FFX_DOF_OPTION_MAX_RING_MERGE_LOG")
-            value = options.ringMerge;
-        else if (macro == "FFX_DOF_OPTION_COMBINE_IN_PLACE")
+        else if (macro == "FFX_DOF_OPTION_DISABLE_RING_MERGE")
+            value = options.ringMerge ? 0 : 1;
+        else if (macro == "FFX_DOF_OPTION_OUTPUT_PRE_INIT")
             value = options.inPlace;
         else if (macro != "FFX_DOF_OPTION_WAVE64")
             FAIL("axis " << macro << " is unknown to this test");

@@ -122,7 +122,7 @@ TEST_CASE("HLSL matches GLSL in every permutation on far-highlights 67x41", "[vu
 }
 
 // Hidden (not registered with CTest; run it by name): reproduces the race of the in-place
-// composite. With FFX_DOF_OPTION_COMBINE_IN_PLACE the output is the colour image, and the fixed 3x3
+// composite. With FFX_DOF_OPTION_OUTPUT_PRE_INIT the output is the colour image, and the fixed 3x3
 // blur of ffx_dof_composite.h reads neighbouring colour pixels that other invocations (and the same
 // invocation's earlier quad pixels) of the same dispatch may already have overwritten, so repeated
 // runs of one binary differ by up to about 2e-3 (relative) on lavapipe. It is the only

@@ -59,7 +59,7 @@ struct GateResult {
 };
 // Runs ffx-dof on the scene's pinhole colour and standard device depth, with cocScale/cocBias from
 // ffxDofCalculateCocScale/Bias and a cocLimitFactor that covers the scene's largest radius.
-// inPlace: the output is the color image itself (FFX_DOF_OPTION_COMBINE_IN_PLACE).
+// inPlace: the output is the color image itself (FFX_DOF_OPTION_OUTPUT_PRE_INIT).
 GateResult runGate(vkrun::Device& device, const SceneRender& render, bool inPlace = false);
 
 // The single bright point far behind focus (scene "point") through ffx-dof, measured against the

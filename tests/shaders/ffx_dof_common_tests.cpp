@@ -636,7 +636,7 @@ TEST_CASE("The kernel footprint covers the radius, the texel rounding and the MI
             FfxUInt32 rings = std::max(ffxDofRingCount(radius, quality), 1u);
             float spacing = radius / float(rings);
             // The widest texel read: a ring-merged MIP of the spacing's level, with its diagonal.
-            float mipTexel = std::exp2(ffxDofMipForSpacing(spacing) + float(FFX_DOF_OPTION_MAX_RING_MERGE_LOG));
+            float mipTexel = std::exp2(ffxDofMipForSpacing(spacing) + float(FFX_DOF_RING_MERGE_LOG));
             float farthestRead =
                 radius + 0.5f * std::sqrt(2.0f) * (FFX_DOF_JITTER_AMPLITUDE + 1.0f) + std::sqrt(2.0f) * 0.5f * mipTexel;
             INFO("quality " << quality << ", radius " << radius);

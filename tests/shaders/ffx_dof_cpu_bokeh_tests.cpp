@@ -1,4 +1,4 @@
-// The single-point bokeh of issue 6 on the CPU, built with FFX_DOF_OPTION_MAX_RING_MERGE_LOG 0 (the
+// The single-point bokeh of issue 6 on the CPU, built with FFX_DOF_OPTION_DISABLE_RING_MERGE 1 (the
 // FFX_DOF_DISABLE_RING_MERGE permutation): every ring of the kernel read from one MIP, so every texel
 // of the kernel is read exactly once and a one-texel source makes a flat disc of its own energy.
 #include <catch2/catch.hpp>
@@ -8,7 +8,7 @@
 #include <algorithm>
 #include <cmath>
 
-static_assert(FFX_DOF_OPTION_MAX_RING_MERGE_LOG == 0, "built without ring merging");
+static_assert(FFX_DOF_RING_MERGE_LOG == 0, "built without ring merging");
 
 TEST_CASE("A single bright far pixel spreads into a flat disc of its energy (half-res far layer)", "[pipeline]") {
     // Ring points read from the nearest texel hit the one texel holding the point 0 to 2 times

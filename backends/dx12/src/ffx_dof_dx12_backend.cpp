@@ -24,8 +24,8 @@ constexpr D3D_SHADER_MODEL kWave64ShaderModel = shaderModel(0x66);    // [WaveSi
 constexpr const char* kAxisHalf = "FFX_HALF";
 constexpr const char* kAxisWave64 = "FFX_DOF_OPTION_WAVE64";
 constexpr const char* kAxisReverseDepth = "FFX_DOF_OPTION_REVERSE_DEPTH";
-constexpr const char* kAxisRingMergeLog = "FFX_DOF_OPTION_MAX_RING_MERGE_LOG";
-constexpr const char* kAxisCombineInPlace = "FFX_DOF_OPTION_COMBINE_IN_PLACE";
+constexpr const char* kAxisRingMergeLog = "FFX_DOF_OPTION_DISABLE_RING_MERGE";
+constexpr const char* kAxisCombineInPlace = "FFX_DOF_OPTION_OUTPUT_PRE_INIT";
 
 bool tableHasAxis(const shaders::PassTable& table, const char* macro) {
     for (uint32_t a = 0; a < table.axisCount; ++a) {
@@ -41,7 +41,7 @@ std::vector<shaders::Define> permutationValues(const shaders::PassTable& table, 
         {kAxisHalf, device.half ? 1u : 0u},
         {kAxisWave64, device.wave64 ? 1u : 0u},
         {kAxisReverseDepth, options.reverseDepth},
-        {kAxisRingMergeLog, options.ringMergeLog},
+        {kAxisRingMergeLog, options.ringMergeLog ? 0u : 1u},
         {kAxisCombineInPlace, options.combineInPlace},
     };
     std::vector<shaders::Define> values;

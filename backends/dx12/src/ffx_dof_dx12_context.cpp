@@ -88,7 +88,7 @@ public:
             for (uint32_t i = 0; i < slots.srv[slot].count; ++i) access_[slots.srv[slot].first + i] = Access::Read;
         }
         // A write wins over a read of the same subresource: in place, the composite pass binds the
-        // color and the output, and its COMBINE_IN_PLACE permutation reads the color through the output.
+        // color and the output, and its OUTPUT_PRE_INIT permutation reads the color through the output.
         for (uint32_t slot = 0; slot < kUavImageCount; ++slot) {
             if ((access.uavImageMask & (1u << slot)) && slots.uavImage[slot] != kNoTarget)
                 access_[slots.uavImage[slot]] = Access::Write;

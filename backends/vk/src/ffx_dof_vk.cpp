@@ -432,9 +432,9 @@ FfxDofErrorCode ContextVK::createPipelines() {
                 value = backend_.useWave64 ? 1 : 0;
             } else if (macro == "FFX_DOF_OPTION_REVERSE_DEPTH") {
                 value = pipelineOptions_.reverseDepth;
-            } else if (macro == "FFX_DOF_OPTION_MAX_RING_MERGE_LOG") {
-                value = pipelineOptions_.ringMergeLog;
-            } else if (macro == "FFX_DOF_OPTION_COMBINE_IN_PLACE") {
+            } else if (macro == "FFX_DOF_OPTION_DISABLE_RING_MERGE") {
+                value = pipelineOptions_.ringMergeLog ? 0 : 1;
+            } else if (macro == "FFX_DOF_OPTION_OUTPUT_PRE_INIT") {
                 value = pipelineOptions_.combineInPlace;
             } else {
                 return fail(FFX_DOF_ERROR_UNSUPPORTED, "the %s shaders have the axis %s, unknown to the Vulkan backend",
