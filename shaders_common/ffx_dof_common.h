@@ -30,7 +30,11 @@
 #define FFX_DOF_OPTION_DISABLE_RING_MERGE 0
 #endif
 // log2 of the number of rings merged into one in flat far-field tiles (0: never merge).
-#define FFX_DOF_RING_MERGE_LOG (FFX_DOF_OPTION_DISABLE_RING_MERGE ? 0 : 1)
+#if FFX_DOF_OPTION_DISABLE_RING_MERGE
+#define FFX_DOF_RING_MERGE_LOG 0
+#else
+#define FFX_DOF_RING_MERGE_LOG 1
+#endif
 // 1: the depth buffer is inverted (near plane at 1).
 #ifndef FFX_DOF_OPTION_REVERSE_DEPTH
 #define FFX_DOF_OPTION_REVERSE_DEPTH 0

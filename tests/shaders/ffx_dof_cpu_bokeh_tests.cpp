@@ -8,7 +8,7 @@
 #include <algorithm>
 #include <cmath>
 
-static_assert(FFX_DOF_RING_MERGE_LOG == 0, "built without ring merging");
+static_assert(FFX_DOF_OPTION_DISABLE_RING_MERGE == 1, "built without ring merging");
 
 TEST_CASE("A single bright far pixel spreads into a flat disc of its energy (half-res far layer)", "[pipeline]") {
     // Ring points read from the nearest texel hit the one texel holding the point 0 to 2 times

@@ -1,5 +1,5 @@
 // Where the D3D12 backend gets its DXIL: tables of the same shape as the SPIR-V ones
-// (tools/shaderc/include/ffx_dof_shader_table.h), made by the permutation compiler when it finds dxc.
+// (sdk/src/shader_table/ffx_dof_shader_table.h), made by the permutation compiler when it finds dxc.
 //
 // The shape, as this backend reads it:
 //   PassTable::language            "dxil"
