@@ -60,6 +60,13 @@ FfxDofResource ffxDofGetResourceVK(VkImage image, VkFormat format, uint32_t widt
 /** Wraps the engine's command buffer, which must be recording and support compute. */
 FfxDofCommandList ffxDofGetCommandListVK(VkCommandBuffer commandBuffer);
 
+/** The engine is about to destroy image (after the GPU finished every dispatch that used it): the
+ *  context destroys the views it keeps of it. The context keeps a view of each engine image it was
+ *  given, per format and aspect, from dispatch to dispatch (no view is made per dispatch), so an image
+ *  destroyed without this call would leave a view whose handle a new image could be mistaken for.
+ *  Destroying the context releases every view. Images never given to the context are ignored. */
+FfxDofErrorCode ffxDofContextReleaseImageVK(FfxDofContext* pContext, VkImage image);
+
 /** Number of timestamps ffxDofContextSetTimestampQueriesVK writes per dispatch: one before the first
  *  pass and one after each of the five passes. */
 #define FFX_DOF_VK_TIMESTAMP_COUNT 6u

@@ -1,10 +1,11 @@
-// The contract between the API-neutral core (ffx_dof_context.cpp) and a graphics-API backend.
-// Private to ffx-dof. The core validates every description, computes the constants and dispatch
-// sizes; a backend only creates resources and pipelines and records what the core planned.
+// The contract between the API-neutral core and a graphics-API backend. Private to ffx-dof.
+// The core validates every description and plans everything that is not specific to one API
+// (ffx_dof_plan.h); a backend reports what its device can run, creates what the plan lists and
+// records what the plan says. It never calls back into the core or re-derives what the plan holds.
 #pragma once
 
 #include "ffx_dof.h"
-#include "ffx_dof_passes.h"
+#include "ffx_dof_plan.h"
 
 #include <atomic>
 #include <memory>
@@ -12,32 +13,12 @@
 
 namespace ffxdof {
 
-// Everything a backend needs to build one context.
-struct ContextConfig {
-    FfxDofDimensions2D resolution{};
-    uint32_t flags = 0;  // FfxDofInitializationFlagBits
-    uint32_t quality = 0;
-    float cocLimitFactor = 0.0f;
-};
-
-// One recorded dispatch, fully planned by the core.
-struct DispatchPlan {
-    FfxDofCommandList commandList = nullptr;
-    FfxDofResource color{};
-    FfxDofResource depth{};
-    FfxDofResource output{};
-    FfxDofConstants constants{};
-    PassGrid passes[kPassCount]{};  // workgroup counts, in pipeline order
-    PermutationOptions options{};   // API-neutral option values; the backend adds half/wave64
-    bool outputIsColor = false;     // in-place: output and color are the same image
-};
-
 // The per-context half of a backend: internal images, descriptors, and recording.
 class BackendContext {
 public:
     virtual ~BackendContext() = default;
-    // Checks formats, sizes and states of the engine resources (API-specific) and records.
-    virtual FfxDofErrorCode dispatch(const DispatchPlan& plan) = 0;
+    // Checks what is API-specific about the engine's resources (formats, states, flags) and records.
+    virtual FfxDofErrorCode dispatch(const DispatchPlan& dispatch) = 0;
     virtual FfxDofMemoryUsage memoryUsage() const = 0;
 };
 
@@ -57,7 +38,10 @@ struct FfxDofBackend_T {
     FfxDofBackend_T(const FfxDofBackend_T&) = delete;
     FfxDofBackend_T& operator=(const FfxDofBackend_T&) = delete;
     virtual ~FfxDofBackend_T() { ffxdof::unregisterLiveBackend(this); }
-    virtual FfxDofErrorCode createContext(const ffxdof::ContextConfig& config,
+    // The shader tables and device axes contexts of this backend use (asked once per context).
+    virtual ffxdof::BackendCapabilities capabilities() const = 0;
+    // Creates what the plan lists; the plan outlives the returned context.
+    virtual FfxDofErrorCode createContext(const ffxdof::ContextPlan& plan,
                                           std::unique_ptr<ffxdof::BackendContext>* out) = 0;
     std::atomic<int> liveContexts{0};
 };

@@ -1,5 +1,5 @@
-// The API-neutral core: validates every description, owns context lifetime, and plans each dispatch
-// (constants, workgroup counts, permutation options) for the backend to record.
+// The API-neutral core: validates every description, owns context lifetime, builds each context's
+// plan (ffx_dof_plan.cpp) and hands every checked dispatch to the backend to record.
 #include "ffx_dof_context.h"
 #include "ffx_dof_live_handles.h"
 
@@ -8,7 +8,7 @@
 
 struct FfxDofContext_T {
     FfxDofBackend backend = nullptr;
-    ffxdof::ContextConfig config;
+    ffxdof::ContextPlan plan;
     std::unique_ptr<ffxdof::BackendContext> impl;
     uint32_t frameIndex = 0;
 };
@@ -37,8 +37,6 @@ FfxDofErrorCode notALiveBackend(const char* what, const void* backend) {
                 backend);
 }
 
-uint32_t divideRoundingUp(uint32_t value, uint32_t divisor) { return (value + divisor - 1) / divisor; }
-
 FfxDofErrorCode checkResource(const FfxDofResource& resource, const char* name, FfxDofDimensions2D size) {
     if (resource.handle == 0) return fail(FFX_DOF_ERROR_INVALID_RESOURCE, "%s: the image handle is null", name);
     if (resource.width != size.width || resource.height != size.height)
@@ -63,50 +61,6 @@ void unregisterLiveBackend(const FfxDofBackend_T* backend) { liveBackends().eras
 BackendContext* backendContextOf(FfxDofContext context) {
     if (context == nullptr || !isLive(context)) return nullptr;
     return context->impl.get();
-}
-
-DispatchPlan planDispatch(const ContextConfig& config, const FfxDofDispatchDescription& dispatch, uint32_t frameIndex) {
-    DispatchPlan plan;
-    plan.commandList = dispatch.commandList;
-    plan.color = dispatch.color;
-    plan.depth = dispatch.depth;
-    plan.output = dispatch.output;
-    plan.outputIsColor = dispatch.output.handle == dispatch.color.handle;
-
-    const uint32_t width = config.resolution.width;
-    const uint32_t height = config.resolution.height;
-    const uint32_t halfWidth = divideRoundingUp(width, 2);
-    const uint32_t halfHeight = divideRoundingUp(height, 2);
-
-    FfxDofConstants& c = plan.constants;
-    c.cocScale = dispatch.cocScale;
-    c.cocBias = dispatch.cocBias;
-    // cocLimitFactor is relative to the full-resolution height; radii are in half-resolution pixels.
-    c.cocLimit = config.cocLimitFactor * static_cast<float>(height) * 0.5f;
-    c.maxRings = config.quality;
-    c.fullSize = {width, height};
-    c.halfSize = {halfWidth, halfHeight};
-    c.tileCount = {divideRoundingUp(halfWidth, FFX_DOF_TILE_SIZE), divideRoundingUp(halfHeight, FFX_DOF_TILE_SIZE)};
-    c.halfTexelSize = {1.0f / static_cast<float>(halfWidth), 1.0f / static_cast<float>(halfHeight)};
-    c.fullTexelSize = {1.0f / static_cast<float>(width), 1.0f / static_cast<float>(height)};
-    c.frameIndex = frameIndex;
-    c.outputFlags = 0;  // the backend adds FFX_DOF_OUTPUT_FLAG_ENCODE_SRGB where it writes through a UNORM view
-
-    // Workgroup counts: each pass covers a domain (full-res pixels, half-res pixels or tiles) with groups
-    // of a fixed extent declared next to the resource table, so shader and host cannot disagree.
-    const auto grid = [](uint32_t domainWidth, uint32_t domainHeight, uint32_t extent) {
-        return PassGrid{divideRoundingUp(domainWidth, extent), divideRoundingUp(domainHeight, extent), 1};
-    };
-    plan.passes[uint32_t(Pass::DownsampleDepth)] = grid(width, height, FFX_DOF_DOWNSAMPLE_DEPTH_GROUP_EXTENT);
-    plan.passes[uint32_t(Pass::DownsampleColor)] = grid(width, height, FFX_DOF_DOWNSAMPLE_COLOR_GROUP_EXTENT);
-    plan.passes[uint32_t(Pass::Dilate)] = grid(c.tileCount.x, c.tileCount.y, FFX_DOF_DILATE_GROUP_EXTENT);
-    plan.passes[uint32_t(Pass::Blur)] = grid(halfWidth, halfHeight, FFX_DOF_BLUR_GROUP_EXTENT);
-    plan.passes[uint32_t(Pass::Composite)] = grid(width, height, FFX_DOF_COMPOSITE_GROUP_EXTENT);
-
-    plan.options.reverseDepth = (config.flags & FFX_DOF_REVERSE_DEPTH) ? 1u : 0u;
-    plan.options.ringMergeLog = (config.flags & FFX_DOF_DISABLE_RING_MERGE) ? 0u : 1u;
-    plan.options.combineInPlace = (config.flags & FFX_DOF_OUTPUT_PRE_INIT) ? 1u : 0u;
-    return plan;
 }
 
 }  // namespace ffxdof
@@ -157,13 +111,16 @@ extern "C" FfxDofErrorCode ffxDofContextCreate(FfxDofContext* pContext,
     std::unique_ptr<FfxDofContext_T> context(new (std::nothrow) FfxDofContext_T);
     if (!context) return fail(FFX_DOF_ERROR_OUT_OF_MEMORY, "allocating the context failed");
     context->backend = desc.backendInterface;
-    context->config.resolution = size;
-    context->config.flags = desc.flags;
-    context->config.quality = desc.quality;
-    context->config.cocLimitFactor = desc.cocLimitFactor;
+    ContextConfig config;
+    config.resolution = size;
+    config.flags = desc.flags;
+    config.quality = desc.quality;
+    config.cocLimitFactor = desc.cocLimitFactor;
 
     try {
-        const FfxDofErrorCode status = desc.backendInterface->createContext(context->config, &context->impl);
+        FfxDofErrorCode status = buildContextPlan(config, backend->capabilities(), &context->plan);
+        if (status != FFX_DOF_OK) return status;
+        status = backend->createContext(context->plan, &context->impl);
         if (status != FFX_DOF_OK) return status;
         if (!context->impl) return fail(FFX_DOF_ERROR_BACKEND, "the backend returned no context");
         liveContexts().insert(context.get());
@@ -184,16 +141,24 @@ extern "C" FfxDofErrorCode ffxDofContextDispatch(FfxDofContext* pContext,
     const FfxDofDispatchDescription& desc = *pDispatchDescription;
     if (desc.commandList == nullptr) return fail(FFX_DOF_ERROR_INVALID_POINTER, "commandList is NULL");
 
-    const FfxDofDimensions2D size = context->config.resolution;
+    const ContextConfig& config = context->plan.config;
+    const FfxDofDimensions2D size = config.resolution;
     for (const auto& [resource, name] :
          {std::pair{&desc.color, "color"}, std::pair{&desc.depth, "depth"}, std::pair{&desc.output, "output"}}) {
         if (const FfxDofErrorCode status = checkResource(*resource, name, size); status != FFX_DOF_OK) return status;
     }
     if (desc.output.handle == desc.depth.handle)
         return fail(FFX_DOF_ERROR_INVALID_RESOURCE, "output is the depth image");
-    if (desc.output.handle == desc.color.handle && !(context->config.flags & FFX_DOF_OUTPUT_PRE_INIT))
+    if (desc.depth.handle == desc.color.handle)
+        return fail(FFX_DOF_ERROR_INVALID_RESOURCE, "depth and color are the same image");
+    const bool inPlace = desc.output.handle == desc.color.handle;
+    if (inPlace && !(config.flags & FFX_DOF_OUTPUT_PRE_INIT))
         return fail(FFX_DOF_ERROR_OUTPUT_ALIASES_INPUT,
                     "output is the color image; create the context with FFX_DOF_OUTPUT_PRE_INIT for in-place use");
+    if (inPlace && (desc.output.format != desc.color.format || desc.output.state != desc.color.state ||
+                    desc.output.flags != desc.color.flags))
+        return fail(FFX_DOF_ERROR_INVALID_RESOURCE,
+                    "output is the color image (in place) but its format, state or flags differ from color's");
     if (!std::isfinite(desc.cocScale) || !std::isfinite(desc.cocBias))
         return fail(FFX_DOF_ERROR_INVALID_ARGUMENT,
                     "cocScale %g / cocBias %g must be finite (ffxDofCalculateCocScale/Bias return NaN for "
@@ -201,8 +166,8 @@ extern "C" FfxDofErrorCode ffxDofContextDispatch(FfxDofContext* pContext,
                     static_cast<double>(desc.cocScale), static_cast<double>(desc.cocBias));
 
     try {
-        const DispatchPlan plan = planDispatch(context->config, desc, context->frameIndex);
-        const FfxDofErrorCode status = context->impl->dispatch(plan);
+        const DispatchPlan dispatch = planDispatch(context->plan, desc, context->frameIndex);
+        const FfxDofErrorCode status = context->impl->dispatch(dispatch);
         if (status == FFX_DOF_OK) ++context->frameIndex;
         return status;
     } catch (const std::bad_alloc&) {

@@ -9,8 +9,4 @@ namespace ffxdof {
 // Backend-specific entry points (e.g. ffxDofContextSetTimestampQueriesVK) reach their object through it.
 BackendContext* backendContextOf(FfxDofContext context);
 
-// The planning the core does for every dispatch, exposed for tests: constants and workgroup counts
-// for a context configuration and per-frame values.
-DispatchPlan planDispatch(const ContextConfig& config, const FfxDofDispatchDescription& dispatch, uint32_t frameIndex);
-
 }  // namespace ffxdof

@@ -1,6 +1,6 @@
-// API-neutral description of the five passes: their order, names, permutation options, dispatch
-// sizes and the internal resources. Shared by the core and every backend; the shader side of the
-// same facts is shaders_common/ffx_dof_resources.h.
+// API-neutral description of the passes and the internal resources. The pass list and the axes come
+// from shaders_common/ffx_dof_permutations.json (the generated ffx_dof_pass_list.h); the internal
+// images are listed here once. The shader side of the same facts is shaders_common/ffx_dof_resources.h.
 #pragma once
 
 #include "ffx_dof.h"
@@ -8,26 +8,14 @@
 #define FFX_CPU 1
 #include "ffx_dof_constants.h"
 #include "ffx_dof_resources.h"
+#include "ffx_dof_pass_list.h"
 
 #include <cstdint>
 
 namespace ffxdof {
 
-// Pipeline order. The names are the shader header names (shaders_common/ffx_dof_<name>.h).
-enum class Pass : uint32_t { DownsampleDepth = 0, DownsampleColor, Dilate, Blur, Composite };
-constexpr uint32_t kPassCount = 5;
-constexpr const char* kPassNames[kPassCount] = {"downsample_depth", "downsample_color", "dilate", "blur", "composite"};
-
 struct PassGrid {
     uint32_t x = 1, y = 1, z = 1;  // workgroup counts
-};
-
-// Values of the FFX_DOF_OPTION_* axes chosen by the context flags. A backend adds the
-// device-dependent axes (FFX_HALF, FFX_DOF_OPTION_WAVE64).
-struct PermutationOptions {
-    uint32_t reverseDepth = 0;    // FFX_DOF_OPTION_REVERSE_DEPTH
-    uint32_t ringMergeLog = 1;    // 1 - FFX_DOF_OPTION_DISABLE_RING_MERGE
-    uint32_t combineInPlace = 0;  // FFX_DOF_OPTION_OUTPUT_PRE_INIT
 };
 
 // Number of MIP levels of COLOR_MIPS / COC_MIPS the SDK allocates (FFX_DOF_OPTION_MAX_MIP).
@@ -66,6 +54,11 @@ constexpr InternalImageSpec kInternalImages[] = {
      FFX_DOF_UAV_LAYER_ALPHA},
 };
 constexpr uint32_t kInternalImageCount = sizeof(kInternalImages) / sizeof(kInternalImages[0]);
+
+// Shader slots per class (ffx_dof_resources.h): sampled images, storage images, storage buffers.
+constexpr uint32_t kSampledSlotCount = FFX_DOF_SRV_LAYER_ALPHA + 1;
+constexpr uint32_t kStorageImageSlotCount = FFX_DOF_UAV_OUTPUT + 1;
+constexpr uint32_t kStorageBufferSlotCount = FFX_DOF_UAV_BUFFER_GLOBALS + 1;
 
 // The GLOBALS storage buffer (FFX_DOF_UAV_BUFFER_GLOBALS): four 32-bit words.
 constexpr uint32_t kGlobalsWordCount = 4;

@@ -1,13 +1,23 @@
-// A backend that records instead of drawing, so the API-neutral core can be tested without a GPU.
+// A backend that records instead of drawing, so the API-neutral core can be tested without a GPU. It
+// offers the real GLSL shader tables (reflection only: no device is involved).
 #pragma once
 
 #include "ffx_dof_backend.h"
+#include "ffx_dof_vk_shaders_glsl.h"
 
 #include <vector>
 
 namespace ffxdof::testing {
 
-class RecordingBackend;
+// The capabilities of a backend that has the GLSL tables.
+inline BackendCapabilities glslCapabilities(bool half = false) {
+    BackendCapabilities capabilities;
+    for (uint32_t pass = 0; pass < kPassCount; ++pass) {
+        capabilities.tables[pass] = shaders::glsl::findPassTable(kPassNames[pass]);
+    }
+    capabilities.half = half;
+    return capabilities;
+}
 
 class RecordingContext final : public BackendContext {
 public:
@@ -24,14 +34,16 @@ private:
 
 class RecordingBackend final : public FfxDofBackend_T {
 public:
-    FfxDofErrorCode createContext(const ContextConfig& config, std::unique_ptr<BackendContext>* out) override {
-        configs.push_back(config);
+    BackendCapabilities capabilities() const override { return offered; }
+    FfxDofErrorCode createContext(const ContextPlan& plan, std::unique_ptr<BackendContext>* out) override {
+        plans.push_back(plan);
         if (failCreation) return fail(FFX_DOF_ERROR_UNSUPPORTED, "recording backend told to fail");
         *out = std::make_unique<RecordingContext>(&dispatches);
         return FFX_DOF_OK;
     }
+    BackendCapabilities offered = glslCapabilities();
     bool failCreation = false;
-    std::vector<ContextConfig> configs;
+    std::vector<ContextPlan> plans;
     std::vector<DispatchPlan> dispatches;
 };
 

@@ -1,23 +1,41 @@
-// Dispatch planning: constants and workgroup counts for awkward sizes (rounding must be symmetric and
-// cover every pixel, tile and half-resolution texel exactly once).
-#include "ffx_dof_context.h"
+// Planning: the context plan (permutations, image sizes, slot map, each pass's reads and writes from
+// the real GLSL tables' reflection) and the per-dispatch constants and workgroup counts for awkward
+// sizes (rounding must be symmetric and cover every pixel, tile and half-resolution texel exactly once).
+#include "fake_backend.h"
+#include "ffx_dof_plan.h"
 
 #include <catch2/catch.hpp>
+
+#include <string>
 
 using namespace ffxdof;
 
 namespace {
 
-DispatchPlan plan(uint32_t width, uint32_t height, uint32_t flags = 0, float cocLimitFactor = 0.05f) {
+ContextPlan contextPlan(uint32_t width, uint32_t height, uint32_t flags = 0, float cocLimitFactor = 0.05f,
+                        bool half = false) {
     ContextConfig config;
     config.resolution = {width, height};
     config.flags = flags;
     config.quality = 10;
     config.cocLimitFactor = cocLimitFactor;
+    ContextPlan plan;
+    REQUIRE(buildContextPlan(config, testing::glslCapabilities(half), &plan) == FFX_DOF_OK);
+    return plan;
+}
+
+struct Planned {
+    ContextPlan context;
+    DispatchPlan dispatch;
+};
+
+Planned plan(uint32_t width, uint32_t height, uint32_t flags = 0, float cocLimitFactor = 0.05f) {
+    Planned planned{contextPlan(width, height, flags, cocLimitFactor), {}};
     FfxDofDispatchDescription dispatch{};
     dispatch.cocScale = -3.0f;
     dispatch.cocBias = 2.0f;
-    return planDispatch(config, dispatch, 7);
+    planned.dispatch = planDispatch(planned.context, dispatch, 7);
+    return planned;
 }
 
 uint32_t ceilDiv(uint32_t a, uint32_t b) { return (a + b - 1) / b; }
@@ -27,8 +45,8 @@ uint32_t ceilDiv(uint32_t a, uint32_t b) { return (a + b - 1) / b; }
 TEST_CASE("half resolution and tile counts round up in both directions") {
     const auto [width, height] = GENERATE(table<uint32_t, uint32_t>(
         {{1, 1}, {7, 5}, {16, 16}, {17, 15}, {641, 479}, {1920, 1080}, {4096, 2160}, {16384, 3}}));
-    const DispatchPlan p = plan(width, height);
-    const FfxDofConstants& c = p.constants;
+    const Planned p = plan(width, height);
+    const FfxDofConstants& c = p.dispatch.constants;
     CHECK(c.fullSize.x == width);
     CHECK(c.fullSize.y == height);
     CHECK(c.halfSize.x == (width + 1) / 2);
@@ -51,7 +69,7 @@ TEST_CASE("half resolution and tile counts round up in both directions") {
     };
     for (const auto& pass : passes) {
         INFO("pass " << kPassNames[uint32_t(pass.pass)] << " at " << width << "x" << height);
-        const PassGrid grid = p.passes[uint32_t(pass.pass)];
+        const PassGrid grid = p.context.passes[uint32_t(pass.pass)].groups;
         CHECK(grid.x * pass.extent >= pass.domainWidth);
         CHECK(grid.y * pass.extent >= pass.domainHeight);
         CHECK((grid.x - 1) * pass.extent < pass.domainWidth);
@@ -61,22 +79,104 @@ TEST_CASE("half resolution and tile counts round up in both directions") {
 }
 
 TEST_CASE("the CoC limit is the factor times the height, in half-resolution pixels") {
-    CHECK(plan(1920, 1080, 0, 0.05f).constants.cocLimit == Approx(27.0f));
-    CHECK(plan(1920, 1080, 0, 0.01f).constants.cocLimit == Approx(5.4f));
-    CHECK(plan(1920, 1080, 0, 0.0f).constants.cocLimit == 0.0f);
+    CHECK(plan(1920, 1080, 0, 0.05f).dispatch.constants.cocLimit == Approx(27.0f));
+    CHECK(plan(1920, 1080, 0, 0.01f).dispatch.constants.cocLimit == Approx(5.4f));
+    CHECK(plan(1920, 1080, 0, 0.0f).dispatch.constants.cocLimit == 0.0f);
 }
 
-TEST_CASE("flags select the permutation options") {
-    CHECK(plan(64, 64).options.reverseDepth == 0);
-    CHECK(plan(64, 64).options.ringMergeLog == 1);
-    CHECK(plan(64, 64).options.combineInPlace == 0);
-    CHECK(plan(64, 64, FFX_DOF_REVERSE_DEPTH).options.reverseDepth == 1);
-    CHECK(plan(64, 64, FFX_DOF_DISABLE_RING_MERGE).options.ringMergeLog == 0);
-    CHECK(plan(64, 64, FFX_DOF_OUTPUT_PRE_INIT).options.combineInPlace == 1);
+TEST_CASE("flags select the permutation axes of the same name and sense") {
+    CHECK(contextPlan(64, 64).axes.reverseDepth == 0);
+    CHECK(contextPlan(64, 64).axes.disableRingMerge == 0);
+    CHECK(contextPlan(64, 64).axes.outputPreInit == 0);
+    CHECK(contextPlan(64, 64, FFX_DOF_REVERSE_DEPTH).axes.reverseDepth == 1);
+    CHECK(contextPlan(64, 64, FFX_DOF_DISABLE_RING_MERGE).axes.disableRingMerge == 1);
+    CHECK(contextPlan(64, 64, FFX_DOF_OUTPUT_PRE_INIT).axes.outputPreInit == 1);
+    CHECK(contextPlan(64, 64, 0, 0.05f, true).axes.half == 1);
+}
+
+TEST_CASE("each pass runs the permutation of the context's axes") {
+    const uint32_t flags =
+        GENERATE(0u, uint32_t(FFX_DOF_REVERSE_DEPTH | FFX_DOF_DISABLE_RING_MERGE), uint32_t(FFX_DOF_OUTPUT_PRE_INIT));
+    const bool half = GENERATE(false, true);
+    const ContextPlan plan = contextPlan(64, 48, flags, 0.05f, half);
+    for (uint32_t p = 0; p < kPassCount; ++p) {
+        const PlannedPass& pass = plan.passes[p];
+        INFO("pass " << kPassNames[p]);
+        REQUIRE(pass.table != nullptr);
+        CHECK(std::string(pass.table->pass) == kPassNames[p]);
+        for (const shaders::Define& define : shaders::permutationDefines(*pass.table, pass.permutationIndex)) {
+            uint32_t expected = 99;
+            for (uint32_t a = 0; a < kAxisCount; ++a) {
+                if (define.first == kAxisMacros[a]) expected = axisValue(plan.axes, Axis(a));
+            }
+            CHECK(define.second == expected);
+        }
+        CHECK(pass.blob == &pass.table->blobs[pass.table->permutationToBlob[pass.permutationIndex]]);
+    }
+}
+
+TEST_CASE("the passes' reflected reads and writes form the pipeline's data flow") {
+    const uint32_t flags = GENERATE(0u, uint32_t(FFX_DOF_OUTPUT_PRE_INIT));
+    const ContextPlan plan = contextPlan(640, 360, flags);
+    // Every internal resource a pass reads was written by an earlier pass; the inputs are only read
+    // and the output only written (and read in place); the last pass writes the output.
+    ResourceSet written = 0;
+    for (uint32_t p = 0; p < kPassCount; ++p) {
+        const PlannedPass& pass = plan.passes[p];
+        INFO("pass " << kPassNames[p]);
+        const ResourceSet engineInputs = resourceBit(Resource::InputColor) | resourceBit(Resource::InputDepth);
+        CHECK((pass.reads & ~engineInputs & ~written) == 0);
+        CHECK((pass.writes & engineInputs) == 0);
+        written |= pass.writes;
+    }
+    CHECK(plan.passes[uint32_t(Pass::Composite)].writes & resourceBit(Resource::Output));
+    CHECK(plan.passes[uint32_t(Pass::DownsampleDepth)].reads & resourceBit(Resource::InputDepth));
+    CHECK((written & ~resourceBit(Resource::Output)) == (plan.written & ~resourceBit(Resource::Output)));
+    for (uint32_t i = 0; i < kInternalImageCount; ++i) {
+        INFO(kInternalImages[i].name);
+        CHECK(written & resourceBit(internalImageResource(i)));
+    }
+}
+
+TEST_CASE("the slot map binds each MIP slot to its level, the missing levels of a small image to its last") {
+    const ContextPlan plan = contextPlan(7, 5);  // half 4x3: 3 levels
+    for (uint32_t i = 0; i < kInternalImageCount; ++i) {
+        const InternalImageSpec& spec = kInternalImages[i];
+        const PlannedImage& image = plan.images[i];
+        INFO(spec.name);
+        CHECK(plan.sampledSlots[spec.sampledSlot].resource == internalImageResource(i));
+        CHECK(plan.sampledSlots[spec.sampledSlot].mipCount == image.mipLevels);
+        if (!spec.mipChain) continue;
+        CHECK(image.mipLevels == 3);
+        for (uint32_t level = 0; level < kMipCount; ++level) {
+            const SlotTarget& target = plan.storageImageSlots[spec.storageSlot + level];
+            CHECK(target.resource == internalImageResource(i));
+            CHECK(target.firstMip == std::min(level, 2u));
+        }
+    }
+    CHECK(plan.sampledSlots[FFX_DOF_SRV_INPUT_COLOR].resource == Resource::InputColor);
+    CHECK(plan.storageImageSlots[FFX_DOF_UAV_OUTPUT].resource == Resource::Output);
+}
+
+TEST_CASE("a backend without a pass's shaders, or without its permutation, cannot make a context") {
+    ContextConfig config;
+    config.resolution = {64, 64};
+    config.quality = 4;
+    BackendCapabilities capabilities = testing::glslCapabilities();
+    capabilities.tables[uint32_t(Pass::Blur)] = nullptr;
+    ContextPlan plan;
+    CHECK(buildContextPlan(config, capabilities, &plan) == FFX_DOF_ERROR_UNSUPPORTED);
+    CHECK(std::string(ffxDofGetLastErrorMessage()).find("blur") != std::string::npos);
+
+    // A table of another pass has other axes: the key of this pass is not in it.
+    capabilities = testing::glslCapabilities();
+    capabilities.tables[uint32_t(Pass::DownsampleColor)] = capabilities.tables[uint32_t(Pass::DownsampleDepth)];
+    CHECK(buildContextPlan(config, capabilities, &plan) == FFX_DOF_ERROR_UNSUPPORTED);
+    CHECK(std::string(ffxDofGetLastErrorMessage()).find("downsample_color") != std::string::npos);
 }
 
 TEST_CASE("per-frame values are copied into the constants") {
-    const DispatchPlan p = plan(64, 64);
+    const DispatchPlan p = plan(64, 64).dispatch;
     CHECK(p.constants.cocScale == -3.0f);
     CHECK(p.constants.cocBias == 2.0f);
     CHECK(p.constants.maxRings == 10);

@@ -43,8 +43,8 @@ std::string lastError() { return ffxDofGetLastErrorMessage(); }
 TEST_CASE_METHOD(Fixture, "a valid description creates a context and reaches the backend") {
     REQUIRE(create() == FFX_DOF_OK);
     REQUIRE(context != nullptr);
-    REQUIRE(backend->configs.size() == 1);
-    CHECK(backend->configs[0].quality == 10);
+    REQUIRE(backend->plans.size() == 1);
+    CHECK(backend->plans[0].config.quality == 10);
     CHECK(backend->liveContexts == 1);
     REQUIRE(ffxDofContextDispatch(&context, &dispatch) == FFX_DOF_OK);
     CHECK(backend->dispatches.size() == 1);
@@ -175,7 +175,7 @@ TEST_CASE_METHOD(Fixture, "in-place output is accepted with FFX_DOF_OUTPUT_PRE_I
     REQUIRE(ffxDofContextDispatch(&context, &dispatch) == FFX_DOF_OK);
     REQUIRE(backend->dispatches.size() == 1);
     CHECK(backend->dispatches[0].outputIsColor);
-    CHECK(backend->dispatches[0].options.combineInPlace == 1);
+    CHECK(backend->plans[0].axes.outputPreInit == 1);
 }
 
 TEST_CASE_METHOD(Fixture, "a destroyed context is refused everywhere, also through a stale copy of the handle") {

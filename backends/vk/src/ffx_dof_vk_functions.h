@@ -8,20 +8,11 @@
 // here, loaded with the engine's own loaders, has neither problem.
 #pragma once
 
+#include "ffx_dof_vk_util.h"
+
 #include <vulkan/vulkan.h>
 
-#include <string>
-
 namespace ffxdof::vk {
-
-// A Vulkan structure with its sType set and every other member zero. (Brace-initialising only
-// sType trips -Wmissing-field-initializers.)
-template <typename T>
-T makeInfo(VkStructureType type) {
-    T info{};
-    info.sType = type;
-    return info;
-}
 
 // X(name): every function loaded with vkGetInstanceProcAddr (physical-device queries).
 #define FFX_DOF_VK_INSTANCE_FUNCTIONS(X)   \
@@ -46,8 +37,6 @@ T makeInfo(VkStructureType type) {
     X(vkFreeMemory)                    \
     X(vkCreateImageView)               \
     X(vkDestroyImageView)              \
-    X(vkCreateSampler)                 \
-    X(vkDestroySampler)                \
     X(vkCreateDescriptorSetLayout)     \
     X(vkDestroyDescriptorSetLayout)    \
     X(vkCreatePipelineLayout)          \
@@ -82,17 +71,5 @@ struct Functions {
 // Loads every function; on failure returns the name of the first missing required one, else null.
 const char* loadFunctions(PFN_vkGetInstanceProcAddr getInstanceProcAddr, PFN_vkGetDeviceProcAddr getDeviceProcAddr,
                           VkInstance instance, VkDevice device, Functions* functions);
-
-// "VK_ERROR_OUT_OF_DEVICE_MEMORY" for messages.
-const char* resultName(VkResult result);
-// "VK_FORMAT_R16G16B16A16_SFLOAT" for the formats ffx-dof knows, "VkFormat 123" for others.
-std::string formatName(VkFormat format);
-// "VK_IMAGE_LAYOUT_GENERAL" and so on, "VkImageLayout 123" for unknown values.
-std::string layoutName(VkImageLayout layout);
-// Depth formats read through a depth-aspect view (D32, D24S8, D16).
-bool isDepthAspectFormat(VkFormat format);
-// The engine formats ffx-dof accepts (docs/integration-vulkan.md): color and output, and depth.
-bool isColorFormat(VkFormat format);
-bool isDepthFormat(VkFormat format);
 
 }  // namespace ffxdof::vk

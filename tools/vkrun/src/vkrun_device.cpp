@@ -1,6 +1,6 @@
 // The harness's Vulkan instance and device, and images with host upload/read-back.
 // It links the Vulkan loader directly: it is an application, not a library inside an engine.
-#include "ffx_dof_passes.h"
+#include "ffx_dof_pass_list.h"
 #include "vkrun_internal.h"
 
 #include <cstdio>

@@ -1,7 +1,7 @@
 // Internals of ffx_dof_vkrun shared by its source files and its tests.
 #pragma once
 
-#include "ffx_dof_vk_functions.h"  // makeInfo, formatName, isDepthAspectFormat: shared with the backend
+#include "ffx_dof_vk_util.h"  // makeInfo, formatName, isDepthAspectFormat: shared with the backend
 #include "ffx_dof_vkrun.h"
 
 #include <cstdint>

@@ -1,0 +1,295 @@
+// Creating a Vulkan context from its plan: images, pipelines, descriptor sets (the internal
+// resources written once, here).
+#include "ffx_dof_vk_context.h"
+
+#include "ffx_dof_vk_internal_images.h"
+
+#include <string>
+
+namespace ffxdof::vk {
+namespace {
+
+uint32_t bitCount(uint32_t bits) {
+    uint32_t count = 0;
+    for (; bits; bits &= bits - 1) ++count;
+    return count;
+}
+
+// Vulkan binding numbers of the slot classes (ffx_dof_resources.h): class base + slot, set 0.
+struct SlotClass {
+    VkDescriptorType type;
+    uint32_t base;
+    uint32_t PlannedPass::*slots;
+};
+constexpr SlotClass kSlotClasses[] = {
+    {VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE, FFX_DOF_SRV_BASE, &PlannedPass::sampledSlots},
+    {VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, FFX_DOF_UAV_IMAGE_BASE, &PlannedPass::storageSlots},
+    {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, FFX_DOF_UAV_BUFFER_BASE, &PlannedPass::bufferSlots},
+};
+
+}  // namespace
+
+ContextVK::~ContextVK() {
+    const Functions& fn = backend_.fn;
+    const VkDevice device = backend_.device;
+    const VkAllocationCallbacks* allocator = backend_.allocator;
+    fn.vkDestroyDescriptorPool(device, descriptorPool_, allocator);
+    for (uint32_t pass = 0; pass < kPassCount; ++pass) {
+        fn.vkDestroyPipeline(device, pipelines_[pass], allocator);
+        fn.vkDestroyPipelineLayout(device, pipelineLayouts_[pass], allocator);
+        fn.vkDestroyDescriptorSetLayout(device, setLayouts_[pass], allocator);
+    }
+    for (InternalImage& image : images_) {
+        for (VkImageView view : image.level) fn.vkDestroyImageView(device, view, allocator);
+        fn.vkDestroyImageView(device, image.allLevels, allocator);
+        fn.vkDestroyImage(device, image.image, allocator);
+    }
+    fn.vkFreeMemory(device, imageMemory_, allocator);
+    fn.vkDestroyBuffer(device, globals_, allocator);
+    fn.vkFreeMemory(device, globalsMemory_, allocator);
+}
+
+FfxDofErrorCode ContextVK::create() {
+    FfxDofErrorCode result = createImages();
+    if (result == FFX_DOF_OK) result = createGlobals();
+    if (result == FFX_DOF_OK) result = createPipelines();
+    if (result == FFX_DOF_OK) result = createDescriptors();
+    return result;
+}
+
+FfxDofErrorCode ContextVK::createImages() {
+    const Functions& fn = backend_.fn;
+    const VkDevice device = backend_.device;
+    const VkAllocationCallbacks* allocator = backend_.allocator;
+
+    // All images share one allocation: they live and die together with the context.
+    std::array<VkMemoryRequirements, kInternalImageCount> requirements{};
+    uint32_t typeBits = ~0u;
+    for (uint32_t i = 0; i < kInternalImageCount; ++i) {
+        const PlannedImage& planned = plan_.images[i];
+        const VkFormat format = toVkFormat(planned.spec->format);
+        constexpr VkFormatFeatureFlags kNeeded =
+            VK_FORMAT_FEATURE_SAMPLED_IMAGE_BIT | VK_FORMAT_FEATURE_STORAGE_IMAGE_BIT;
+        if ((formats_.optimalFeatures(format) & kNeeded) != kNeeded) {
+            return fail(FFX_DOF_ERROR_UNSUPPORTED, "the device cannot sample and store %s, the format of %s",
+                        formatName(format).c_str(), planned.spec->name);
+        }
+        auto info = makeInfo<VkImageCreateInfo>(VK_STRUCTURE_TYPE_IMAGE_CREATE_INFO);
+        info.imageType = VK_IMAGE_TYPE_2D;
+        info.format = format;
+        info.extent = {planned.width, planned.height, 1};
+        info.mipLevels = planned.mipLevels;
+        info.arrayLayers = 1;
+        info.samples = VK_SAMPLE_COUNT_1_BIT;
+        info.tiling = VK_IMAGE_TILING_OPTIMAL;
+        info.usage = VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_STORAGE_BIT;
+        info.sharingMode = VK_SHARING_MODE_EXCLUSIVE;
+        info.initialLayout = VK_IMAGE_LAYOUT_UNDEFINED;
+        const std::string what = std::string("vkCreateImage (") + planned.spec->name + ")";
+        FFX_DOF_VK_CHECK(fn.vkCreateImage(device, &info, allocator, &images_[i].image), what.c_str());
+        fn.vkGetImageMemoryRequirements(device, images_[i].image, &requirements[i]);
+        typeBits &= requirements[i].memoryTypeBits;
+    }
+
+    std::array<VkDeviceSize, kInternalImageCount> offsets{};
+    VkDeviceSize total = 0;
+    for (uint32_t i = 0; i < kInternalImageCount; ++i) {
+        const VkDeviceSize alignment = requirements[i].alignment;
+        offsets[i] = (total + alignment - 1) / alignment * alignment;
+        total = offsets[i] + requirements[i].size;
+        memoryUsage_.totalUsageInBytes += requirements[i].size;
+    }
+    // Every image is rewritten before it is read in each dispatch.
+    memoryUsage_.aliasableUsageInBytes = memoryUsage_.totalUsageInBytes;
+
+    auto allocation = makeInfo<VkMemoryAllocateInfo>(VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO);
+    allocation.allocationSize = total;
+    if (!backend_.findMemoryType(typeBits, &allocation.memoryTypeIndex)) {
+        return fail(FFX_DOF_ERROR_UNSUPPORTED, "no memory type can hold all internal images (type bits 0x%x)",
+                    typeBits);
+    }
+    FFX_DOF_VK_CHECK(fn.vkAllocateMemory(device, &allocation, allocator, &imageMemory_),
+                     "vkAllocateMemory (internal images)");
+
+    for (uint32_t i = 0; i < kInternalImageCount; ++i) {
+        InternalImage& image = images_[i];
+        const PlannedImage& planned = plan_.images[i];
+        FFX_DOF_VK_CHECK(fn.vkBindImageMemory(device, image.image, imageMemory_, offsets[i]), "vkBindImageMemory");
+        auto view = makeInfo<VkImageViewCreateInfo>(VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO);
+        view.image = image.image;
+        view.viewType = VK_IMAGE_VIEW_TYPE_2D;
+        view.format = toVkFormat(planned.spec->format);
+        view.subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, 0, planned.mipLevels, 0, 1};
+        FFX_DOF_VK_CHECK(fn.vkCreateImageView(device, &view, allocator, &image.allLevels), "vkCreateImageView");
+        for (uint32_t level = 0; level < planned.mipLevels; ++level) {
+            view.subresourceRange.baseMipLevel = level;
+            view.subresourceRange.levelCount = 1;
+            FFX_DOF_VK_CHECK(fn.vkCreateImageView(device, &view, allocator, &image.level[level]), "vkCreateImageView");
+        }
+    }
+    return FFX_DOF_OK;
+}
+
+FfxDofErrorCode ContextVK::createGlobals() {
+    const Functions& fn = backend_.fn;
+    const VkDevice device = backend_.device;
+    auto bufferInfo = makeInfo<VkBufferCreateInfo>(VK_STRUCTURE_TYPE_BUFFER_CREATE_INFO);
+    bufferInfo.size = kGlobalsBufferBytes;
+    bufferInfo.usage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT;
+    bufferInfo.sharingMode = VK_SHARING_MODE_EXCLUSIVE;
+    FFX_DOF_VK_CHECK(fn.vkCreateBuffer(device, &bufferInfo, backend_.allocator, &globals_), "vkCreateBuffer (GLOBALS)");
+    VkMemoryRequirements requirements{};
+    fn.vkGetBufferMemoryRequirements(device, globals_, &requirements);
+    memoryUsage_.totalUsageInBytes += requirements.size;
+    auto allocation = makeInfo<VkMemoryAllocateInfo>(VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO);
+    allocation.allocationSize = requirements.size;
+    if (!backend_.findMemoryType(requirements.memoryTypeBits, &allocation.memoryTypeIndex)) {
+        return fail(FFX_DOF_ERROR_UNSUPPORTED, "no memory type can hold the GLOBALS buffer");
+    }
+    FFX_DOF_VK_CHECK(fn.vkAllocateMemory(device, &allocation, backend_.allocator, &globalsMemory_),
+                     "vkAllocateMemory (GLOBALS)");
+    FFX_DOF_VK_CHECK(fn.vkBindBufferMemory(device, globals_, globalsMemory_, 0), "vkBindBufferMemory");
+    return FFX_DOF_OK;
+}
+
+FfxDofErrorCode ContextVK::createPipelines() {
+    const Functions& fn = backend_.fn;
+    const VkDevice device = backend_.device;
+    const VkAllocationCallbacks* allocator = backend_.allocator;
+    for (uint32_t pass = 0; pass < kPassCount; ++pass) {
+        const PlannedPass& planned = plan_.passes[pass];
+        std::vector<VkDescriptorSetLayoutBinding> bindings;
+        for (const SlotClass& slotClass : kSlotClasses) {
+            const uint32_t slots = planned.*slotClass.slots;
+            for (uint32_t slot = 0; slot < 32; ++slot) {
+                if (!(slots & (1u << slot))) continue;
+                VkDescriptorSetLayoutBinding binding{};
+                binding.binding = slotClass.base + slot;
+                binding.descriptorType = slotClass.type;
+                binding.descriptorCount = 1;
+                binding.stageFlags = VK_SHADER_STAGE_COMPUTE_BIT;
+                bindings.push_back(binding);
+            }
+        }
+        auto setLayoutInfo =
+            makeInfo<VkDescriptorSetLayoutCreateInfo>(VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO);
+        setLayoutInfo.bindingCount = uint32_t(bindings.size());
+        setLayoutInfo.pBindings = bindings.data();
+        FFX_DOF_VK_CHECK(fn.vkCreateDescriptorSetLayout(device, &setLayoutInfo, allocator, &setLayouts_[pass]),
+                         "vkCreateDescriptorSetLayout");
+
+        const VkPushConstantRange pushRange{VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof(FfxDofConstants)};
+        auto layoutInfo = makeInfo<VkPipelineLayoutCreateInfo>(VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO);
+        layoutInfo.setLayoutCount = 1;
+        layoutInfo.pSetLayouts = &setLayouts_[pass];
+        layoutInfo.pushConstantRangeCount = 1;
+        layoutInfo.pPushConstantRanges = &pushRange;
+        FFX_DOF_VK_CHECK(fn.vkCreatePipelineLayout(device, &layoutInfo, allocator, &pipelineLayouts_[pass]),
+                         "vkCreatePipelineLayout");
+
+        auto moduleInfo = makeInfo<VkShaderModuleCreateInfo>(VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO);
+        moduleInfo.codeSize = planned.blob->wordCount * sizeof(uint32_t);
+        moduleInfo.pCode = planned.blob->words;
+        VkShaderModule module = VK_NULL_HANDLE;
+        FFX_DOF_VK_CHECK(fn.vkCreateShaderModule(device, &moduleInfo, allocator, &module), "vkCreateShaderModule");
+
+        auto subgroupSize = makeInfo<VkPipelineShaderStageRequiredSubgroupSizeCreateInfo>(
+            VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_REQUIRED_SUBGROUP_SIZE_CREATE_INFO);
+        subgroupSize.requiredSubgroupSize = 64;
+        auto pipelineInfo = makeInfo<VkComputePipelineCreateInfo>(VK_STRUCTURE_TYPE_COMPUTE_PIPELINE_CREATE_INFO);
+        pipelineInfo.stage.sType = VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO;
+        pipelineInfo.stage.stage = VK_SHADER_STAGE_COMPUTE_BIT;
+        pipelineInfo.stage.module = module;
+        pipelineInfo.stage.pName = "main";
+        if (plan_.axes.wave64) {
+            // The wave64 shaders assume every subgroup is 64 lanes wide and full.
+            pipelineInfo.stage.pNext = &subgroupSize;
+            pipelineInfo.stage.flags = VK_PIPELINE_SHADER_STAGE_CREATE_REQUIRE_FULL_SUBGROUPS_BIT;
+        }
+        pipelineInfo.layout = pipelineLayouts_[pass];
+        const VkResult created =
+            fn.vkCreateComputePipelines(device, backend_.pipelineCache, 1, &pipelineInfo, allocator, &pipelines_[pass]);
+        fn.vkDestroyShaderModule(device, module, allocator);
+        if (created != VK_SUCCESS) {
+            const std::string what = std::string("vkCreateComputePipelines (") + kPassNames[pass] + ")";
+            return failVk(created, what.c_str());
+        }
+    }
+    return FFX_DOF_OK;
+}
+
+FfxDofErrorCode ContextVK::createDescriptors() {
+    const Functions& fn = backend_.fn;
+    const uint32_t frames = backend_.framesInFlight;
+    std::vector<VkDescriptorPoolSize> sizes;
+    for (const SlotClass& slotClass : kSlotClasses) {
+        uint32_t count = 0;
+        for (const PlannedPass& pass : plan_.passes) count += bitCount(pass.*slotClass.slots);
+        if (count) sizes.push_back({slotClass.type, count * frames});
+    }
+    auto poolInfo = makeInfo<VkDescriptorPoolCreateInfo>(VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO);
+    poolInfo.maxSets = frames * kPassCount;
+    poolInfo.poolSizeCount = uint32_t(sizes.size());
+    poolInfo.pPoolSizes = sizes.data();
+    FFX_DOF_VK_CHECK(fn.vkCreateDescriptorPool(backend_.device, &poolInfo, backend_.allocator, &descriptorPool_),
+                     "vkCreateDescriptorPool");
+    sets_.resize(frames);
+    engineDescriptors_.resize(frames);
+    for (uint32_t slot = 0; slot < frames; ++slot) {
+        auto allocateInfo = makeInfo<VkDescriptorSetAllocateInfo>(VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO);
+        allocateInfo.descriptorPool = descriptorPool_;
+        allocateInfo.descriptorSetCount = kPassCount;
+        allocateInfo.pSetLayouts = setLayouts_.data();
+        FFX_DOF_VK_CHECK(fn.vkAllocateDescriptorSets(backend_.device, &allocateInfo, sets_[slot].data()),
+                         "vkAllocateDescriptorSets");
+    }
+    writeInternalDescriptors();
+    return FFX_DOF_OK;
+}
+
+VkImageView ContextVK::internalView(const SlotTarget& target, bool storage) const {
+    const InternalImage& image = images_[internalImageIndex(target.resource)];
+    return storage ? image.level[target.firstMip] : image.allLevels;
+}
+
+void ContextVK::writeInternalDescriptors() {
+    // Every binding of an internal resource, in every ring slot: they never change. The engine's
+    // images are written by the dispatches that see them (updateEngineDescriptors).
+    std::vector<VkDescriptorImageInfo> imageInfos;
+    std::vector<VkWriteDescriptorSet> writes;
+    imageInfos.reserve(sets_.size() * kPassCount * (kSampledSlotCount + kStorageImageSlotCount));
+    const VkDescriptorBufferInfo globalsInfo{globals_, 0, kGlobalsBufferBytes};
+    for (const auto& ringSlot : sets_) {
+        for (uint32_t pass = 0; pass < kPassCount; ++pass) {
+            const PlannedPass& planned = plan_.passes[pass];
+            for (const SlotClass& slotClass : kSlotClasses) {
+                const uint32_t slots = planned.*slotClass.slots;
+                for (uint32_t slot = 0; slot < 32; ++slot) {
+                    if (!(slots & (1u << slot))) continue;
+                    const bool storageImage = slotClass.type == VK_DESCRIPTOR_TYPE_STORAGE_IMAGE;
+                    const SlotTarget& target = slotClass.type == VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE
+                                                   ? plan_.sampledSlots[slot]
+                                               : storageImage ? plan_.storageImageSlots[slot]
+                                                              : plan_.storageBufferSlots[slot];
+                    if (!isInternalImage(target.resource) && target.resource != Resource::Globals) continue;
+                    auto write = makeInfo<VkWriteDescriptorSet>(VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET);
+                    write.dstSet = ringSlot[pass];
+                    write.dstBinding = slotClass.base + slot;
+                    write.descriptorCount = 1;
+                    write.descriptorType = slotClass.type;
+                    if (target.resource == Resource::Globals) {
+                        write.pBufferInfo = &globalsInfo;
+                    } else {
+                        imageInfos.push_back(
+                            {VK_NULL_HANDLE, internalView(target, storageImage), VK_IMAGE_LAYOUT_GENERAL});
+                        write.pImageInfo = &imageInfos.back();
+                    }
+                    writes.push_back(write);
+                }
+            }
+        }
+    }
+    backend_.fn.vkUpdateDescriptorSets(backend_.device, uint32_t(writes.size()), writes.data(), 0, nullptr);
+}
+
+}  // namespace ffxdof::vk

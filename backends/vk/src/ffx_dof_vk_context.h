@@ -1,0 +1,81 @@
+// A Vulkan context: the internal images and buffer of its plan, one pipeline per pass, descriptor
+// sets per frame in flight, the cache of engine-image views, and the recording of a dispatch.
+#pragma once
+
+#include "ffx_dof_vk_backend.h"
+#include "ffx_dof_vk_engine_images.h"
+
+#include <array>
+#include <vector>
+
+namespace ffxdof::vk {
+
+class ContextVK final : public BackendContext {
+public:
+    ContextVK(BackendVK& backend, const ContextPlan& plan)
+        : backend_(backend), plan_(plan), formats_(backend), views_(backend) {}
+    ~ContextVK() override;
+
+    FfxDofErrorCode create();
+    FfxDofErrorCode dispatch(const DispatchPlan& dispatch) override;
+    FfxDofMemoryUsage memoryUsage() const override { return memoryUsage_; }
+
+    void setTimestampQueries(VkQueryPool pool, uint32_t firstQuery) {
+        queryPool_ = pool;
+        firstQuery_ = firstQuery;
+    }
+    // The engine is about to destroy `image`: forget its views (ffxDofContextReleaseImageVK).
+    void releaseImage(VkImage image);
+    size_t cachedViewCount() const { return views_.size(); }
+
+private:
+    struct InternalImage {
+        VkImage image = VK_NULL_HANDLE;
+        VkImageView allLevels = VK_NULL_HANDLE;
+        std::array<VkImageView, kMipCount> level{};
+    };
+    // The engine views a ring slot's descriptor sets hold (VK_NULL_HANDLE: not written yet).
+    struct EngineDescriptors {
+        VkImageView color = VK_NULL_HANDLE, depth = VK_NULL_HANDLE, output = VK_NULL_HANDLE;
+        VkImageLayout colorLayout = VK_IMAGE_LAYOUT_UNDEFINED, depthLayout = VK_IMAGE_LAYOUT_UNDEFINED;
+    };
+
+    // Creation (ffx_dof_vk_context.cpp).
+    FfxDofErrorCode createImages();
+    FfxDofErrorCode createGlobals();
+    FfxDofErrorCode createPipelines();
+    FfxDofErrorCode createDescriptors();
+    void writeInternalDescriptors();
+    VkImageView internalView(const SlotTarget& target, bool storage) const;
+
+    // Recording (ffx_dof_vk_record.cpp).
+    FfxDofErrorCode updateEngineDescriptors(uint32_t ringSlot, const EngineImages& images, uint64_t dispatchIndex);
+    void forgetViews(const std::vector<VkImageView>& destroyed);
+    void recordInternalBarrier(VkCommandBuffer commandBuffer) const;
+    void recordEngineBarriers(VkCommandBuffer commandBuffer, const EngineImages& images, bool toEffect,
+                              bool outputIsColor) const;
+
+    BackendVK& backend_;
+    const ContextPlan& plan_;
+    std::array<InternalImage, kInternalImageCount> images_{};
+    VkDeviceMemory imageMemory_ = VK_NULL_HANDLE;
+    VkBuffer globals_ = VK_NULL_HANDLE;
+    VkDeviceMemory globalsMemory_ = VK_NULL_HANDLE;
+    FfxDofMemoryUsage memoryUsage_{};
+
+    std::array<VkDescriptorSetLayout, kPassCount> setLayouts_{};
+    std::array<VkPipelineLayout, kPassCount> pipelineLayouts_{};
+    std::array<VkPipeline, kPassCount> pipelines_{};
+
+    VkDescriptorPool descriptorPool_ = VK_NULL_HANDLE;
+    std::vector<std::array<VkDescriptorSet, kPassCount>> sets_;  // [ring slot][pass]
+    std::vector<EngineDescriptors> engineDescriptors_;           // [ring slot]
+    FormatSupport formats_;
+    EngineViewCache views_;
+    uint64_t dispatchCount_ = 0;
+
+    VkQueryPool queryPool_ = VK_NULL_HANDLE;
+    uint32_t firstQuery_ = 0;
+};
+
+}  // namespace ffxdof::vk

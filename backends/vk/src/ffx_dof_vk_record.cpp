@@ -1,0 +1,205 @@
+// Recording one dispatch: the engine images' descriptors (only when they changed), the barriers the
+// plan's read and write sets call for, and the passes.
+#include "ffx_dof_vk_context.h"
+
+#include <algorithm>
+
+namespace ffxdof::vk {
+namespace {
+
+constexpr VkAccessFlags kShaderAccess = VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT;
+
+}  // namespace
+
+void ContextVK::forgetViews(const std::vector<VkImageView>& destroyed) {
+    for (EngineDescriptors& slot : engineDescriptors_) {
+        for (VkImageView* view : {&slot.color, &slot.depth, &slot.output}) {
+            if (std::find(destroyed.begin(), destroyed.end(), *view) != destroyed.end()) *view = VK_NULL_HANDLE;
+        }
+    }
+}
+
+void ContextVK::releaseImage(VkImage image) {
+    std::vector<VkImageView> destroyed;
+    views_.release(image, &destroyed);
+    forgetViews(destroyed);
+}
+
+FfxDofErrorCode ContextVK::updateEngineDescriptors(uint32_t ringSlot, const EngineImages& images,
+                                                   uint64_t dispatchIndex) {
+    EngineDescriptors wanted;
+    if (const FfxDofErrorCode status = views_.view(images.color, dispatchIndex, &wanted.color); status != FFX_DOF_OK)
+        return status;
+    if (const FfxDofErrorCode status = views_.view(images.depth, dispatchIndex, &wanted.depth); status != FFX_DOF_OK)
+        return status;
+    if (const FfxDofErrorCode status = views_.view(images.output, dispatchIndex, &wanted.output); status != FFX_DOF_OK)
+        return status;
+    wanted.colorLayout = images.color.during;
+    wanted.depthLayout = images.depth.during;
+    std::vector<VkImageView> destroyed;
+    views_.trim(dispatchIndex, &destroyed);
+    forgetViews(destroyed);
+
+    EngineDescriptors& held = engineDescriptors_[ringSlot];
+    const bool colorChanged = held.color != wanted.color || held.colorLayout != wanted.colorLayout;
+    const bool depthChanged = held.depth != wanted.depth || held.depthLayout != wanted.depthLayout;
+    const bool outputChanged = held.output != wanted.output;
+    if (!colorChanged && !depthChanged && !outputChanged) return FFX_DOF_OK;
+
+    std::array<VkDescriptorImageInfo, kPassCount * 3> imageInfos{};
+    std::array<VkWriteDescriptorSet, kPassCount * 3> writes{};
+    uint32_t writeCount = 0;
+    const auto write = [&](uint32_t pass, uint32_t binding, VkDescriptorType type, VkImageView view,
+                           VkImageLayout layout) {
+        imageInfos[writeCount] = {VK_NULL_HANDLE, view, layout};
+        VkWriteDescriptorSet& w = writes[writeCount];
+        w = makeInfo<VkWriteDescriptorSet>(VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET);
+        w.dstSet = sets_[ringSlot][pass];
+        w.dstBinding = binding;
+        w.descriptorCount = 1;
+        w.descriptorType = type;
+        w.pImageInfo = &imageInfos[writeCount];
+        ++writeCount;
+    };
+    for (uint32_t pass = 0; pass < kPassCount; ++pass) {
+        const PlannedPass& planned = plan_.passes[pass];
+        if (colorChanged && (planned.sampledSlots & (1u << FFX_DOF_SRV_INPUT_COLOR))) {
+            write(pass, FFX_DOF_SRV_BASE + FFX_DOF_SRV_INPUT_COLOR, VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE, wanted.color,
+                  wanted.colorLayout);
+        }
+        if (depthChanged && (planned.sampledSlots & (1u << FFX_DOF_SRV_INPUT_DEPTH))) {
+            write(pass, FFX_DOF_SRV_BASE + FFX_DOF_SRV_INPUT_DEPTH, VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE, wanted.depth,
+                  wanted.depthLayout);
+        }
+        if (outputChanged && (planned.storageSlots & (1u << FFX_DOF_UAV_OUTPUT))) {
+            write(pass, FFX_DOF_UAV_IMAGE_BASE + FFX_DOF_UAV_OUTPUT, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, wanted.output,
+                  VK_IMAGE_LAYOUT_GENERAL);
+        }
+    }
+    backend_.fn.vkUpdateDescriptorSets(backend_.device, writeCount, writes.data(), 0, nullptr);
+    held = wanted;
+    return FFX_DOF_OK;
+}
+
+void ContextVK::recordInternalBarrier(VkCommandBuffer commandBuffer) const {
+    const Functions& fn = backend_.fn;
+    if (dispatchCount_ == 0) {
+        // First use: the internal images from UNDEFINED into GENERAL, GLOBALS zeroed.
+        std::array<VkImageMemoryBarrier, kInternalImageCount> toGeneral{};
+        for (uint32_t i = 0; i < kInternalImageCount; ++i) {
+            auto& barrier = toGeneral[i];
+            barrier = makeInfo<VkImageMemoryBarrier>(VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER);
+            barrier.dstAccessMask = kShaderAccess;
+            barrier.oldLayout = VK_IMAGE_LAYOUT_UNDEFINED;
+            barrier.newLayout = VK_IMAGE_LAYOUT_GENERAL;
+            barrier.srcQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
+            barrier.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
+            barrier.image = images_[i].image;
+            barrier.subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, 0, plan_.images[i].mipLevels, 0, 1};
+        }
+        fn.vkCmdPipelineBarrier(commandBuffer, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
+                                0, 0, nullptr, 0, nullptr, uint32_t(toGeneral.size()), toGeneral.data());
+        fn.vkCmdFillBuffer(commandBuffer, globals_, 0, kGlobalsBufferBytes, 0);
+        auto zeroed = makeInfo<VkBufferMemoryBarrier>(VK_STRUCTURE_TYPE_BUFFER_MEMORY_BARRIER);
+        zeroed.srcAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT;
+        zeroed.dstAccessMask = kShaderAccess;
+        zeroed.srcQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
+        zeroed.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
+        zeroed.buffer = globals_;
+        zeroed.size = VK_WHOLE_SIZE;
+        fn.vkCmdPipelineBarrier(commandBuffer, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, 0,
+                                0, nullptr, 1, &zeroed, 0, nullptr);
+    } else if (plan_.written & plan_.touched) {
+        // The previous dispatch's writes of the internal resources before this one's accesses.
+        auto previous = makeInfo<VkMemoryBarrier>(VK_STRUCTURE_TYPE_MEMORY_BARRIER);
+        previous.srcAccessMask = VK_ACCESS_SHADER_WRITE_BIT;
+        previous.dstAccessMask = kShaderAccess;
+        fn.vkCmdPipelineBarrier(commandBuffer, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
+                                VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, 0, 1, &previous, 0, nullptr, 0, nullptr);
+    }
+}
+
+void ContextVK::recordEngineBarriers(VkCommandBuffer commandBuffer, const EngineImages& images, bool toEffect,
+                                     bool outputIsColor) const {
+    // The engine's accesses before and after are unknown, so the engine side of each barrier is
+    // ALL_COMMANDS with all memory accesses; the effect side is exactly its compute accesses.
+    std::array<VkImageMemoryBarrier, 3> barriers{};
+    uint32_t count = 0;
+    for (const EngineImageUse* use : {&images.color, &images.depth, &images.output}) {
+        if (use == &images.output && outputIsColor) continue;  // the color barrier covers it
+        VkImageMemoryBarrier& barrier = barriers[count++];
+        barrier = makeInfo<VkImageMemoryBarrier>(VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER);
+        barrier.srcAccessMask = toEffect ? VkAccessFlags(VK_ACCESS_MEMORY_WRITE_BIT) : use->access;
+        barrier.dstAccessMask =
+            toEffect ? use->access : VkAccessFlags(VK_ACCESS_MEMORY_READ_BIT | VK_ACCESS_MEMORY_WRITE_BIT);
+        barrier.oldLayout = toEffect ? use->declared : use->during;
+        barrier.newLayout = toEffect ? use->during : use->declared;
+        barrier.srcQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
+        barrier.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
+        barrier.image = use->image;
+        barrier.subresourceRange = {use->barrierAspects, 0, 1, 0, 1};
+    }
+    const VkPipelineStageFlags engineStages = VK_PIPELINE_STAGE_ALL_COMMANDS_BIT;
+    const VkPipelineStageFlags effectStages = VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT;
+    backend_.fn.vkCmdPipelineBarrier(commandBuffer, toEffect ? engineStages : effectStages,
+                                     toEffect ? effectStages : engineStages, 0, 0, nullptr, 0, nullptr, count,
+                                     barriers.data());
+}
+
+FfxDofErrorCode ContextVK::dispatch(const DispatchPlan& dispatch) {
+    EngineImages images;
+    if (const FfxDofErrorCode invalid = checkEngineImages(plan_, dispatch, &formats_, &images); invalid != FFX_DOF_OK)
+        return invalid;
+    const Functions& fn = backend_.fn;
+    const VkCommandBuffer commandBuffer = static_cast<VkCommandBuffer>(dispatch.commandList);
+
+    // This ring slot's previous dispatch was maxFramesInFlight dispatches ago: the GPU is done with it.
+    const uint32_t ringSlot = uint32_t(dispatchCount_ % backend_.framesInFlight);
+    if (const FfxDofErrorCode status = updateEngineDescriptors(ringSlot, images, dispatchCount_); status != FFX_DOF_OK)
+        return status;
+
+    const bool timed = queryPool_ != VK_NULL_HANDLE;
+    if (timed) fn.vkCmdResetQueryPool(commandBuffer, queryPool_, firstQuery_, FFX_DOF_VK_TIMESTAMP_COUNT);
+    recordInternalBarrier(commandBuffer);
+    recordEngineBarriers(commandBuffer, images, true, dispatch.outputIsColor);
+
+    FfxDofConstants constants = dispatch.constants;
+    if (images.encodeSrgb) constants.outputFlags |= FFX_DOF_OUTPUT_FLAG_ENCODE_SRGB;
+    if (timed) fn.vkCmdWriteTimestamp(commandBuffer, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, queryPool_, firstQuery_);
+
+    // A barrier before a pass that reads or writes what an earlier pass wrote, or writes what an
+    // earlier pass read, since the last barrier (the plan's sets, from the shaders' reflection).
+    ResourceSet writtenSinceBarrier = 0;
+    ResourceSet readSinceBarrier = 0;
+    for (uint32_t pass = 0; pass < kPassCount; ++pass) {
+        const PlannedPass& planned = plan_.passes[pass];
+        const ResourceSet touched = planned.reads | planned.writes;
+        if ((touched & writtenSinceBarrier) || (planned.writes & readSinceBarrier)) {
+            auto between = makeInfo<VkMemoryBarrier>(VK_STRUCTURE_TYPE_MEMORY_BARRIER);
+            between.srcAccessMask = VK_ACCESS_SHADER_WRITE_BIT;
+            between.dstAccessMask = kShaderAccess;
+            fn.vkCmdPipelineBarrier(commandBuffer, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
+                                    VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, 0, 1, &between, 0, nullptr, 0, nullptr);
+            writtenSinceBarrier = 0;
+            readSinceBarrier = 0;
+        }
+        writtenSinceBarrier |= planned.writes;
+        readSinceBarrier |= planned.reads;
+
+        fn.vkCmdBindPipeline(commandBuffer, VK_PIPELINE_BIND_POINT_COMPUTE, pipelines_[pass]);
+        fn.vkCmdBindDescriptorSets(commandBuffer, VK_PIPELINE_BIND_POINT_COMPUTE, pipelineLayouts_[pass], 0, 1,
+                                   &sets_[ringSlot][pass], 0, nullptr);
+        fn.vkCmdPushConstants(commandBuffer, pipelineLayouts_[pass], VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof(constants),
+                              &constants);
+        fn.vkCmdDispatch(commandBuffer, planned.groups.x, planned.groups.y, planned.groups.z);
+        if (timed) {
+            fn.vkCmdWriteTimestamp(commandBuffer, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, queryPool_,
+                                   firstQuery_ + 1 + pass);
+        }
+    }
+    recordEngineBarriers(commandBuffer, images, false, dispatch.outputIsColor);
+    ++dispatchCount_;
+    return FFX_DOF_OK;
+}
+
+}  // namespace ffxdof::vk

@@ -1,0 +1,176 @@
+# The pass list and the permutation axes, read from shaders_common/ffx_dof_permutations.json: the one
+# place they are written. CMake code asks ffx_dof_pass_names(); C++ includes the header that
+# ffx_dof_generate_pass_list() writes (ffx_dof_pass_list.h: enum Pass, the typed axes, the flag mapping).
+include_guard(GLOBAL)
+
+function(_ffx_dof_read_permutations json_var)
+  get_property(json_file GLOBAL PROPERTY FFX_DOF_PERMUTATIONS_JSON)
+  if(NOT json_file)
+    message(FATAL_ERROR "FFX_DOF_PERMUTATIONS_JSON is not set (shaders_common/CMakeLists.txt sets it)")
+  endif()
+  set_property(DIRECTORY APPEND PROPERTY CMAKE_CONFIGURE_DEPENDS "${json_file}")
+  file(READ "${json_file}" json)
+  set(${json_var} "${json}" PARENT_SCOPE)
+endfunction()
+
+# The pass names in pipeline order (downsample_depth;...;composite).
+function(ffx_dof_pass_names out_var)
+  _ffx_dof_read_permutations(json)
+  string(JSON pass_count LENGTH "${json}" passes)
+  set(names "")
+  math(EXPR last "${pass_count} - 1")
+  foreach(i RANGE ${last})
+    string(JSON name GET "${json}" passes ${i} name)
+    list(APPEND names ${name})
+  endforeach()
+  set(${out_var} ${names} PARENT_SCOPE)
+endfunction()
+
+# snake_case / MACRO_CASE words -> camelCase (upper_first: PascalCase).
+function(_ffx_dof_camel_case text upper_first out_var)
+  string(TOLOWER "${text}" lower)
+  string(REPLACE "_" ";" words "${lower}")
+  set(result "")
+  set(first ON)
+  foreach(word IN LISTS words)
+    if(first AND NOT upper_first)
+      string(APPEND result "${word}")
+    else()
+      string(SUBSTRING "${word}" 0 1 head)
+      string(SUBSTRING "${word}" 1 -1 tail)
+      string(TOUPPER "${head}" head)
+      string(APPEND result "${head}${tail}")
+    endif()
+    set(first OFF)
+  endforeach()
+  set(${out_var} "${result}" PARENT_SCOPE)
+endfunction()
+
+# The axis's field name: the macro without FFX_DOF_OPTION_ / FFX_, in camelCase (FFX_HALF -> half).
+function(_ffx_dof_axis_field macro out_var)
+  string(REGEX REPLACE "^FFX_DOF_OPTION_|^FFX_" "" stem "${macro}")
+  _ffx_dof_camel_case("${stem}" OFF field)
+  set(${out_var} "${field}" PARENT_SCOPE)
+endfunction()
+
+# Writes <out_dir>/ffx_dof_pass_list.h.
+function(ffx_dof_generate_pass_list out_dir)
+  _ffx_dof_read_permutations(json)
+  get_property(json_file GLOBAL PROPERTY FFX_DOF_PERMUTATIONS_JSON)
+
+  # The axes, in the order of the "axes" object.
+  string(JSON axis_count LENGTH "${json}" axes)
+  set(axis_enum "")
+  set(axis_macros "")
+  set(axis_fields "")
+  set(axis_value_cases "")
+  set(flag_assignments "")
+  set(all_macros "")
+  math(EXPR last_axis "${axis_count} - 1")
+  foreach(a RANGE ${last_axis})
+    string(JSON macro MEMBER "${json}" axes ${a})
+    string(JSON chosen_by GET "${json}" axes ${macro} chosenBy)
+    list(APPEND all_macros ${macro})
+    _ffx_dof_axis_field(${macro} field)
+    string(SUBSTRING "${field}" 0 1 head)
+    string(SUBSTRING "${field}" 1 -1 tail)
+    string(TOUPPER "${head}" head)
+    set(enumerator "${head}${tail}")
+    string(APPEND axis_enum "${enumerator}, ")
+    string(APPEND axis_macros "\"${macro}\", ")
+    if(chosen_by STREQUAL "device")
+      string(APPEND axis_fields "    uint32_t ${field} = 0;  // ${macro}: chosen by the backend's device\n")
+    elseif(chosen_by MATCHES "^FFX_DOF_[A-Z0-9_]+$")
+      string(APPEND axis_fields "    uint32_t ${field} = 0;  // ${macro}: 1 when the context has ${chosen_by}\n")
+      string(APPEND flag_assignments "    axes->${field} = (flags & ${chosen_by}) ? 1u : 0u;\n")
+    else()
+      message(FATAL_ERROR "${json_file}: axis ${macro}: chosenBy '${chosen_by}' is neither \"device\" nor a context flag")
+    endif()
+    string(APPEND axis_value_cases "        case Axis::${enumerator}: return axes.${field};\n")
+  endforeach()
+
+  # The passes and their axes.
+  string(JSON pass_count LENGTH "${json}" passes)
+  set(pass_enum "")
+  set(pass_names "")
+  set(pass_axis_rows "")
+  set(pass_axis_counts "")
+  set(pass_domains "")
+  set(pass_extents "")
+  math(EXPR last_pass "${pass_count} - 1")
+  foreach(p RANGE ${last_pass})
+    string(JSON name GET "${json}" passes ${p} name)
+    _ffx_dof_camel_case("${name}" ON enumerator)
+    string(APPEND pass_enum "${enumerator}, ")
+    string(APPEND pass_names "\"${name}\", ")
+    # Each pass's dispatch geometry is in ffx_dof_resources.h under the pass's name.
+    string(TOUPPER "${name}" upper)
+    string(APPEND pass_domains "FFX_DOF_${upper}_DOMAIN, ")
+    string(APPEND pass_extents "FFX_DOF_${upper}_GROUP_EXTENT, ")
+    string(JSON pass_axis_count LENGTH "${json}" passes ${p} axes)
+    set(row "")
+    if(pass_axis_count GREATER 0)
+      math(EXPR last "${pass_axis_count} - 1")
+      foreach(a RANGE ${last})
+        string(JSON macro MEMBER "${json}" passes ${p} axes ${a})
+        if(NOT macro IN_LIST all_macros)
+          message(FATAL_ERROR "${json_file}: pass ${name} has the axis ${macro}, which \"axes\" does not list")
+        endif()
+        _ffx_dof_axis_field(${macro} field)
+        string(SUBSTRING "${field}" 0 1 head)
+        string(SUBSTRING "${field}" 1 -1 tail)
+        string(TOUPPER "${head}" head)
+        string(APPEND row "Axis::${head}${tail}, ")
+      endforeach()
+    endif()
+    string(APPEND pass_axis_rows "    {${row}},  // ${name}\n")
+    string(APPEND pass_axis_counts "${pass_axis_count}, ")
+  endforeach()
+
+  set(content "// Generated by cmake/FfxDofPassList.cmake from shaders_common/ffx_dof_permutations.json; do not edit.
+// The passes in pipeline order and their permutation axes, typed.
+#pragma once
+
+#include \"ffx_dof.h\"
+#include \"ffx_dof_resources.h\"
+
+#include <cstdint>
+
+namespace ffxdof {
+
+// Pipeline order. The names are the shader header names (shaders_common/ffx_dof_<name>.h).
+enum class Pass : uint32_t { ${pass_enum}};
+constexpr uint32_t kPassCount = ${pass_count};
+constexpr const char* kPassNames[kPassCount] = {${pass_names}};
+// What a pass's workgroups cover (FFX_DOF_DOMAIN_*) and how much of it one workgroup covers.
+constexpr uint32_t kPassDomain[kPassCount] = {${pass_domains}};
+constexpr uint32_t kPassGroupExtent[kPassCount] = {${pass_extents}};
+
+// Every permutation axis of any pass.
+enum class Axis : uint32_t { ${axis_enum}};
+constexpr uint32_t kAxisCount = ${axis_count};
+constexpr const char* kAxisMacros[kAxisCount] = {${axis_macros}};
+
+// One value per axis: a pass uses the values of its own axes and ignores the others.
+struct PermutationAxes {
+${axis_fields}};
+
+inline uint32_t axisValue(const PermutationAxes& axes, Axis axis) {
+    switch (axis) {
+${axis_value_cases}    }
+    return 0;
+}
+
+// The axes chosen by context flags (each has the flag's name and sense).
+inline void setAxesFromContextFlags(uint32_t flags, PermutationAxes* axes) {
+${flag_assignments}}
+
+// The axes of each pass, in the order of its shader table.
+constexpr uint32_t kPassAxisCount[kPassCount] = {${pass_axis_counts}};
+constexpr Axis kPassAxes[kPassCount][kAxisCount] = {
+${pass_axis_rows}};
+
+}  // namespace ffxdof
+")
+  file(CONFIGURE OUTPUT "${out_dir}/ffx_dof_pass_list.h" CONTENT "${content}" @ONLY)
+endfunction()

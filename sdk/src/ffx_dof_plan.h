@@ -1,0 +1,110 @@
+// The plan of a context: everything the core decides once, at context creation, for a backend to
+// create and record without deciding anything itself. Private to ffx-dof.
+//
+//   backend  --BackendCapabilities-->  core (buildContextPlan)  --ContextPlan-->  backend context
+//   engine   --dispatch description--> core (checks, planDispatch) --DispatchPlan--> backend records
+#pragma once
+
+#include "ffx_dof.h"
+#include "ffx_dof_passes.h"
+#include "ffx_dof_shader_table.h"
+
+#include <cstdint>
+
+namespace ffxdof {
+
+// Everything fixed for the lifetime of a context (the FfxDofContextDescription, checked).
+struct ContextConfig {
+    FfxDofDimensions2D resolution{};
+    uint32_t flags = 0;  // FfxDofInitializationFlagBits
+    uint32_t quality = 0;
+    float cocLimitFactor = 0.0f;
+};
+
+// Every resource a pass can bind. The internal images follow kInternalImages, in its order.
+enum class Resource : uint32_t { InputColor, InputDepth, Output, Globals, FirstInternalImage };
+constexpr uint32_t kResourceCount = uint32_t(Resource::FirstInternalImage) + kInternalImageCount;
+constexpr Resource internalImageResource(uint32_t image) {
+    return Resource(uint32_t(Resource::FirstInternalImage) + image);
+}
+constexpr bool isInternalImage(Resource resource) { return resource >= Resource::FirstInternalImage; }
+constexpr uint32_t internalImageIndex(Resource resource) {
+    return uint32_t(resource) - uint32_t(Resource::FirstInternalImage);
+}
+
+// A set of resources: bit i is Resource(i).
+using ResourceSet = uint32_t;
+constexpr ResourceSet resourceBit(Resource resource) { return 1u << uint32_t(resource); }
+static_assert(kResourceCount <= 32, "ResourceSet holds one bit per resource");
+
+// What one shader slot is bound to. A storage slot of a MIP level that a small image lacks is bound
+// to its last level (aliased: the shaders write the same 1x1 value to both).
+struct SlotTarget {
+    bool used = false;  // some pass declares the slot
+    Resource resource = Resource::InputColor;
+    uint32_t firstMip = 0;
+    uint32_t mipCount = 1;  // sampled slots of a MIP chain see every level; storage slots one
+};
+
+struct PlannedImage {
+    const InternalImageSpec* spec = nullptr;
+    uint32_t width = 0, height = 0, mipLevels = 1;
+};
+
+struct PlannedPass {
+    const shaders::PassTable* table = nullptr;
+    const shaders::Blob* blob = nullptr;  // the permutation this context runs
+    uint32_t permutationIndex = 0;
+    PassGrid groups;            // workgroup counts
+    uint32_t sampledSlots = 0;  // bit i: FFX_DOF_SRV_* slot i is declared (reflected)
+    uint32_t storageSlots = 0;  // bit i: FFX_DOF_UAV_* image slot i
+    uint32_t bufferSlots = 0;   // bit i: FFX_DOF_UAV_BUFFER_* slot i
+    uint32_t pushConstantBytes = 0;
+    ResourceSet reads = 0;   // sampled
+    ResourceSet writes = 0;  // storage images and buffers (which the pass may also read)
+};
+
+// What a backend's device can run, asked once per context.
+struct BackendCapabilities {
+    const shaders::PassTable* tables[kPassCount] = {};  // nullptr: no shaders for the pass
+    bool half = false;                                  // FFX_HALF permutations usable
+    bool wave64 = false;                                // FFX_DOF_OPTION_WAVE64 permutations usable
+};
+
+struct ContextPlan {
+    ContextConfig config;
+    PermutationAxes axes;
+    PlannedImage images[kInternalImageCount];
+    PlannedPass passes[kPassCount];
+    SlotTarget sampledSlots[kSampledSlotCount];
+    SlotTarget storageImageSlots[kStorageImageSlotCount];
+    SlotTarget storageBufferSlots[kStorageBufferSlotCount];
+    // Every pass's reads | writes, and which resources some pass writes.
+    ResourceSet touched = 0;
+    ResourceSet written = 0;
+    FfxDofConstants constants{};  // the per-context part; planDispatch adds the per-frame values
+};
+
+// Builds the plan, or fails naming what the backend's tables lack (a pass, a permutation, a slot).
+FfxDofErrorCode buildContextPlan(const ContextConfig& config, const BackendCapabilities& capabilities,
+                                 ContextPlan* plan);
+
+// One dispatch, checked and planned by the core. The resources are the engine's, checked for what is
+// API-neutral (present, sized, not aliased wrongly); the backend checks formats and states.
+struct DispatchPlan {
+    FfxDofCommandList commandList = nullptr;
+    FfxDofResource color{};
+    FfxDofResource depth{};
+    FfxDofResource output{};
+    FfxDofConstants constants{};  // the backend may only add FFX_DOF_OUTPUT_FLAG_* bits
+    bool outputIsColor = false;   // in place: output and color are the same image
+};
+
+// The per-frame values added to the context's constants.
+DispatchPlan planDispatch(const ContextPlan& plan, const FfxDofDispatchDescription& dispatch, uint32_t frameIndex);
+
+// The grid, images and constants of a configuration without shader tables (for tests and tools).
+FfxDofConstants contextConstants(const ContextConfig& config);
+PassGrid passGroups(const FfxDofConstants& constants, Pass pass);
+
+}  // namespace ffxdof
