@@ -20,79 +20,6 @@ constexpr D3D_SHADER_MODEL shaderModel(uint32_t majorMinorHex) { return static_c
 constexpr D3D_SHADER_MODEL kRequiredShaderModel = shaderModel(0x62);  // native 16-bit types, wave ops
 constexpr D3D_SHADER_MODEL kWave64ShaderModel = shaderModel(0x66);    // [WaveSize(64)]
 
-// The macro names of the permutation axes (shaders_common/ffx_dof_permutations.json).
-constexpr const char* kAxisHalf = "FFX_HALF";
-constexpr const char* kAxisWave64 = "FFX_DOF_OPTION_WAVE64";
-constexpr const char* kAxisReverseDepth = "FFX_DOF_OPTION_REVERSE_DEPTH";
-constexpr const char* kAxisRingMergeLog = "FFX_DOF_OPTION_DISABLE_RING_MERGE";
-constexpr const char* kAxisCombineInPlace = "FFX_DOF_OPTION_OUTPUT_PRE_INIT";
-
-bool tableHasAxis(const shaders::PassTable& table, const char* macro) {
-    for (uint32_t a = 0; a < table.axisCount; ++a) {
-        if (std::string(table.axes[a].macro) == macro) return true;
-    }
-    return false;
-}
-
-// The value of every axis of `table`: the device axes plus the context's options.
-std::vector<shaders::Define> permutationValues(const shaders::PassTable& table, const DeviceOptions& device,
-                                               const PermutationOptions& options) {
-    const std::pair<const char*, uint32_t> all[] = {
-        {kAxisHalf, device.half ? 1u : 0u},
-        {kAxisWave64, device.wave64 ? 1u : 0u},
-        {kAxisReverseDepth, options.reverseDepth},
-        {kAxisRingMergeLog, options.ringMergeLog ? 0u : 1u},
-        {kAxisCombineInPlace, options.combineInPlace},
-    };
-    std::vector<shaders::Define> values;
-    for (const auto& [macro, value] : all) {
-        if (tableHasAxis(table, macro)) values.emplace_back(macro, value);
-    }
-    return values;
-}
-
-// Checks that every resource the pass declares has a place in the root signature, and collects
-// which slots it touches (for the barriers).
-FfxDofErrorCode passAccess(const shaders::PassTable& table, PassAccess* out) {
-    PassAccess access;
-    for (uint32_t b = 0; b < table.bindingCount; ++b) {
-        const shaders::Binding& binding = table.bindings[b];
-        const uint32_t slot = binding.binding;
-        const uint32_t space = binding.kind == shaders::BindingKind::StorageBuffer ? kUavBufferRegisterSpace : 0;
-        bool fits = binding.set == space && binding.arraySize <= 1;
-        switch (binding.kind) {
-            case shaders::BindingKind::SampledImage:
-                fits = fits && slot < kSrvCount;
-                if (fits) access.srvMask |= 1u << slot;
-                break;
-            case shaders::BindingKind::StorageImage:
-                fits = fits && slot < kUavImageCount;
-                if (fits) access.uavImageMask |= 1u << slot;
-                break;
-            case shaders::BindingKind::StorageBuffer:
-                fits = fits && slot == FFX_DOF_UAV_BUFFER_GLOBALS;
-                access.usesGlobals = access.usesGlobals || fits;
-                break;
-            case shaders::BindingKind::Sampler:
-                fits = fits && slot == FFX_DOF_SAMPLER_LINEAR_CLAMP;
-                break;
-            case shaders::BindingKind::PushConstants:
-            case shaders::BindingKind::UniformBuffer:
-                fits = fits && slot == 0 && binding.size <= sizeof(FfxDofConstants);
-                break;
-        }
-        if (!fits) {
-            return fail(FFX_DOF_ERROR_UNSUPPORTED,
-                        "DXIL of pass '%s' declares '%s' (%s, register %u, space %u, %u bytes), which the D3D12 "
-                        "root signature does not provide",
-                        table.pass, binding.name, shaders::bindingKindName(binding.kind), slot, binding.set,
-                        binding.size);
-        }
-    }
-    *out = access;
-    return FFX_DOF_OK;
-}
-
 }  // namespace
 
 const char* describeFormat(DXGI_FORMAT format, char (&buffer)[32]) {
@@ -112,8 +39,8 @@ FfxDofErrorCode Backend::init(const FfxDofBackendDescriptionDX12& description) {
         return fail(FFX_DOF_ERROR_INVALID_ARGUMENT, "maxFramesInFlight %u is above %u", description.maxFramesInFlight,
                     kMaxFramesInFlight);
     for (uint32_t p = 0; p < kPassCount; ++p) {
-        passes_[p].table = dxilPassTable(static_cast<Pass>(p));
-        if (passes_[p].table == nullptr)
+        tables_[p] = dxilPassTable(static_cast<Pass>(p));
+        if (tables_[p] == nullptr)
             return fail(FFX_DOF_ERROR_UNSUPPORTED,
                         "this build of ffx-dof carries no DXIL for pass '%s': the permutation compiler emits DXIL only "
                         "where dxc is found (a Windows build); rebuild there to use the D3D12 backend",
@@ -124,11 +51,15 @@ FfxDofErrorCode Backend::init(const FfxDofBackendDescriptionDX12& description) {
     descriptorSize_ = device_->GetDescriptorHandleIncrementSize(D3D12_DESCRIPTOR_HEAP_TYPE_CBV_SRV_UAV);
 
     if (const FfxDofErrorCode status = queryDevice(description.flags); status != FFX_DOF_OK) return status;
-    if (const FfxDofErrorCode status = createRootSignature(); status != FFX_DOF_OK) return status;
-    for (uint32_t p = 0; p < kPassCount; ++p) {
-        if (const FfxDofErrorCode status = createPipelines(static_cast<Pass>(p)); status != FFX_DOF_OK) return status;
-    }
-    return FFX_DOF_OK;
+    return createRootSignature();
+}
+
+BackendCapabilities Backend::capabilities() const {
+    BackendCapabilities capabilities;
+    for (uint32_t p = 0; p < kPassCount; ++p) capabilities.tables[p] = tables_[p];
+    capabilities.half = deviceOptions_.half;
+    capabilities.wave64 = deviceOptions_.wave64;
+    return capabilities;
 }
 
 FfxDofErrorCode Backend::queryDevice(uint32_t flags) {
@@ -176,23 +107,10 @@ FfxDofErrorCode Backend::createRootSignature() {
     parameters[kRootDescriptorTableParameter].DescriptorTable = {sizeof(ranges) / sizeof(ranges[0]), ranges};
     parameters[kRootDescriptorTableParameter].ShaderVisibility = D3D12_SHADER_VISIBILITY_ALL;
 
-    // FFX_DOF_SAMPLER_LINEAR_CLAMP as ffx_dof_resources.h defines it.
-    D3D12_STATIC_SAMPLER_DESC sampler{};
-    sampler.Filter = D3D12_FILTER_MIN_MAG_LINEAR_MIP_POINT;
-    sampler.AddressU = sampler.AddressV = sampler.AddressW = D3D12_TEXTURE_ADDRESS_MODE_CLAMP;
-    sampler.MaxAnisotropy = 1;
-    sampler.ComparisonFunc = D3D12_COMPARISON_FUNC_NEVER;
-    sampler.BorderColor = D3D12_STATIC_BORDER_COLOR_TRANSPARENT_BLACK;
-    sampler.MinLOD = 0.0f;
-    sampler.MaxLOD = static_cast<float>(kMipCount - 1);
-    sampler.ShaderRegister = FFX_DOF_SAMPLER_LINEAR_CLAMP;
-    sampler.ShaderVisibility = D3D12_SHADER_VISIBILITY_ALL;
-
     D3D12_ROOT_SIGNATURE_DESC desc{};
     desc.NumParameters = sizeof(parameters) / sizeof(parameters[0]);
     desc.pParameters = parameters;
-    desc.NumStaticSamplers = 1;
-    desc.pStaticSamplers = &sampler;
+    desc.NumStaticSamplers = 0;
     desc.Flags = D3D12_ROOT_SIGNATURE_FLAG_NONE;
 
     // Version 1.0: every descriptor volatile, which is what a ring of descriptors rewritten at record
@@ -210,56 +128,6 @@ FfxDofErrorCode Backend::createRootSignature() {
     if (FAILED(hr))
         return fail(FFX_DOF_ERROR_BACKEND, "ID3D12Device::CreateRootSignature failed (HRESULT 0x%08lx)",
                     static_cast<unsigned long>(hr));
-    return FFX_DOF_OK;
-}
-
-// One pipeline state per blob that a permutation with this device's options uses (identical
-// permutations share a blob, and so a pipeline state).
-FfxDofErrorCode Backend::createPipelines(Pass pass) {
-    PassPipelines& pipelines = passes_[static_cast<uint32_t>(pass)];
-    const shaders::PassTable& table = *pipelines.table;
-    if (const FfxDofErrorCode status = passAccess(table, &pipelines.access); status != FFX_DOF_OK) return status;
-    pipelines.byBlob.assign(table.blobCount, nullptr);
-
-    for (uint32_t index = 0; index < table.permutationCount; ++index) {
-        bool forThisDevice = true;
-        for (const shaders::Define& define : shaders::permutationDefines(table, index)) {
-            if (define.first == kAxisHalf)
-                forThisDevice = forThisDevice && define.second == (deviceOptions_.half ? 1u : 0u);
-            if (define.first == kAxisWave64)
-                forThisDevice = forThisDevice && define.second == (deviceOptions_.wave64 ? 1u : 0u);
-        }
-        const uint16_t blobIndex = table.permutationToBlob[index];
-        if (!forThisDevice || blobIndex >= table.blobCount || pipelines.byBlob[blobIndex]) continue;
-
-        const shaders::Blob& blob = table.blobs[blobIndex];
-        D3D12_COMPUTE_PIPELINE_STATE_DESC desc{};
-        desc.pRootSignature = rootSignature_.Get();
-        desc.CS = {blob.words, blob.wordCount * sizeof(uint32_t)};
-        const HRESULT hr = device_->CreateComputePipelineState(&desc, IID_PPV_ARGS(&pipelines.byBlob[blobIndex]));
-        if (FAILED(hr))
-            return fail(
-                FFX_DOF_ERROR_BACKEND,
-                "ID3D12Device::CreateComputePipelineState failed for pass '%s' permutation %u (HRESULT 0x%08lx)",
-                table.pass, index, static_cast<unsigned long>(hr));
-    }
-    return FFX_DOF_OK;
-}
-
-FfxDofErrorCode Backend::pipeline(Pass pass, const PermutationOptions& options, PassPipeline* out) const {
-    const PassPipelines& pipelines = passes_[static_cast<uint32_t>(pass)];
-    std::string error;
-    uint32_t index = 0;
-    if (!shaders::findPermutationIndex(*pipelines.table, permutationValues(*pipelines.table, deviceOptions_, options),
-                                       &index, &error))
-        return fail(FFX_DOF_ERROR_UNSUPPORTED, "no DXIL permutation for pass '%s': %s", pipelines.table->pass,
-                    error.c_str());
-    const uint16_t blobIndex = pipelines.table->permutationToBlob[index];
-    if (blobIndex >= pipelines.byBlob.size() || !pipelines.byBlob[blobIndex])
-        return fail(FFX_DOF_ERROR_BACKEND, "the DXIL table of pass '%s' is inconsistent at permutation %u",
-                    pipelines.table->pass, index);
-    out->pipelineState = pipelines.byBlob[blobIndex].Get();
-    out->access = pipelines.access;
     return FFX_DOF_OK;
 }
 

@@ -1,5 +1,5 @@
-// The D3D12 backend: one root signature and the pipeline states of the device's permutations,
-// shared by every context made with it. Private to ffx-dof.
+// The D3D12 backend: the device, its axes and one root signature, shared by every context made with
+// it (each context makes the pipeline states of its plan). Private to ffx-dof.
 #pragma once
 
 #include "ffx_dof_backend.h"
@@ -23,9 +23,9 @@ using Microsoft::WRL::ComPtr;
 //   [23, 24)  buffer UAV u0, space 1    (FFX_DOF_UAV_BUFFER_*)
 // HLSL has one u# namespace for images and buffers, so the buffers take register space 1
 // (shaders_common/ffx_dof_callbacks_hlsl.h declares them there).
-constexpr uint32_t kSrvCount = FFX_DOF_SRV_LAYER_ALPHA + 1;
-constexpr uint32_t kUavImageCount = FFX_DOF_UAV_OUTPUT + 1;
-constexpr uint32_t kUavBufferCount = FFX_DOF_UAV_BUFFER_GLOBALS + 1;
+constexpr uint32_t kSrvCount = kSampledSlotCount;
+constexpr uint32_t kUavImageCount = kStorageImageSlotCount;
+constexpr uint32_t kUavBufferCount = kStorageBufferSlotCount;
 constexpr UINT kUavBufferRegisterSpace = 1;
 constexpr uint32_t kSrvTableOffset = 0;
 constexpr uint32_t kUavImageTableOffset = kSrvTableOffset + kSrvCount;
@@ -45,50 +45,27 @@ struct DeviceOptions {
     bool wave64 = false;
 };
 
-// What a pass touches, from the reflected bindings of its table (union over its permutations).
-struct PassAccess {
-    uint32_t srvMask = 0;       // bit i: FFX_DOF_SRV_* slot i
-    uint32_t uavImageMask = 0;  // bit i: FFX_DOF_UAV_* slot i
-    bool usesGlobals = false;   // FFX_DOF_UAV_BUFFER_GLOBALS
-};
-
-// One pass's pipeline state for a context: chosen once at context creation.
-struct PassPipeline {
-    ID3D12PipelineState* pipelineState = nullptr;  // owned by the Backend
-    PassAccess access;
-};
-
 class Backend final : public FfxDofBackend_T {
 public:
     FfxDofErrorCode init(const FfxDofBackendDescriptionDX12& description);
-    FfxDofErrorCode createContext(const ContextConfig& config, std::unique_ptr<BackendContext>* out) override;
-
-    // The pipeline of `pass` for the context-dependent options, or an error naming the permutation.
-    FfxDofErrorCode pipeline(Pass pass, const PermutationOptions& options, PassPipeline* out) const;
+    BackendCapabilities capabilities() const override;
+    FfxDofErrorCode createContext(const ContextPlan& plan, std::unique_ptr<BackendContext>* out) override;
 
     ID3D12Device* device() const { return device_.Get(); }
     ID3D12RootSignature* rootSignature() const { return rootSignature_.Get(); }
     uint32_t framesInFlight() const { return framesInFlight_; }
     UINT descriptorSize() const { return descriptorSize_; }
-    const DeviceOptions& deviceOptions() const { return deviceOptions_; }
 
 private:
-    struct PassPipelines {
-        const shaders::PassTable* table = nullptr;
-        PassAccess access;
-        std::vector<ComPtr<ID3D12PipelineState>> byBlob;  // null for blobs of other device options
-    };
-
     FfxDofErrorCode queryDevice(uint32_t flags);
     FfxDofErrorCode createRootSignature();
-    FfxDofErrorCode createPipelines(Pass pass);
 
     ComPtr<ID3D12Device> device_;
     ComPtr<ID3D12RootSignature> rootSignature_;
     uint32_t framesInFlight_ = kDefaultFramesInFlight;
     UINT descriptorSize_ = 0;
     DeviceOptions deviceOptions_;
-    PassPipelines passes_[kPassCount];
+    const shaders::PassTable* tables_[kPassCount] = {};
 };
 
 // "DXGI_FORMAT_R16G16B16A16_FLOAT" style name, or the number for formats outside the rule table.

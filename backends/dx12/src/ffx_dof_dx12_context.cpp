@@ -35,8 +35,6 @@ constexpr UINT kGlobalsElementCount = kGlobalsWordCount;
 constexpr D3D12_RESOURCE_STATES kReadState = D3D12_RESOURCE_STATE_NON_PIXEL_SHADER_RESOURCE;
 constexpr D3D12_RESOURCE_STATES kWriteState = D3D12_RESOURCE_STATE_UNORDERED_ACCESS;
 
-uint32_t divideRoundingUp(uint32_t value, uint32_t divisor) { return (value + divisor - 1) / divisor; }
-
 // Subresources whose states a dispatch follows: every level of every internal image, plus color,
 // depth and output (whole resources; output shares color's entry when in place).
 constexpr uint32_t kMaxTracked = kInternalImageCount * kMipCount + 3;
@@ -49,7 +47,7 @@ struct SlotTargets {
         uint8_t count = 0;
     };
     Range srv[kSrvCount];
-    uint8_t uavImage[kUavImageCount];  // kNoTarget: a level the image does not have (null descriptor)
+    uint8_t uavImage[kUavImageCount];
     SlotTargets() {
         for (uint8_t& target : uavImage) target = kNoTarget;
     }
@@ -81,16 +79,17 @@ public:
         return static_cast<uint8_t>(count_++);
     }
 
-    void beforePass(const SlotTargets& slots, const PassAccess& access, ID3D12Resource* globals) {
+    // The pass's accesses are its reflected slots (the plan's); a storage slot is a write.
+    void beforePass(const SlotTargets& slots, const PlannedPass& pass, ID3D12Resource* globals) {
         for (uint32_t i = 0; i < count_; ++i) access_[i] = Access::None;
         for (uint32_t slot = 0; slot < kSrvCount; ++slot) {
-            if (!(access.srvMask & (1u << slot))) continue;
+            if (!(pass.sampledSlots & (1u << slot))) continue;
             for (uint32_t i = 0; i < slots.srv[slot].count; ++i) access_[slots.srv[slot].first + i] = Access::Read;
         }
         // A write wins over a read of the same subresource: in place, the composite pass binds the
         // color and the output, and its OUTPUT_PRE_INIT permutation reads the color through the output.
         for (uint32_t slot = 0; slot < kUavImageCount; ++slot) {
-            if ((access.uavImageMask & (1u << slot)) && slots.uavImage[slot] != kNoTarget)
+            if ((pass.storageSlots & (1u << slot)) && slots.uavImage[slot] != kNoTarget)
                 access_[slots.uavImage[slot]] = Access::Write;
         }
         for (uint32_t i = 0; i < count_; ++i) {
@@ -106,14 +105,14 @@ public:
         }
         // GLOBALS stays a UAV (a buffer: promoted from COMMON on first use, decays after the list),
         // so only UAV barriers order the atomics of one pass against the next.
-        if (access.usesGlobals && globalsWritten_) uavBarrier(globals);
+        if (usesGlobals(pass) && globalsWritten_) uavBarrier(globals);
     }
 
-    void afterPass(const PassAccess& access) {
+    void afterPass(const PlannedPass& pass) {
         for (uint32_t i = 0; i < count_; ++i) {
             if (access_[i] == Access::Write) entries_[i].unorderedWrites = true;
         }
-        globalsWritten_ = globalsWritten_ || access.usesGlobals;
+        globalsWritten_ = globalsWritten_ || usesGlobals(pass);
     }
 
     // Back to the states the engine declared (engine images) and the rest states (internal images).
@@ -140,6 +139,8 @@ public:
     const Entry& entry(uint32_t index) const { return entries_[index]; }
 
 private:
+    static bool usesGlobals(const PlannedPass& pass) { return pass.bufferSlots & (1u << FFX_DOF_UAV_BUFFER_GLOBALS); }
+
     void transition(Entry& entry, D3D12_RESOURCE_STATES after) {
         D3D12_RESOURCE_BARRIER& barrier = barriers_[barrierCount_++];
         barrier = {};
@@ -219,17 +220,15 @@ FfxDofErrorCode checkEngineImage(const FfxDofResource& image, ImageRole role, co
 
 class Context final : public BackendContext {
 public:
-    explicit Context(const Backend& backend) : backend_(backend) {}
+    Context(const Backend& backend, const ContextPlan& plan) : backend_(backend), plan_(plan) {}
 
-    FfxDofErrorCode init(const ContextConfig& config);
+    FfxDofErrorCode init();
     FfxDofErrorCode dispatch(const DispatchPlan& plan) override;
     FfxDofMemoryUsage memoryUsage() const override { return memory_; }
 
 private:
     struct InternalImage {
         ComPtr<ID3D12Resource> resource;
-        uint32_t mipLevels = 1;
-        uint32_t width = 0, height = 0;
         D3D12_RESOURCE_STATES rest = kReadState;  // every level, between dispatches
     };
 
@@ -237,6 +236,7 @@ private:
     void trackInternalImages(StateTracker* tracker, SlotTargets* slots) const;
     // Runs the passes' barrier logic without a command list to find where each image ends up.
     void chooseRestStates();
+    FfxDofErrorCode createPipelines();
     FfxDofErrorCode createResources();
     FfxDofErrorCode createDescriptorHeap();
     FfxDofErrorCode checkOutputFormatSupport(DXGI_FORMAT format);
@@ -250,9 +250,8 @@ private:
     void writeUav(ID3D12Resource* resource, DXGI_FORMAT format, UINT mip, D3D12_CPU_DESCRIPTOR_HANDLE at) const;
 
     const Backend& backend_;
-    ContextConfig config_;
-    PermutationOptions options_;
-    PassPipeline passes_[kPassCount];
+    const ContextPlan& plan_;
+    ComPtr<ID3D12PipelineState> pipelines_[kPassCount];
     InternalImage images_[kInternalImageCount];
     ComPtr<ID3D12Resource> globals_;
     ComPtr<ID3D12DescriptorHeap> heap_;
@@ -263,40 +262,46 @@ private:
     DXGI_FORMAT supportedOutputFormat_ = DXGI_FORMAT_UNKNOWN;  // last output format found usable
 };
 
-FfxDofErrorCode Context::init(const ContextConfig& config) {
-    config_ = config;
-    // The core maps the flags to permutation options; ask it with an empty dispatch rather than
-    // repeat the mapping here.
-    options_ = planDispatch(config, FfxDofDispatchDescription{}, 0).options;
-    for (uint32_t p = 0; p < kPassCount; ++p) {
-        if (const FfxDofErrorCode status = backend_.pipeline(static_cast<Pass>(p), options_, &passes_[p]);
-            status != FFX_DOF_OK)
-            return status;
-    }
-
-    const uint32_t halfWidth = divideRoundingUp(config.resolution.width, 2);
-    const uint32_t halfHeight = divideRoundingUp(config.resolution.height, 2);
-    for (uint32_t i = 0; i < kInternalImageCount; ++i) {
-        const bool half = kInternalImages[i].extent == ImageExtent::Half;
-        images_[i].width = half ? halfWidth : divideRoundingUp(halfWidth, FFX_DOF_TILE_SIZE);
-        images_[i].height = half ? halfHeight : divideRoundingUp(halfHeight, FFX_DOF_TILE_SIZE);
-        images_[i].mipLevels = mipLevelsFor(kInternalImages[i], images_[i].width, images_[i].height);
-    }
+FfxDofErrorCode Context::init() {
+    if (const FfxDofErrorCode status = createPipelines(); status != FFX_DOF_OK) return status;
     chooseRestStates();
     if (const FfxDofErrorCode status = createResources(); status != FFX_DOF_OK) return status;
     return createDescriptorHeap();
+}
+
+FfxDofErrorCode Context::createPipelines() {
+    for (uint32_t p = 0; p < kPassCount; ++p) {
+        const shaders::Blob& blob = *plan_.passes[p].blob;
+        D3D12_COMPUTE_PIPELINE_STATE_DESC desc{};
+        desc.pRootSignature = backend_.rootSignature();
+        desc.CS = {blob.words, blob.wordCount * sizeof(uint32_t)};
+        const HRESULT hr = backend_.device()->CreateComputePipelineState(&desc, IID_PPV_ARGS(&pipelines_[p]));
+        if (FAILED(hr))
+            return fail(FFX_DOF_ERROR_BACKEND,
+                        "ID3D12Device::CreateComputePipelineState failed for pass '%s' permutation %u (HRESULT "
+                        "0x%08lx)",
+                        kPassNames[p], plan_.passes[p].permutationIndex, static_cast<unsigned long>(hr));
+    }
+    return FFX_DOF_OK;
 }
 
 void Context::trackInternalImages(StateTracker* tracker, SlotTargets* slots) const {
     for (uint32_t i = 0; i < kInternalImageCount; ++i) {
         const InternalImageSpec& spec = kInternalImages[i];
         const InternalImage& image = images_[i];
-        slots->srv[spec.sampledSlot].count = static_cast<uint8_t>(image.mipLevels);
-        for (uint32_t mip = 0; mip < image.mipLevels; ++mip) {
-            const uint8_t entry = tracker->track(image.resource.Get(), mip, image.rest, image.rest);
-            if (mip == 0) slots->srv[spec.sampledSlot].first = entry;
-            slots->uavImage[spec.storageSlot + mip] = entry;
+        const uint32_t levels = plan_.images[i].mipLevels;
+        uint8_t levelEntries[kMipCount] = {};
+        for (uint32_t mip = 0; mip < levels; ++mip) {
+            levelEntries[mip] = tracker->track(image.resource.Get(), mip, image.rest, image.rest);
         }
+        slots->srv[spec.sampledSlot] = {levelEntries[0], static_cast<uint8_t>(levels)};
+    }
+    // Storage slots as the plan maps them (a level a small image lacks aliases its last level).
+    for (uint32_t slot = 0; slot < kUavImageCount; ++slot) {
+        const SlotTarget& target = plan_.storageImageSlots[slot];
+        if (!isInternalImage(target.resource)) continue;
+        const uint32_t image = internalImageIndex(target.resource);
+        slots->uavImage[slot] = static_cast<uint8_t>(slots->srv[kInternalImages[image].sampledSlot].first + target.firstMip);
     }
 }
 
@@ -307,9 +312,9 @@ void Context::chooseRestStates() {
     StateTracker tracker;
     SlotTargets slots;
     trackInternalImages(&tracker, &slots);
-    for (const PassPipeline& pass : passes_) {
-        tracker.beforePass(slots, pass.access, nullptr);
-        tracker.afterPass(pass.access);
+    for (const PlannedPass& pass : plan_.passes) {
+        tracker.beforePass(slots, pass, nullptr);
+        tracker.afterPass(pass);
         tracker.flush(nullptr);
     }
     for (uint32_t i = 0; i < kInternalImageCount; ++i) {
@@ -323,12 +328,13 @@ FfxDofErrorCode Context::createResources() {
     heap.Type = D3D12_HEAP_TYPE_DEFAULT;
     for (uint32_t i = 0; i < kInternalImageCount; ++i) {
         InternalImage& image = images_[i];
+        const PlannedImage& planned = plan_.images[i];
         D3D12_RESOURCE_DESC desc{};
         desc.Dimension = D3D12_RESOURCE_DIMENSION_TEXTURE2D;
-        desc.Width = image.width;
-        desc.Height = image.height;
+        desc.Width = planned.width;
+        desc.Height = planned.height;
         desc.DepthOrArraySize = 1;
-        desc.MipLevels = static_cast<UINT16>(image.mipLevels);
+        desc.MipLevels = static_cast<UINT16>(planned.mipLevels);
         desc.Format = toDxgiFormat(kInternalImages[i].format);
         desc.SampleDesc.Count = 1;
         desc.Layout = D3D12_TEXTURE_LAYOUT_UNKNOWN;
@@ -338,7 +344,7 @@ FfxDofErrorCode Context::createResources() {
         if (FAILED(hr))
             return fail(hr == E_OUTOFMEMORY ? FFX_DOF_ERROR_OUT_OF_MEMORY : FFX_DOF_ERROR_BACKEND,
                         "creating internal image %s (%ux%u, %u levels) failed (HRESULT 0x%08lx)",
-                        kInternalImages[i].name, image.width, image.height, image.mipLevels,
+                        kInternalImages[i].name, planned.width, planned.height, planned.mipLevels,
                         static_cast<unsigned long>(hr));
         const D3D12_RESOURCE_ALLOCATION_INFO info = device->GetResourceAllocationInfo(0, 1, &desc);
         memory_.totalUsageInBytes += info.SizeInBytes;
@@ -383,7 +389,6 @@ void Context::writeUav(ID3D12Resource* resource, DXGI_FORMAT format, UINT mip, D
     desc.Format = format;
     desc.ViewDimension = D3D12_UAV_DIMENSION_TEXTURE2D;
     desc.Texture2D.MipSlice = mip;
-    // A null resource makes a null descriptor: stores to a level the image lacks are dropped.
     backend_.device()->CreateUnorderedAccessView(resource, nullptr, &desc, at);
 }
 
@@ -403,16 +408,19 @@ FfxDofErrorCode Context::createDescriptorHeap() {
 
     // The internal descriptors are the same in every ring slot; a dispatch writes only the engine's.
     for (uint32_t slot = 0; slot < backend_.framesInFlight(); ++slot) {
-        for (uint32_t i = 0; i < kInternalImageCount; ++i) {
-            const InternalImageSpec& spec = kInternalImages[i];
-            ID3D12Resource* resource = images_[i].resource.Get();
-            writeSrv(resource, toDxgiFormat(spec.format), images_[i].mipLevels,
-                     cpuDescriptor(slot, kSrvTableOffset + spec.sampledSlot));
-            const uint32_t levels = spec.mipChain ? kMipCount : 1;
-            for (uint32_t mip = 0; mip < levels; ++mip) {
-                writeUav(mip < images_[i].mipLevels ? resource : nullptr, toDxgiFormat(spec.format), mip,
-                         cpuDescriptor(slot, kUavImageTableOffset + spec.storageSlot + mip));
-            }
+        for (uint32_t s = 0; s < kSrvCount; ++s) {
+            const SlotTarget& target = plan_.sampledSlots[s];
+            if (!isInternalImage(target.resource)) continue;
+            const uint32_t i = internalImageIndex(target.resource);
+            writeSrv(images_[i].resource.Get(), toDxgiFormat(kInternalImages[i].format), target.mipCount,
+                     cpuDescriptor(slot, kSrvTableOffset + s));
+        }
+        for (uint32_t s = 0; s < kUavImageCount; ++s) {
+            const SlotTarget& target = plan_.storageImageSlots[s];
+            if (!isInternalImage(target.resource)) continue;
+            const uint32_t i = internalImageIndex(target.resource);
+            writeUav(images_[i].resource.Get(), toDxgiFormat(kInternalImages[i].format), target.firstMip,
+                     cpuDescriptor(slot, kUavImageTableOffset + s));
         }
         D3D12_UNORDERED_ACCESS_VIEW_DESC globals{};
         globals.Format = DXGI_FORMAT_UNKNOWN;
@@ -431,22 +439,18 @@ FfxDofErrorCode Context::checkOutputFormatSupport(DXGI_FORMAT format) {
     support.Format = format;
     // In place, the composite pass also loads the color through the output UAV.
     const UINT needed2 =
-        D3D12_FORMAT_SUPPORT2_UAV_TYPED_STORE | (options_.combineInPlace ? D3D12_FORMAT_SUPPORT2_UAV_TYPED_LOAD : 0);
+        D3D12_FORMAT_SUPPORT2_UAV_TYPED_STORE | (plan_.axes.outputPreInit ? D3D12_FORMAT_SUPPORT2_UAV_TYPED_LOAD : 0);
     char name[32];
     if (FAILED(backend_.device()->CheckFeatureSupport(D3D12_FEATURE_FORMAT_SUPPORT, &support, sizeof(support))) ||
         !(support.Support1 & D3D12_FORMAT_SUPPORT1_TYPED_UNORDERED_ACCESS_VIEW) ||
         (support.Support2 & needed2) != needed2)
         return fail(FFX_DOF_ERROR_UNSUPPORTED, "output: the device cannot %s typed UAVs of %s",
-                    options_.combineInPlace ? "load and store" : "store", describeFormat(format, name));
+                    plan_.axes.outputPreInit ? "load and store" : "store", describeFormat(format, name));
     supportedOutputFormat_ = format;
     return FFX_DOF_OK;
 }
 
 FfxDofErrorCode Context::dispatch(const DispatchPlan& plan) {
-    if (plan.options.reverseDepth != options_.reverseDepth || plan.options.ringMergeLog != options_.ringMergeLog ||
-        plan.options.combineInPlace != options_.combineInPlace)
-        return fail(FFX_DOF_ERROR_BACKEND, "the dispatch plan's permutation options differ from the context's");
-
     ID3D12GraphicsCommandList* list = static_cast<ID3D12GraphicsCommandList*>(plan.commandList);
     const D3D12_COMMAND_LIST_TYPE listType = list->GetType();
     if (listType != D3D12_COMMAND_LIST_TYPE_DIRECT && listType != D3D12_COMMAND_LIST_TYPE_COMPUTE)
@@ -463,10 +467,6 @@ FfxDofErrorCode Context::dispatch(const DispatchPlan& plan) {
     if (const FfxDofErrorCode status = checkEngineImage(plan.output, ImageRole::Output, "output", &output);
         status != FFX_DOF_OK)
         return status;
-    if (plan.outputIsColor && color.state != output.state)
-        return fail(FFX_DOF_ERROR_INVALID_RESOURCE,
-                    "output is the color image but declares state 0x%x where color declares 0x%x",
-                    static_cast<unsigned>(output.state), static_cast<unsigned>(color.state));
     if (const FfxDofErrorCode status = checkOutputFormatSupport(output.viewFormat); status != FFX_DOF_OK) return status;
 
     // Descriptors: the ring slot the GPU finished with maxFramesInFlight dispatches ago.
@@ -503,11 +503,12 @@ FfxDofErrorCode Context::dispatch(const DispatchPlan& plan) {
     list->SetComputeRootDescriptorTable(kRootDescriptorTableParameter, table);
 
     for (uint32_t p = 0; p < kPassCount; ++p) {
-        tracker.beforePass(slots, passes_[p].access, globals_.Get());
+        const PlannedPass& pass = plan_.passes[p];
+        tracker.beforePass(slots, pass, globals_.Get());
         tracker.flush(list);
-        list->SetPipelineState(passes_[p].pipelineState);
-        list->Dispatch(plan.passes[p].x, plan.passes[p].y, plan.passes[p].z);
-        tracker.afterPass(passes_[p].access);
+        list->SetPipelineState(pipelines_[p].Get());
+        list->Dispatch(pass.groups.x, pass.groups.y, pass.groups.z);
+        tracker.afterPass(pass);
     }
     tracker.restore();
     tracker.flush(list);
@@ -516,10 +517,10 @@ FfxDofErrorCode Context::dispatch(const DispatchPlan& plan) {
 
 }  // namespace
 
-FfxDofErrorCode Backend::createContext(const ContextConfig& config, std::unique_ptr<BackendContext>* out) {
-    std::unique_ptr<Context> context(new (std::nothrow) Context(*this));
+FfxDofErrorCode Backend::createContext(const ContextPlan& plan, std::unique_ptr<BackendContext>* out) {
+    std::unique_ptr<Context> context(new (std::nothrow) Context(*this, plan));
     if (!context) return fail(FFX_DOF_ERROR_OUT_OF_MEMORY, "allocating the D3D12 context failed");
-    if (const FfxDofErrorCode status = context->init(config); status != FFX_DOF_OK) return status;
+    if (const FfxDofErrorCode status = context->init(); status != FFX_DOF_OK) return status;
     *out = std::move(context);
     return FFX_DOF_OK;
 }
