@@ -26,6 +26,22 @@ function(ffx_dof_pass_names out_var)
   set(${out_var} ${names} PARENT_SCOPE)
 endfunction()
 
+# The passes whose FFX_HALF=1 permutations carry colour in 16-bit floats ("float16Color").
+function(ffx_dof_float16_color_passes out_var)
+  _ffx_dof_read_permutations(json)
+  ffx_dof_pass_names(names)
+  set(result "")
+  set(i 0)
+  foreach(name IN LISTS names)
+    string(JSON flag ERROR_VARIABLE missing GET "${json}" passes ${i} float16Color)
+    if(NOT missing AND flag)
+      list(APPEND result ${name})
+    endif()
+    math(EXPR i "${i} + 1")
+  endforeach()
+  set(${out_var} ${result} PARENT_SCOPE)
+endfunction()
+
 # snake_case / MACRO_CASE words -> camelCase (upper_first: PascalCase).
 function(_ffx_dof_camel_case text upper_first out_var)
   string(TOLOWER "${text}" lower)
@@ -96,6 +112,7 @@ function(ffx_dof_generate_pass_list out_dir)
   set(pass_axis_rows "")
   set(pass_axis_counts "")
   set(pass_domains "")
+  set(pass_float16 "")
   set(pass_extents "")
   math(EXPR last_pass "${pass_count} - 1")
   foreach(p RANGE ${last_pass})
@@ -107,6 +124,12 @@ function(ffx_dof_generate_pass_list out_dir)
     string(TOUPPER "${name}" upper)
     string(APPEND pass_domains "FFX_DOF_${upper}_DOMAIN, ")
     string(APPEND pass_extents "FFX_DOF_${upper}_GROUP_EXTENT, ")
+    string(JSON float16 ERROR_VARIABLE missing GET "${json}" passes ${p} float16Color)
+    if(NOT missing AND float16)
+      string(APPEND pass_float16 "true, ")
+    else()
+      string(APPEND pass_float16 "false, ")
+    endif()
     string(JSON pass_axis_count LENGTH "${json}" passes ${p} axes)
     set(row "")
     if(pass_axis_count GREATER 0)
@@ -145,6 +168,8 @@ constexpr const char* kPassNames[kPassCount] = {${pass_names}};
 // What a pass's workgroups cover (FFX_DOF_DOMAIN_*) and how much of it one workgroup covers.
 constexpr uint32_t kPassDomain[kPassCount] = {${pass_domains}};
 constexpr uint32_t kPassGroupExtent[kPassCount] = {${pass_extents}};
+// Whether the pass's FFX_HALF=1 permutations carry colour in 16-bit floats.
+constexpr bool kPassFloat16Color[kPassCount] = {${pass_float16}};
 
 // Every permutation axis of any pass.
 enum class Axis : uint32_t { ${axis_enum}};

@@ -7,6 +7,7 @@
 //    capability and a 16-bit OpTypeFloat), the FFX_HALF=0 blobs never, and the depth/CoC passes
 //    use 16-bit floats in HLSL exactly when they do in GLSL.
 // The SPIR-V is read with SPIRV-Tools' binary parser.
+#include "ffx_dof_pass_list.h"
 #include "ffx_dof_vk_shaders_glsl.h"
 #include "ffx_dof_vk_shaders_hlsl.h"
 
@@ -27,9 +28,14 @@ using shaders::PassTable;
 
 namespace {
 
-// The passes whose FFX_HALF=1 permutations carry colour in 16-bit floats (depth and CoC stay 32-bit
-// in the others: docs/technique.md).
-const std::set<std::string> kColorPasses = {"downsample_color", "blur", "composite"};
+// Whether a pass's FFX_HALF=1 permutations carry colour in 16-bit floats (depth and CoC stay 32-bit
+// in the others: docs/technique.md); ffx_dof_permutations.json says which.
+bool isFloat16ColorPass(const std::string& pass) {
+    for (uint32_t p = 0; p < kPassCount; ++p) {
+        if (pass == kPassNames[p]) return kPassFloat16Color[p];
+    }
+    return false;
+}
 
 // DescriptorSet and Binding decorations of one id; -1 until seen.
 struct Slot {
@@ -169,7 +175,7 @@ TEST_CASE("HLSL and GLSL bind the same slots in every pass and permutation", "[h
 TEST_CASE("HLSL FFX_HALF=1 colour passes compute in 16-bit floats, FFX_HALF=0 never", "[hlsl][reflection]") {
     for (const PassTable* glsl : glslTables()) {
         const PassTable& hlsl = hlslTableOf(*glsl);
-        const bool colorPass = kColorPasses.count(glsl->pass) != 0;
+        const bool colorPass = isFloat16ColorPass(glsl->pass);
         for (uint32_t p = 0; p < hlsl.permutationCount; ++p) {
             const std::vector<shaders::Define> key = shaders::permutationDefines(hlsl, p);
             const bool half = axisValue(key, "FFX_HALF") != 0;

@@ -297,3 +297,119 @@ TEST_CASE("backend creation checks its description", "[vulkan]") {
     vkDestroyPipelineCache(device.device(), cache, nullptr);
     requireNoValidationMessages(device);
 }
+
+namespace {
+
+// Entry points that count the backend's view and descriptor work: the backend loads every device
+// function through the vkGetDeviceProcAddr of its description, so handing it this one counts exactly
+// what the effect does, without looking inside it.
+struct DescriptorWorkCounter {
+    static inline PFN_vkGetDeviceProcAddr real = nullptr;
+    static inline PFN_vkCreateImageView realCreateView = nullptr;
+    static inline PFN_vkDestroyImageView realDestroyView = nullptr;
+    static inline PFN_vkUpdateDescriptorSets realUpdate = nullptr;
+    static inline std::atomic<int> viewsCreated{0}, viewsDestroyed{0}, descriptorWrites{0};
+
+    static VKAPI_ATTR VkResult VKAPI_CALL createView(VkDevice device, const VkImageViewCreateInfo* info,
+                                                     const VkAllocationCallbacks* allocator, VkImageView* view) {
+        ++viewsCreated;
+        return realCreateView(device, info, allocator, view);
+    }
+    static VKAPI_ATTR void VKAPI_CALL destroyView(VkDevice device, VkImageView view,
+                                                  const VkAllocationCallbacks* allocator) {
+        if (view != VK_NULL_HANDLE) ++viewsDestroyed;
+        realDestroyView(device, view, allocator);
+    }
+    static VKAPI_ATTR void VKAPI_CALL update(VkDevice device, uint32_t writeCount, const VkWriteDescriptorSet* writes,
+                                             uint32_t copyCount, const VkCopyDescriptorSet* copies) {
+        descriptorWrites += int(writeCount);
+        realUpdate(device, writeCount, writes, copyCount, copies);
+    }
+    static VKAPI_ATTR PFN_vkVoidFunction VKAPI_CALL getDeviceProcAddr(VkDevice device, const char* name) {
+        const PFN_vkVoidFunction function = real(device, name);
+        if (std::strcmp(name, "vkCreateImageView") == 0) {
+            realCreateView = reinterpret_cast<PFN_vkCreateImageView>(function);
+            return reinterpret_cast<PFN_vkVoidFunction>(&createView);
+        }
+        if (std::strcmp(name, "vkDestroyImageView") == 0) {
+            realDestroyView = reinterpret_cast<PFN_vkDestroyImageView>(function);
+            return reinterpret_cast<PFN_vkVoidFunction>(&destroyView);
+        }
+        if (std::strcmp(name, "vkUpdateDescriptorSets") == 0) {
+            realUpdate = reinterpret_cast<PFN_vkUpdateDescriptorSets>(function);
+            return reinterpret_cast<PFN_vkVoidFunction>(&update);
+        }
+        return function;
+    }
+    struct Counts {
+        int created, destroyed, writes;
+    };
+    static Counts now() { return {viewsCreated.load(), viewsDestroyed.load(), descriptorWrites.load()}; }
+};
+
+}  // namespace
+
+TEST_CASE("engine image views are made once and kept and descriptors rewritten only when images change", "[vulkan]") {
+    vkrun::Device& device = validatedDevice();
+    const Scene scene = makeScene(32, 24, 3.0f);
+    EngineImages images(device, scene);
+    vkrun::GpuImage otherOutput(
+        device, 32, 24, VK_FORMAT_R16G16B16A16_SFLOAT,
+        VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT);
+    otherOutput.upload(scene.color, VK_IMAGE_LAYOUT_GENERAL);
+
+    FfxDofBackendDescriptionVK description = device.backendDescription();
+    DescriptorWorkCounter::real = description.vkGetDeviceProcAddr;
+    description.vkGetDeviceProcAddr = &DescriptorWorkCounter::getDeviceProcAddr;
+    description.maxFramesInFlight = 2;
+    FfxDofBackend backend = nullptr;
+    REQUIRE(ffxDofBackendCreateVK(&description, &backend) == FFX_DOF_OK);
+    FfxDofContextDescription contextInfo = contextDescription(backend, 32, 24);
+    FfxDofContext context = nullptr;
+    const DescriptorWorkCounter::Counts beforeContext = DescriptorWorkCounter::now();
+    REQUIRE(ffxDofContextCreate(&context, &contextInfo) == FFX_DOF_OK);
+    const DescriptorWorkCounter::Counts created = DescriptorWorkCounter::now();
+    CHECK(created.writes > beforeContext.writes);  // the internal resources, once, at creation
+
+    // The first dispatch makes the three views (color, depth, output); each of the two ring slots
+    // gets the engine's descriptors once.
+    const FfxDofDispatchDescription first = images.dispatch(scene);
+    REQUIRE(dispatchOnce(device, &context, first) == FFX_DOF_OK);
+    REQUIRE(dispatchOnce(device, &context, first) == FFX_DOF_OK);
+    const DescriptorWorkCounter::Counts warm = DescriptorWorkCounter::now();
+    CHECK(warm.created - created.created == 3);
+    CHECK(warm.destroyed == created.destroyed);
+    CHECK(warm.writes > created.writes);
+
+    // The same images again: no view made or destroyed, no descriptor written.
+    for (int frame = 0; frame < 6; ++frame) REQUIRE(dispatchOnce(device, &context, first) == FFX_DOF_OK);
+    const DescriptorWorkCounter::Counts steady = DescriptorWorkCounter::now();
+    CHECK(steady.created == warm.created);
+    CHECK(steady.destroyed == warm.destroyed);
+    CHECK(steady.writes == warm.writes);
+
+    // Alternating two outputs: one more view, and the descriptors of a slot change with its output.
+    FfxDofDispatchDescription second = first;
+    second.output = ffxDofGetResourceVK(otherOutput.image(), otherOutput.format(), 32, 24, VK_IMAGE_LAYOUT_GENERAL, 0);
+    for (int frame = 0; frame < 4; ++frame) {
+        REQUIRE(dispatchOnce(device, &context, frame % 2 ? first : second) == FFX_DOF_OK);
+    }
+    const DescriptorWorkCounter::Counts alternating = DescriptorWorkCounter::now();
+    CHECK(alternating.created == steady.created + 1);
+    CHECK(alternating.destroyed == steady.destroyed);
+
+    // Released before the engine destroys it: its one view goes, and it is made again if it returns.
+    REQUIRE(ffxDofContextReleaseImageVK(&context, otherOutput.image()) == FFX_DOF_OK);
+    const DescriptorWorkCounter::Counts released = DescriptorWorkCounter::now();
+    CHECK(released.destroyed == alternating.destroyed + 1);
+    REQUIRE(dispatchOnce(device, &context, second) == FFX_DOF_OK);
+    CHECK(DescriptorWorkCounter::now().created == released.created + 1);
+    CHECK(ffxDofContextReleaseImageVK(nullptr, otherOutput.image()) == FFX_DOF_ERROR_INVALID_POINTER);
+
+    REQUIRE(ffxDofContextDestroy(&context) == FFX_DOF_OK);
+    CHECK(ffxDofContextReleaseImageVK(&context, otherOutput.image()) == FFX_DOF_ERROR_INVALID_CONTEXT);
+    const DescriptorWorkCounter::Counts end = DescriptorWorkCounter::now();
+    CHECK(end.created - beforeContext.created == end.destroyed - beforeContext.destroyed);
+    REQUIRE(ffxDofBackendDestroy(backend) == FFX_DOF_OK);
+    requireNoValidationMessages(device);
+}
