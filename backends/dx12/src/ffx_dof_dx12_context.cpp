@@ -301,7 +301,8 @@ void Context::trackInternalImages(StateTracker* tracker, SlotTargets* slots) con
         const SlotTarget& target = plan_.storageImageSlots[slot];
         if (!isInternalImage(target.resource)) continue;
         const uint32_t image = internalImageIndex(target.resource);
-        slots->uavImage[slot] = static_cast<uint8_t>(slots->srv[kInternalImages[image].sampledSlot].first + target.firstMip);
+        slots->uavImage[slot] =
+            static_cast<uint8_t>(slots->srv[kInternalImages[image].sampledSlot].first + target.firstMip);
     }
 }
 
