@@ -10,8 +10,12 @@
 //      bit for bit. Otherwise: near layer upsampled bilinearly (any zero-opacity corner gives zero
 //      opacity); far layer upsampled joint-bilaterally (taps weighted by validity and by how well
 //      their CoC matches the pixel's, so a sharp foreground never spills into the blurred
-//      background); fixed 3x3 blur for radii 0.5..1.5; layers blended (ffxDofFixedBlurBlend,
-//      ffxDofFarBlend, ffxDofCubicWeight).
+//      background). Layers blended so that the combined blur has the variance of the pixel's disc
+//      (ffxDofDiscVariance): the fixed 3x3 blur is mixed into the input by the radius, alone from
+//      |radius| 0.76 half-res px (ffxDofFixedBlurBlend; left out under a near-field opacity above
+//      FFX_DOF_NEAR_BLOCKS_FIXED_BLUR, where it would spread foreground color), the far layer over
+//      it, alone from FFX_DOF_FAR_LAYER_ONLY_RADIUS (ffxDofFarBlend), and the near layer on top
+//      (ffxDofCubicWeight).
 // The composite also writes 0 to GLOBALS for the next dispatch (pass 3 has read it).
 // HDR range: the input color is multiplied by the frame's ffxDofColorRangeScale (from GLOBALS, written
 // by pass 2) as it is read, in 32-bit, so all the work happens in the range of the half-res layers;

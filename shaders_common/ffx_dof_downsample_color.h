@@ -23,8 +23,8 @@ void ffxDofStoreColorScale(FfxFloat32 scale);
 
 // ---- Bilateral downsampling -------------------------------------------------------------------------
 
-// Weight of a pixel of a 2x2 quad relative to the quad's top-left pixel: 1 for equal radii, falling
-// linearly to 0 at a difference of one pixel of radius.
+// Weight of a pixel of a 2x2 quad from how far its radius is from the quad's reference radius
+// (ffxDofQuadReferenceCoc): 1 for equal radii, falling linearly to 0 at a difference of one pixel.
 FFX_DOF_INLINE FfxFloat32 ffxDofBilateralWeight(FfxFloat32 referenceCoc, FfxFloat32 coc)
 {
     return ffxDofSaturate(1.0f - abs(coc - referenceCoc));
