@@ -122,7 +122,7 @@ FFX_DOF_INLINE FfxFloat32x4 ffxDofScaleColor(FfxFloat32x4 color, FfxFloat32 scal
 // Position of an invocation in its 8 x 8 workgroup.
 FFX_DOF_INLINE FfxUInt32x2 ffxDofLocalCoord(FfxUInt32 localIndex)
 {
-    return FfxUInt32x2(localIndex % 8u, localIndex / 8u);
+    return FfxUInt32x2(localIndex % FfxUInt32(FFX_DOF_GROUP_SIDE), localIndex / FfxUInt32(FFX_DOF_GROUP_SIDE));
 }
 
 // Size of MIP level `mip` of an image whose level 0 is `size` (the Vulkan/D3D rule).

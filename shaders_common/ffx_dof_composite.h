@@ -187,7 +187,7 @@ FFX_DOF_GROUPSHARED FfxFloat32 ffxDofSharedCoc[FFX_DOF_FILTERED_SIDE * FFX_DOF_F
 // The difference to out of place: the fixed blur of the tile's border pixels sees half-res color
 // for its outer neighbours (bilateral 2x2 averages): documented in docs/technique.md and bounded by
 // the in-place test of tests/quality.
-FFX_DOF_GROUPSHARED FfxFloat32x4 ffxDofSharedInput[16 * 16];
+FFX_DOF_GROUPSHARED FfxFloat32x4 ffxDofSharedInput[FFX_DOF_COMPOSITE_GROUP_EXTENT * FFX_DOF_COMPOSITE_GROUP_EXTENT];
 #endif
 
 FFX_DOF_INLINE FfxInt32x2 ffxDofClampHalfTexel(FfxInt32x2 texel, FfxUInt32x2 halfSize)
@@ -247,10 +247,11 @@ FFX_DOF_INLINE void ffxDofPostFilterTexel(FfxUInt32 index)
 // Returns the scaled color (the group-shared copy and MIP 0 are scaled already).
 FFX_DOF_INLINE FfxFloat32x4 ffxDofCompositeInput(FfxUInt32x2 pixel, FfxUInt32x2 ownPixel, FfxFloat32 scale)
 {
-    FfxUInt32x2 tileOrigin = (ownPixel / 16u) * 16u;
-    if (pixel.x >= tileOrigin.x && pixel.y >= tileOrigin.y && pixel.x < tileOrigin.x + 16u &&
-        pixel.y < tileOrigin.y + 16u)
-        return ffxDofSharedInput[(pixel.y - tileOrigin.y) * 16u + pixel.x - tileOrigin.x];
+    FfxUInt32 extent = FfxUInt32(FFX_DOF_COMPOSITE_GROUP_EXTENT);
+    FfxUInt32x2 tileOrigin = (ownPixel / extent) * extent;
+    if (pixel.x >= tileOrigin.x && pixel.y >= tileOrigin.y && pixel.x < tileOrigin.x + extent &&
+        pixel.y < tileOrigin.y + extent)
+        return ffxDofSharedInput[(pixel.y - tileOrigin.y) * extent + pixel.x - tileOrigin.x];
     FfxDofFloat3 color = ffxDofLoadColorMip(FfxInt32x2(pixel / 2u), 0u);
     return FfxFloat32x4(FfxFloat32(color.x), FfxFloat32(color.y), FfxFloat32(color.z), 1.0f);
 }
@@ -375,7 +376,8 @@ FFX_DOF_INLINE void ffxDofComposite(FfxUInt32x2 groupId, FfxUInt32 localIndex)
     if (groupId.x == 0u && groupId.y == 0u && localIndex == 0u)
         ffxDofResetGlobals();
 
-    FfxUInt32x2 quad = groupId * 16u + ffxDofLocalCoord(localIndex) * 2u;
+    FfxUInt32 extent = FfxUInt32(FFX_DOF_COMPOSITE_GROUP_EXTENT);
+    FfxUInt32x2 quad = groupId * extent + ffxDofLocalCoord(localIndex) * 2u;
     FfxFloat32 scale = ffxDofLoadColorScale();
     FfxFloat32x2 tile = ffxDofLoadTile(groupId);
     FfxFloat32x4 dilatedTile = ffxDofLoadDilatedTile(groupId);
@@ -401,7 +403,7 @@ FFX_DOF_INLINE void ffxDofComposite(FfxUInt32x2 groupId, FfxUInt32 localIndex)
     {
         FfxUInt32x2 pixel = quad + FfxUInt32x2(k & 1u, k >> 1u);
         if (pixel.x < constants.fullSize.x && pixel.y < constants.fullSize.y)
-            ffxDofSharedInput[(pixel.y - groupId.y * 16u) * 16u + pixel.x - groupId.x * 16u] =
+            ffxDofSharedInput[(pixel.y - groupId.y * extent) * extent + pixel.x - groupId.x * extent] =
                 ffxDofScaleColor(ffxDofLoadInputColor(pixel), scale);
     }
 #endif

@@ -127,7 +127,7 @@ FFX_DOF_INLINE void ffxDofDilate(FfxUInt32x2 groupId, FfxUInt32 localIndex)
     // Pass 2 has read the colour peak; the next frame's pass 1 needs it at 0.
     if (groupId.x == 0u && groupId.y == 0u && localIndex == 0u)
         ffxDofResetColorPeak();
-    FfxUInt32x2 tile = groupId * 8u + ffxDofLocalCoord(localIndex);
+    FfxUInt32x2 tile = groupId * FfxUInt32(FFX_DOF_DILATE_GROUP_EXTENT) + ffxDofLocalCoord(localIndex);
     if (tile.x >= constants.tileCount.x || tile.y >= constants.tileCount.y)
         return;
     FfxFloat32x2 farNear = ffxDofDilateTile(tile, constants.tileCount, ffxDofLoadGlobalMaxRadius());

@@ -203,7 +203,7 @@ FFX_DOF_INLINE void ffxDofDownsampleColor(FfxUInt32x2 groupId, FfxUInt32 localIn
         {
             FfxUInt32 i0 = localIndex;
             FfxUInt32 i1 = localIndex + halfStep;
-            FfxUInt32 i2 = localIndex + halfStep * 8u;
+            FfxUInt32 i2 = localIndex + halfStep * FfxUInt32(FFX_DOF_GROUP_SIDE);
             FfxUInt32 i3 = i2 + halfStep;
             ffxDofBilateralReduce(ffxDofSharedMipColor[i0], ffxDofSharedMipColor[i1], ffxDofSharedMipColor[i2],
                                   ffxDofSharedMipColor[i3], ffxDofSharedMipCoc[i0], ffxDofSharedMipCoc[i1],

@@ -84,7 +84,7 @@ FFX_DOF_INLINE FfxFloat32 ffxDofWaveFarthestDepth(FfxFloat32 depth)
 FFX_DOF_INLINE void ffxDofDownsampleDepth(FfxUInt32x2 groupId, FfxUInt32 localIndex)
 {
     FfxDofConstants constants = ffxDofGetConstants();
-    FfxUInt32x2 quad = groupId * 16u + ffxDofLocalCoord(localIndex) * 2u;
+    FfxUInt32x2 quad = groupId * FfxUInt32(FFX_DOF_DOWNSAMPLE_DEPTH_GROUP_EXTENT) + ffxDofLocalCoord(localIndex) * 2u;
     FfxUInt32x2 lastPixel = constants.fullSize - FfxUInt32x2(1u, 1u);
 
     // Pixels past the image edge repeat the edge, which leaves the extremes unchanged.

@@ -90,6 +90,11 @@
 //   TILES     domain = tileCount (ceil(halfSize / FFX_DOF_TILE_SIZE))
 // The four tile-aligned passes give exactly tileCount groups: ceil(W / 16) == ceil(ceil(W / 2) / 8).
 #define FFX_DOF_GROUP_THREADS 64
+// Invocations per side of that square (ffxDofLocalCoord lays them out row by row).
+#define FFX_DOF_GROUP_SIDE 8
+#if FFX_DOF_GROUP_SIDE * FFX_DOF_GROUP_SIDE != FFX_DOF_GROUP_THREADS
+#error "FFX_DOF_GROUP_THREADS must be FFX_DOF_GROUP_SIDE squared"
+#endif
 #define FFX_DOF_DOMAIN_FULL_RES 0
 #define FFX_DOF_DOMAIN_HALF_RES 1
 #define FFX_DOF_DOMAIN_TILES 2
