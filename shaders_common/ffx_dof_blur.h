@@ -55,6 +55,305 @@ void ffxDofStoreFarColor(FfxUInt32x2 texel, FfxDofFloat3 color);
 void ffxDofStoreLayerAlpha(FfxUInt32x2 texel, FfxFloat32x2 nearOpacityFarValidity);
 #endif
 
+// ---- Tuning constants -------------------------------------------------------------------------------
+
+// Amplitude of the random kernel origin: +-half of this, in half-res px.
+#define FFX_DOF_JITTER_AMPLITUDE 0.5f
+// Ring merging: where every radius on a texel's outermost ring is within FLAT of its own radius
+// (half-res px), inner rings are merged; from NOT_FLAT on they are not; in between both are mixed.
+#define FFX_DOF_RING_MERGE_FLAT_SPREAD 0.5f
+#define FFX_DOF_RING_MERGE_NOT_FLAT_SPREAD 1.0f
+// A blur tile whose kernels read only radii within this of each other (half-res px) takes the
+// equal-weight path, where every sample weighs what the texel's own radius gives. Small: bright
+// highlights a fraction of a pixel nearer than their background must keep their own radius
+// (0.5 cost the far-highlights scene 0.29 dB, 0.1 nothing; docs/technique.md).
+#define FFX_DOF_EQUAL_WEIGHT_SPREAD 0.1f
+// Far-field samples up to this much farther than the texel itself (|radius| larger, half-res px) are
+// its own surface (front layer), so that a receding surface is not split into layers; the share then
+// falls to 0 over one more pixel (ffxDofFarFrontShare).
+#define FFX_DOF_FAR_FRONT_TOLERANCE 0.5f
+
+// Tile classes of the blur pass (ffxDofClassifyTile), cheapest first.
+#define FFX_DOF_TILE_CLASS_COPY 0u       // every kernel is in focus: the texel is the far layer
+#define FFX_DOF_TILE_CLASS_EQUAL 1u      // all radii read are within FFX_DOF_EQUAL_WEIGHT_SPREAD
+#define FFX_DOF_TILE_CLASS_FAR_ONLY 2u   // no near-field radius reaches the tile
+#define FFX_DOF_TILE_CLASS_NEAR_ONLY 3u  // every radius read is near-field: no far buckets, no fill
+#define FFX_DOF_TILE_CLASS_MIXED 4u      // near and far field, hole filling
+
+// Blur path of a tile from its DILATED_TILES texel (far, near, footprint min, footprint max).
+// Per tile, never per texel, so that a workgroup runs one path; every path gives what the mixed
+// path would give on that tile (the equal-weight path up to radii within the spread), so the
+// choice never shows as a tile border.
+FFX_DOF_INLINE FfxUInt32 ffxDofClassifyTile(FfxFloat32x4 dilated)
+{
+    if (ffxDofTileKernelRadius(FfxFloat32x2(dilated.x, dilated.y)) < FFX_DOF_IN_FOCUS_RADIUS)
+        return FFX_DOF_TILE_CLASS_COPY;
+    FfxBoolean allNear = dilated.z >= FFX_DOF_NEAR_THRESHOLD;
+    FfxBoolean allFar = dilated.w < FFX_DOF_NEAR_THRESHOLD;
+    if ((allNear || allFar) && dilated.w - dilated.z <= FFX_DOF_EQUAL_WEIGHT_SPREAD)
+        return FFX_DOF_TILE_CLASS_EQUAL;
+    if (dilated.y < FFX_DOF_NEAR_THRESHOLD)
+        return FFX_DOF_TILE_CLASS_FAR_ONLY;
+    if (allNear)
+        return FFX_DOF_TILE_CLASS_NEAR_ONLY;
+    return FFX_DOF_TILE_CLASS_MIXED;
+}
+
+// ---- Kernel walk: every texel of a ring read once -----------------------------------------------
+//
+// Ring k of a kernel whose rings are s apart holds the texels whose centres lie at [(k - 1/2) s,
+// (k + 1/2) s) from the kernel origin (ring 0: [0, s / 2)), and the blur reads each of them once,
+// walking rows. (Points on a circle read from the nearest texel hit a one-texel source 0, 1 or 2
+// times depending on the output texel: a dotted disc, issue 6.)
+
+// The texels (first, last) of a row or column whose centres lie less than `halfWidth` from `center`;
+// in texels, texel i spanning [i, i + 1). first > last when there are none. Strict on both sides,
+// so two rings that share a border share no texel and miss none.
+FFX_DOF_INLINE FfxFloat32x2 ffxDofTexelSpan(FfxFloat32 center, FfxFloat32 halfWidth)
+{
+    return FfxFloat32x2(floor(center - 0.5f - halfWidth) + 1.0f, ceil(center - 0.5f + halfWidth) - 1.0f);
+}
+
+// Inner radius of ring `ring` for rings `spacing` apart; the outer radius of ring k is the inner
+// radius of ring k + 1, the same expression, so that the rings tile the kernel exactly.
+FFX_DOF_INLINE FfxFloat32 ffxDofRingInnerRadius(FfxUInt32 ring, FfxFloat32 spacing)
+{
+    return max(FfxFloat32(ring) - 0.5f, 0.0f) * spacing;
+}
+
+// The texels whose centres lie at [innerRadius, outerRadius) from `origin` (all in texels of one
+// MIP level), walked row by row: what does not change during the walk ...
+// Each border may be judged at a coarser MIP than the walk's (a block of `innerBlock` / `outerBlock`
+// texels per side, a power of two; 1: the walk's own texels): where a walk meets a walk of a coarser
+// MIP, both judge their common border by the coarse texels' centres, so a texel of the finer level
+// is read once, by one of them. Judged by each side's own centres, a one-texel source next to the
+// border was read twice or not at all: a notched, soft rim and a dip at the centre of a single
+// point's disc, and a small light losing or gaining energy (issue 17).
+// One border of an annulus, judged in blocks of `block` texels: what a row's span needs, computed
+// once per walk (the span of the next row is computed at every step of the walk).
+struct FfxDofAnnulusBorder
+{
+    FfxFloat32 block;          // texels per block side (a power of two)
+    FfxFloat32 scale;          // 1 / block
+    FfxFloat32 radiusSquared;  // in blocks^2
+    FfxFloat32 spanCenter;     // origin.x in blocks, less half a block (ffxDofTexelSpan's centre - 0.5)
+    FfxFloat32 rowOffset;      // half a block less origin.y, in blocks
+};
+struct FfxDofAnnulus
+{
+    FfxFloat32x2 origin;
+    FfxDofAnnulusBorder inner;
+    FfxDofAnnulusBorder outer;
+    FfxFloat32 firstRow;
+    FfxFloat32 lastRow;
+};
+// ... and the walk's position.
+struct FfxDofAnnulusWalk
+{
+    FfxFloat32x2 texel;    // the current position, a texel of the annulus while texel.x <= rowLast
+    FfxFloat32 rowLast;    // last texel of the current row
+    FfxFloat32 holeFirst;  // first texel of the row inside the inner radius
+    FfxFloat32 holeEnd;    // first texel after them (holeFirst when the row has none)
+};
+
+// A border of `radius` around `origin` judged in blocks of `block` texels. The block figures are the
+// ones the coarse walk computes for itself (scaling by a power of two is exact), so the two walks
+// agree to the bit on every block.
+FFX_DOF_INLINE FfxDofAnnulusBorder ffxDofMakeAnnulusBorder(FfxFloat32x2 origin, FfxFloat32 radius, FfxFloat32 block)
+{
+    FfxDofAnnulusBorder border;
+    border.block = block;
+    border.scale = 1.0f / block;
+    FfxFloat32 blockRadius = radius * border.scale;
+    border.radiusSquared = blockRadius * blockRadius;
+    border.spanCenter = origin.x * border.scale - 0.5f;
+    border.rowOffset = 0.5f - origin.y * border.scale;
+    return border;
+}
+
+// The texels (first, last) of row `y` whose block has its centre less than the border's radius from
+// the origin: ffxDofTexelSpan of the block row, widened to whole blocks (with block 1, the texels of
+// the row whose centres are inside). first > last when there are none.
+FFX_DOF_INLINE FfxFloat32x2 ffxDofBorderSpan(FfxDofAnnulusBorder border, FfxFloat32 y)
+{
+    FfxFloat32 dy = floor(y * border.scale) + border.rowOffset;
+    FfxFloat32 halfWidth = sqrt(max(border.radiusSquared - dy * dy, 0.0f));
+    FfxFloat32 first = floor(border.spanCenter - halfWidth) + 1.0f;
+    FfxFloat32 last = ceil(border.spanCenter + halfWidth) - 1.0f;
+    return FfxFloat32x2(first * border.block, last * border.block + border.block - 1.0f);
+}
+
+FFX_DOF_INLINE FfxDofAnnulus ffxDofMakeAnnulus(FfxFloat32x2 origin, FfxFloat32 innerRadius, FfxFloat32 outerRadius,
+                                               FfxFloat32 innerBlock, FfxFloat32 outerBlock)
+{
+    FfxDofAnnulus annulus;
+    annulus.origin = origin;
+    annulus.inner = ffxDofMakeAnnulusBorder(origin, innerRadius, innerBlock);
+    annulus.outer = ffxDofMakeAnnulusBorder(origin, outerRadius, outerBlock);
+    FfxFloat32x2 rows = ffxDofTexelSpan(origin.y * annulus.outer.scale, outerRadius * annulus.outer.scale);
+    annulus.firstRow = rows.x * outerBlock;
+    annulus.lastRow = rows.y * outerBlock + outerBlock - 1.0f;
+    return annulus;
+}
+
+// Row `y` of the annulus, positioned on its first texel (past its last one when it has none).
+FFX_DOF_INLINE FfxDofAnnulusWalk ffxDofAnnulusRow(FfxDofAnnulus annulus, FfxFloat32 y)
+{
+    FfxFloat32x2 row = ffxDofBorderSpan(annulus.outer, y);
+    FfxFloat32x2 hole = ffxDofBorderSpan(annulus.inner, y);
+    FfxDofAnnulusWalk walk;
+    walk.rowLast = row.y;
+    walk.holeFirst = hole.x;
+    // An empty hole (first > last, by 2 where the origin lies exactly on a texel centre) must not
+    // send the walk backwards.
+    walk.holeEnd = max(hole.y + 1.0f, hole.x);
+    // Judged in blocks of different sizes, the hole may begin before the row does.
+    walk.texel = FfxFloat32x2(row.x >= walk.holeFirst && row.x < walk.holeEnd ? walk.holeEnd : row.x, y);
+    return walk;
+}
+
+FFX_DOF_INLINE FfxDofAnnulusWalk ffxDofAnnulusBegin(FfxDofAnnulus annulus)
+{
+    return ffxDofAnnulusRow(annulus, annulus.firstRow);
+}
+
+// Whether the walk has rows left. Its position may still be no texel: a row at the top or bottom,
+// or a row of a thin annulus, can be empty, and a walk step finds one row, never loops over rows
+// (ffxDofAnnulusValid says).
+FFX_DOF_INLINE FfxBoolean ffxDofAnnulusRowsLeft(FfxDofAnnulus annulus, FfxDofAnnulusWalk walk)
+{
+    return walk.texel.y <= annulus.lastRow;
+}
+FFX_DOF_INLINE FfxBoolean ffxDofAnnulusValid(FfxDofAnnulusWalk walk) { return walk.texel.x <= walk.rowLast; }
+
+// One step: the next texel of the row, else the first of the next row. Straight-line, the next row
+// computed and selected: a loop over empty rows (or a branch, on devices that run both sides of
+// every branch in lock step, like lavapipe) cost more than the row itself.
+FFX_DOF_INLINE FfxDofAnnulusWalk ffxDofAnnulusNext(FfxDofAnnulus annulus, FfxDofAnnulusWalk walk)
+{
+    FfxFloat32 x = walk.texel.x + 1.0f;
+    walk.texel.x = x == walk.holeFirst ? walk.holeEnd : x;
+    FfxDofAnnulusWalk next = ffxDofAnnulusRow(annulus, walk.texel.y + 1.0f);
+    return walk.texel.x > walk.rowLast ? next : walk;
+}
+
+// ---- Kernel size --------------------------------------------------------------------------------
+
+// Rings for a kernel of `radius`: none below the in-focus radius (the pixel is copied), else one per
+// pixel of radius, at most the quality setting and FFX_DOF_OPTION_MAX_RINGS.
+FFX_DOF_INLINE FfxUInt32 ffxDofRingCount(FfxFloat32 radius, FfxUInt32 maxRings)
+{
+    if (radius < FFX_DOF_IN_FOCUS_RADIUS)
+        return 0u;
+    FfxUInt32 limit = clamp(maxRings, 1u, FfxUInt32(FFX_DOF_OPTION_MAX_RINGS));
+    return min(FfxUInt32(ceil(radius)), limit);
+}
+
+// MIP level to read when rings are `spacing` half-res px apart: the level whose texel size is nearest
+// the spacing in log2, so the spacing is 0.71 to 1.41 texels (from 0.5 at level 0). The blur reads
+// every texel of its kernel, pi ((rings + 1/2) s / texel)^2 of them, where 6k points per ring cost
+// 3 rings^2: rounding the level keeps the two about equal (pi E[(s / texel)^2] = 3.4 for a
+// log-uniform spacing); the finest level no larger than the spacing cost up to 4 times as much.
+FFX_DOF_INLINE FfxFloat32 ffxDofMipForSpacing(FfxFloat32 spacing)
+{
+    return clamp(floor(log2(max(spacing, 1.0f)) + 0.5f), 0.0f, FfxFloat32(FFX_DOF_OPTION_MAX_MIP - 1));
+}
+
+// Random sub-pixel kernel origin for one pixel and frame, in half-res px.
+FFX_DOF_INLINE FfxUInt32 ffxDofHash(FfxUInt32 x)
+{
+    x ^= x >> 16u;
+    x *= 0x7feb352du;
+    x ^= x >> 15u;
+    x *= 0x846ca68bu;
+    x ^= x >> 16u;
+    return x;
+}
+FFX_DOF_INLINE FfxFloat32x2 ffxDofKernelJitter(FfxUInt32x2 pixel, FfxUInt32 frameIndex)
+{
+    FfxUInt32 h = ffxDofHash(pixel.x ^ ffxDofHash(pixel.y ^ ffxDofHash(frameIndex)));
+    FfxFloat32x2 unit = FfxFloat32x2(FfxFloat32(h & 0xffffu), FfxFloat32(h >> 16u)) * (1.0f / 65536.0f);
+    return (unit - FfxFloat32x2(0.5f, 0.5f)) * FFX_DOF_JITTER_AMPLITUDE;
+}
+
+// ---- Gathering ----------------------------------------------------------------------------------
+
+// How much of the merged-ring path a texel takes (0: all rings at full resolution, 1: merged), from
+// the largest difference between its own radius and those on its outermost ring. Continuous, so
+// the result changes smoothly where the radii stop being flat.
+FFX_DOF_INLINE FfxFloat32 ffxDofRingMergeAmount(FfxFloat32 cocSpread)
+{
+    return ffxDofSaturate((FFX_DOF_RING_MERGE_NOT_FLAT_SPREAD - cocSpread) /
+                          (FFX_DOF_RING_MERGE_NOT_FLAT_SPREAD - FFX_DOF_RING_MERGE_FLAT_SPREAD));
+}
+
+// How much a sample of |radius| reaches a pixel `distance` away (scatter-as-gather), with half a
+// pixel of anti-aliasing.
+FFX_DOF_INLINE FfxFloat32 ffxDofReach(FfxFloat32 absRadius, FfxFloat32 distance)
+{
+    return ffxDofSaturate(absRadius - distance + 0.5f);
+}
+
+// A sample spreads its energy over its disc: weight proportional to the inverse disc area,
+// normalized so that a radius of half a pixel or less weighs 4.
+FFX_DOF_INLINE FfxFloat32 ffxDofAreaWeight(FfxFloat32 absRadius) { return 1.0f / max(absRadius * absRadius, 0.25f); }
+
+// A weighted sum of far-field samples.
+struct FfxDofBucket
+{
+    FfxFloat32x3 color;  // sum of color * weight (32-bit: hundreds of HDR samples overflow 16 bits)
+    FfxFloat32 weight;   // sum of reach * area weight * texel area
+};
+
+FFX_DOF_INLINE FfxDofBucket ffxDofEmptyBucket()
+{
+    FfxDofBucket bucket;
+    bucket.color = FfxFloat32x3(0.0f, 0.0f, 0.0f);
+    bucket.weight = 0.0f;
+    return bucket;
+}
+
+// How much of a far-field sample of |radius| `absRadius` belongs to the front layer of a texel whose
+// own far-field |radius| is `centerAbsRadius`: 1 up to FFX_DOF_FAR_FRONT_TOLERANCE beyond the texel's
+// own radius (the texel's surface and everything nearer the camera), falling to 0 one pixel of radius
+// farther (the background, seen only where the front layer leaves gaps). A texel in the near field has
+// no front layer: every far-field sample is background to it.
+FFX_DOF_INLINE FfxFloat32 ffxDofFarFrontShare(FfxFloat32 absRadius, FfxFloat32 centerAbsRadius)
+{
+    return ffxDofSaturate(centerAbsRadius + FFX_DOF_FAR_FRONT_TOLERANCE + 1.0f - absRadius);
+}
+
+// Far-field color of a texel from its two layers, composed front to back. Every far sample spreads its
+// light over its own disc, so the front layer's summed weights over pi are the share of the texel it
+// covers (a solid surface of any radius sums to pi: opacity 1); the background shows through the rest.
+// Without this, the ring occlusion of the technique let a small light nearer than its background
+// occlude the whole kernel at its own position: its centre kept the input's brightness on top of its
+// disc. Returns false when neither layer has weight (no far-field sample reaches the texel).
+FFX_DOF_INLINE FfxBoolean ffxDofComposeFarLayers(FfxDofBucket front, FfxDofBucket back, FFX_DOF_OUT(FfxFloat32x3) color)
+{
+    color = FfxFloat32x3(0.0f, 0.0f, 0.0f);
+    if (front.weight <= 0.0f && back.weight <= 0.0f)
+        return false;
+    if (back.weight <= 0.0f)
+    {
+        color = front.color / front.weight;
+        return true;
+    }
+    FfxFloat32 frontOpacity = ffxDofSaturate(front.weight * (1.0f / 3.14159265359f));
+    FfxFloat32x3 frontColor = front.weight > 0.0f ? front.color / front.weight : FfxFloat32x3(0.0f, 0.0f, 0.0f);
+    color = frontColor * frontOpacity + (back.color / back.weight) * (1.0f - frontOpacity);
+    return true;
+}
+
+// Near-field opacity from the weights of the near samples that reach the pixel (scatter as gather).
+// A sample weighs reach * ffxDofAreaWeight(radius) * the area of the texel read (4^mip half-res
+// px^2), so the sum is the area the near field covers in the kernel over its discs' areas / pi: a
+// solid near region of the kernel's radius R sums to pi R^2 / R^2 = pi, opacity 1.
+FFX_DOF_INLINE FfxFloat32 ffxDofNearOpacity(FfxFloat32 nearWeight)
+{
+    return ffxDofSaturate(nearWeight * (1.0f / 3.14159265359f));
+}
+
 struct FfxDofBlurResult
 {
     FfxDofFloat3 nearColor;

@@ -10,8 +10,12 @@
 //      bit for bit. Otherwise: near layer upsampled bilinearly (any zero-opacity corner gives zero
 //      opacity); far layer upsampled joint-bilaterally (taps weighted by validity and by how well
 //      their CoC matches the pixel's, so a sharp foreground never spills into the blurred
-//      background); fixed 3x3 blur for radii 0.5..1.5; layers blended (ffxDofFixedBlurBlend,
-//      ffxDofFarBlend, ffxDofCubicWeight).
+//      background). Layers blended so that the combined blur has the variance of the pixel's disc
+//      (ffxDofDiscVariance): the fixed 3x3 blur is mixed into the input by the radius, alone from
+//      |radius| 0.76 half-res px (ffxDofFixedBlurBlend; left out under a near-field opacity above
+//      FFX_DOF_NEAR_BLOCKS_FIXED_BLUR, where it would spread foreground color), the far layer over
+//      it, alone from FFX_DOF_FAR_LAYER_ONLY_RADIUS (ffxDofFarBlend), and the near layer on top
+//      (ffxDofCubicWeight).
 // The composite also writes 0 to GLOBALS for the next dispatch (pass 3 has read it).
 // HDR range: the input color is multiplied by the frame's ffxDofColorRangeScale (from GLOBALS, written
 // by pass 2) as it is read, in 32-bit, so all the work happens in the range of the half-res layers;
@@ -39,6 +43,130 @@ void ffxDofResetGlobals();
 FfxFloat32 ffxDofLoadColorScale();
 #endif
 
+// ---- Tuning constants -------------------------------------------------------------------------------
+
+// Upper bound on the brightness gain of the median post-filter.
+#define FFX_DOF_MEDIAN_MAX_GAIN 2.0f
+// Above this near-field opacity the fixed 3x3 blur is not used (it would spread foreground color).
+#define FFX_DOF_NEAR_BLOCKS_FIXED_BLUR 0.3f
+// Coverage of the neighbours of a pixel by a disc of diameter 3 px centred on it (edge, corner);
+// the centre is covered fully. Numerically integrated; tests/shaders recomputes them.
+#define FFX_DOF_FIXED_BLUR_EDGE_WEIGHT 0.9718f
+#define FFX_DOF_FIXED_BLUR_CORNER_WEIGHT 0.5454f
+// Per-axis variance of that 3x3 kernel, in half-res px^2: (2 * edge + 4 * corner) / (1 + 4 * edge +
+// 4 * corner) full-res px^2, divided by 4.
+#define FFX_DOF_FIXED_BLUR_VARIANCE 0.1459f
+// Per-axis variance, in half-res px^2, that the far layer adds to its disc: the 2x2 downsample box
+// (1/12), the bilinear upsample (1/6), the kernel jitter and the half-pixel anti-aliased reach.
+#define FFX_DOF_FAR_LAYER_EXTRA_VARIANCE 0.3f
+// From this |radius| (half-res px) on, the far layer alone makes the pixel.
+#define FFX_DOF_FAR_LAYER_ONLY_RADIUS 3.0f
+
+// Back from the effect's range: exact for a power-of-two scale (unless the result is a denormal),
+// clamped to the largest finite float.
+FFX_DOF_INLINE FfxFloat32x4 ffxDofUnscaleColor(FfxFloat32x4 color, FfxFloat32 scale)
+{
+    return FfxFloat32x4(min(color.x / scale, FFX_DOF_FLOAT32_MAX), min(color.y / scale, FFX_DOF_FLOAT32_MAX),
+                        min(color.z / scale, FFX_DOF_FLOAT32_MAX), color.w);
+}
+
+// ---- Post-filter and composition ----------------------------------------------------------------
+
+// Median of nine values by a 19-exchange selection network.
+FFX_DOF_INLINE void ffxDofSort2(FFX_DOF_INOUT(FfxFloat32) a, FFX_DOF_INOUT(FfxFloat32) b)
+{
+    FfxFloat32 lo = min(a, b);
+    b = max(a, b);
+    a = lo;
+}
+FFX_DOF_INLINE FfxFloat32 ffxDofMedian9(FfxFloat32 p0, FfxFloat32 p1, FfxFloat32 p2, FfxFloat32 p3, FfxFloat32 p4,
+                                        FfxFloat32 p5, FfxFloat32 p6, FfxFloat32 p7, FfxFloat32 p8)
+{
+    ffxDofSort2(p1, p2);
+    ffxDofSort2(p4, p5);
+    ffxDofSort2(p7, p8);
+    ffxDofSort2(p0, p1);
+    ffxDofSort2(p3, p4);
+    ffxDofSort2(p6, p7);
+    ffxDofSort2(p1, p2);
+    ffxDofSort2(p4, p5);
+    ffxDofSort2(p7, p8);
+    p3 = max(p0, p3);
+    p5 = min(p5, p8);
+    ffxDofSort2(p4, p7);
+    p6 = max(p3, p6);
+    p4 = max(p1, p4);
+    p2 = min(p2, p5);
+    p4 = min(p4, p7);
+    ffxDofSort2(p4, p2);
+    p4 = max(p6, p4);
+    return min(p4, p2);
+}
+
+// Brightness factor that moves a pixel of luminance `centerLuminance` to the median of its
+// neighbourhood; a zero median or a black pixel leaves it unchanged, the gain is bounded.
+FFX_DOF_INLINE FfxFloat32 ffxDofMedianGain(FfxFloat32 centerLuminance, FfxFloat32 medianLuminance)
+{
+    if (medianLuminance <= 0.0f || centerLuminance <= 0.0f)
+        return 1.0f;
+    return min(medianLuminance / centerLuminance, FFX_DOF_MEDIAN_MAX_GAIN);
+}
+
+// Blend weight from a filtered opacity: flat at 0 and 1 so that the layer edges do not bleed.
+FFX_DOF_INLINE FfxFloat32 ffxDofCubicWeight(FfxFloat32 opacity)
+{
+    FfxFloat32 a = ffxDofSaturate(opacity);
+    return a * a * (3.0f - 2.0f * a);
+}
+
+// Weight of a neighbour of the fixed 3x3 blur (offsets in -1..1).
+FFX_DOF_INLINE FfxFloat32 ffxDofFixedBlurWeight(FfxInt32 dx, FfxInt32 dy)
+{
+    FfxInt32 taxicab = abs(dx) + abs(dy);
+    return taxicab == 0 ? 1.0f : (taxicab == 1 ? FFX_DOF_FIXED_BLUR_EDGE_WEIGHT : FFX_DOF_FIXED_BLUR_CORNER_WEIGHT);
+}
+
+// Weights of the 2 x 2 half-res texels around a full-res pixel for bilinear upsampling:
+// returns the fractional position (weights of the right / bottom texels) and the top-left texel.
+FFX_DOF_INLINE FfxFloat32x2 ffxDofUpsamplePosition(FfxUInt32x2 fullPixel, FFX_DOF_OUT(FfxInt32x2) topLeftTexel)
+{
+    // Full-res pixel centre in half-res texel space, where texel i has its centre at i.
+    FfxFloat32x2 position = (FfxFloat32x2(fullPixel) + FfxFloat32x2(0.5f, 0.5f)) * 0.5f - FfxFloat32x2(0.5f, 0.5f);
+    FfxFloat32x2 base = floor(position);
+    topLeftTexel = FfxInt32x2(base);
+    return position - base;
+}
+
+// Joint-bilateral factor of a half-res tap for a full-res pixel: how well the tap's radius matches
+// the pixel's, relative to the pixel's own radius. Never exactly 0, so a pixel that matches no tap
+// falls back to plain bilinear weights.
+FFX_DOF_INLINE FfxFloat32 ffxDofUpsampleCocWeight(FfxFloat32 tapCoc, FfxFloat32 pixelCoc)
+{
+    FfxFloat32 tolerance = max(1.0f, 0.5f * abs(pixelCoc));
+    return max(ffxDofSaturate(1.0f - abs(tapCoc - pixelCoc) / tolerance), 1e-3f);
+}
+
+// Blend weights of the layers below the near field, from the pixel's |radius| (half-res px). The
+// layers are blended so that the second moment of the combined kernel (mixing kernels adds their
+// variances, weighted) matches that of the pixel's disc, |radius|^2 / 4 per axis: the fixed 3x3 blur
+// (FFX_DOF_FIXED_BLUR_VARIANCE) is mixed into the input until it alone is right, then the far layer
+// (the disc plus FFX_DOF_FAR_LAYER_EXTRA_VARIANCE from half-res processing) into the fixed blur.
+// Any other choice blurs the small radii behind the focus too little or too much.
+FFX_DOF_INLINE FfxFloat32 ffxDofDiscVariance(FfxFloat32 absCoc) { return 0.25f * absCoc * absCoc; }
+FFX_DOF_INLINE FfxFloat32 ffxDofFixedBlurBlend(FfxFloat32 absCoc, FfxFloat32 nearOpacity)
+{
+    return nearOpacity > FFX_DOF_NEAR_BLOCKS_FIXED_BLUR
+               ? 0.0f
+               : ffxDofSaturate(ffxDofDiscVariance(absCoc) / FFX_DOF_FIXED_BLUR_VARIANCE);
+}
+FFX_DOF_INLINE FfxFloat32 ffxDofFarBlend(FfxFloat32 absCoc, FfxFloat32 farValidity)
+{
+    FfxFloat32 excess = ffxDofDiscVariance(absCoc) - FFX_DOF_FIXED_BLUR_VARIANCE;
+    FfxFloat32 matched = excess / max(excess + FFX_DOF_FAR_LAYER_EXTRA_VARIANCE, 1e-6f);
+    // From a radius of 2 the mixture's sharp remainder shows more than the excess spread: fade it out.
+    return ffxDofSaturate(max(matched, absCoc - FFX_DOF_FAR_LAYER_ONLY_RADIUS + 1.0f)) * farValidity;
+}
+
 #define FFX_DOF_RAW_SIDE 12       // half-res texels loaded per side: tile + 2 each side
 #define FFX_DOF_FILTERED_SIDE 10  // half-res texels filtered per side: tile + 1 each side
 
@@ -59,7 +187,7 @@ FFX_DOF_GROUPSHARED FfxFloat32 ffxDofSharedCoc[FFX_DOF_FILTERED_SIDE * FFX_DOF_F
 // The difference to out of place: the fixed blur of the tile's border pixels sees half-res color
 // for its outer neighbours (bilateral 2x2 averages): documented in docs/technique.md and bounded by
 // the in-place test of tests/quality.
-FFX_DOF_GROUPSHARED FfxFloat32x4 ffxDofSharedInput[16 * 16];
+FFX_DOF_GROUPSHARED FfxFloat32x4 ffxDofSharedInput[FFX_DOF_COMPOSITE_GROUP_EXTENT * FFX_DOF_COMPOSITE_GROUP_EXTENT];
 #endif
 
 FFX_DOF_INLINE FfxInt32x2 ffxDofClampHalfTexel(FfxInt32x2 texel, FfxUInt32x2 halfSize)
@@ -119,10 +247,11 @@ FFX_DOF_INLINE void ffxDofPostFilterTexel(FfxUInt32 index)
 // Returns the scaled color (the group-shared copy and MIP 0 are scaled already).
 FFX_DOF_INLINE FfxFloat32x4 ffxDofCompositeInput(FfxUInt32x2 pixel, FfxUInt32x2 ownPixel, FfxFloat32 scale)
 {
-    FfxUInt32x2 tileOrigin = (ownPixel / 16u) * 16u;
-    if (pixel.x >= tileOrigin.x && pixel.y >= tileOrigin.y && pixel.x < tileOrigin.x + 16u &&
-        pixel.y < tileOrigin.y + 16u)
-        return ffxDofSharedInput[(pixel.y - tileOrigin.y) * 16u + pixel.x - tileOrigin.x];
+    FfxUInt32 extent = FfxUInt32(FFX_DOF_COMPOSITE_GROUP_EXTENT);
+    FfxUInt32x2 tileOrigin = (ownPixel / extent) * extent;
+    if (pixel.x >= tileOrigin.x && pixel.y >= tileOrigin.y && pixel.x < tileOrigin.x + extent &&
+        pixel.y < tileOrigin.y + extent)
+        return ffxDofSharedInput[(pixel.y - tileOrigin.y) * extent + pixel.x - tileOrigin.x];
     FfxDofFloat3 color = ffxDofLoadColorMip(FfxInt32x2(pixel / 2u), 0u);
     return FfxFloat32x4(FfxFloat32(color.x), FfxFloat32(color.y), FfxFloat32(color.z), 1.0f);
 }
@@ -247,7 +376,8 @@ FFX_DOF_INLINE void ffxDofComposite(FfxUInt32x2 groupId, FfxUInt32 localIndex)
     if (groupId.x == 0u && groupId.y == 0u && localIndex == 0u)
         ffxDofResetGlobals();
 
-    FfxUInt32x2 quad = groupId * 16u + ffxDofLocalCoord(localIndex) * 2u;
+    FfxUInt32 extent = FfxUInt32(FFX_DOF_COMPOSITE_GROUP_EXTENT);
+    FfxUInt32x2 quad = groupId * extent + ffxDofLocalCoord(localIndex) * 2u;
     FfxFloat32 scale = ffxDofLoadColorScale();
     FfxFloat32x2 tile = ffxDofLoadTile(groupId);
     FfxFloat32x4 dilatedTile = ffxDofLoadDilatedTile(groupId);
@@ -273,7 +403,7 @@ FFX_DOF_INLINE void ffxDofComposite(FfxUInt32x2 groupId, FfxUInt32 localIndex)
     {
         FfxUInt32x2 pixel = quad + FfxUInt32x2(k & 1u, k >> 1u);
         if (pixel.x < constants.fullSize.x && pixel.y < constants.fullSize.y)
-            ffxDofSharedInput[(pixel.y - groupId.y * 16u) * 16u + pixel.x - groupId.x * 16u] =
+            ffxDofSharedInput[(pixel.y - groupId.y * extent) * extent + pixel.x - groupId.x * extent] =
                 ffxDofScaleColor(ffxDofLoadInputColor(pixel), scale);
     }
 #endif

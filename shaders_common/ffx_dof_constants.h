@@ -3,7 +3,8 @@
 //
 // Layout rules that make the three languages agree: only 32-bit scalars and 2-component vectors,
 // every 2-component vector at an 8-byte aligned offset. The C++ side checks size and offsets with
-// static_assert; tests/shaders checks them again against SPIR-V reflection of every pass.
+// static_assert; tests/shaderc/test_real_passes.cpp checks them again against the push constant
+// block reflected from every pass's SPIR-V, compiled from GLSL and from HLSL.
 #ifndef FFX_DOF_CONSTANTS_H
 #define FFX_DOF_CONSTANTS_H
 

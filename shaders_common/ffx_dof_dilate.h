@@ -22,6 +22,46 @@ void ffxDofStoreDilatedTile(FfxUInt32x2 tile, FfxFloat32x4 farNearFootprint);
 void ffxDofResetColorPeak();
 #endif
 
+// ---- Tile reach -------------------------------------------------------------------------------------
+
+// Extra half-res px a tile's radius is granted during dilation: soft sample reach (0.5), the
+// sub-pixel kernel jitter (< 0.36) and the composite's 3x3 filter plus bilinear footprint (2).
+#define FFX_DOF_DILATE_MARGIN 3.0f
+
+// Shortest distance, in half-res px, between a pixel centre of the central tile and a pixel centre
+// of the tile `tileOffset` tiles away.
+FFX_DOF_INLINE FfxFloat32 ffxDofTileGapDistance(FfxInt32x2 tileOffset)
+{
+    FfxFloat32 tileSize = FfxFloat32(FFX_DOF_TILE_SIZE);
+    FfxFloat32 gapX = max(FfxFloat32(abs(tileOffset.x)) * tileSize - (tileSize - 1.0f), 0.0f);
+    FfxFloat32 gapY = max(FfxFloat32(abs(tileOffset.y)) * tileSize - (tileSize - 1.0f), 0.0f);
+    return sqrt(gapX * gapX + gapY * gapY);
+}
+
+// Whether a tile whose largest spreading radius is `radius` can affect any pixel `distance` away
+// (ffxDofTileGapDistance), including everything the later passes derive from that pixel.
+FFX_DOF_INLINE FfxBoolean ffxDofTileReaches(FfxFloat32 radius, FfxFloat32 distance)
+{
+    return radius > 0.0f && radius + FFX_DOF_DILATE_MARGIN > distance;
+}
+
+// Number of tiles to look at on each side of the central tile during dilation.
+FFX_DOF_INLINE FfxInt32 ffxDofDilateTileRange(FfxFloat32 globalMaxRadius)
+{
+    return FfxInt32(ceil((globalMaxRadius + FFX_DOF_DILATE_MARGIN) / FfxFloat32(FFX_DOF_TILE_SIZE)));
+}
+
+// Distance (half-res px, from texel centre to texel centre) within which the blur kernels of a tile
+// whose largest kernel radius is `kernelRadius` can read a texel or a MIP texel covering it: the
+// radius, the sub-pixel origin (FFX_DOF_DILATE_MARGIN covers it), and two ring spacings for the
+// extent of the MIP texels read (ffxDofMipForSpacing's texels are at most 1.41 spacings wide, a
+// merged ring's 2.83: half a diagonal is at most 2 spacings).
+FFX_DOF_INLINE FfxFloat32 ffxDofKernelFootprintRadius(FfxFloat32 kernelRadius, FfxUInt32 maxRings)
+{
+    FfxFloat32 rings = FfxFloat32(clamp(maxRings, 1u, FfxUInt32(FFX_DOF_OPTION_MAX_RINGS)));
+    return kernelRadius + FFX_DOF_DILATE_MARGIN + 2.0f * max(kernelRadius / rings, 1.0f);
+}
+
 // The tiles within `range` tiles of `center` each way, clipped to the image: first..last inclusive.
 FFX_DOF_INLINE void ffxDofTileWindow(FfxInt32x2 center, FfxInt32 range, FfxUInt32x2 tileCount,
                                      FFX_DOF_OUT(FfxInt32x2) first, FFX_DOF_OUT(FfxInt32x2) last)
@@ -87,7 +127,7 @@ FFX_DOF_INLINE void ffxDofDilate(FfxUInt32x2 groupId, FfxUInt32 localIndex)
     // Pass 2 has read the colour peak; the next frame's pass 1 needs it at 0.
     if (groupId.x == 0u && groupId.y == 0u && localIndex == 0u)
         ffxDofResetColorPeak();
-    FfxUInt32x2 tile = groupId * 8u + ffxDofLocalCoord(localIndex);
+    FfxUInt32x2 tile = groupId * FfxUInt32(FFX_DOF_DILATE_GROUP_EXTENT) + ffxDofLocalCoord(localIndex);
     if (tile.x >= constants.tileCount.x || tile.y >= constants.tileCount.y)
         return;
     FfxFloat32x2 farNear = ffxDofDilateTile(tile, constants.tileCount, ffxDofLoadGlobalMaxRadius());

@@ -21,6 +21,129 @@ FfxFloat32 ffxDofLoadColorPeak();
 void ffxDofStoreColorScale(FfxFloat32 scale);
 #endif
 
+// ---- Bilateral downsampling -------------------------------------------------------------------------
+
+// Weight of a pixel of a 2x2 quad from how far its radius is from the quad's reference radius
+// (ffxDofQuadReferenceCoc): 1 for equal radii, falling linearly to 0 at a difference of one pixel.
+FFX_DOF_INLINE FfxFloat32 ffxDofBilateralWeight(FfxFloat32 referenceCoc, FfxFloat32 coc)
+{
+    return ffxDofSaturate(1.0f - abs(coc - referenceCoc));
+}
+
+// The reference radius of a 2x2 quad: the one closest to the quad's mean (the same whichever pixel
+// of the quad it is; the top-left pixel as reference made an isolated pixel of another radius gain
+// energy at one position of the quad and lose it at the others).
+FFX_DOF_INLINE FfxFloat32 ffxDofQuadReferenceCoc(FfxFloat32 coc0, FfxFloat32 coc1, FfxFloat32 coc2, FfxFloat32 coc3)
+{
+    FfxFloat32 mean = (coc0 + coc1 + coc2 + coc3) * 0.25f;
+    FfxFloat32 reference = coc0;
+    if (abs(coc1 - mean) < abs(reference - mean))
+        reference = coc1;
+    if (abs(coc2 - mean) < abs(reference - mean))
+        reference = coc2;
+    if (abs(coc3 - mean) < abs(reference - mean))
+        reference = coc3;
+    return reference;
+}
+
+// Weight of a quad pixel of radius `coc`: 1 for all while every radius of the quad is within one
+// pixel of every other (the plain average: every pixel's energy stays in the texel), the bilateral
+// weight relative to the reference once the quad's range of radii exceeds 1.25 px, mixed in between
+// so that the texel changes continuously with the radii.
+FFX_DOF_INLINE FfxFloat32 ffxDofQuadWeight(FfxFloat32 referenceCoc, FfxFloat32 cocRange, FfxFloat32 coc)
+{
+    return max(ffxDofBilateralWeight(referenceCoc, coc), ffxDofSaturate((1.25f - cocRange) * 4.0f));
+}
+
+// Luminance of the quad's reference pixel (the first whose radius is the reference).
+FFX_DOF_INLINE FfxFloat32 ffxDofQuadReferenceLuminance(FfxFloat32 reference, FfxFloat32 coc0, FfxFloat32 coc1,
+                                                       FfxFloat32 coc2, FfxDofFloat3 color0, FfxDofFloat3 color1,
+                                                       FfxDofFloat3 color2, FfxDofFloat3 color3)
+{
+    if (coc0 == reference)
+        return ffxDofLuminance(color0);
+    if (coc1 == reference)
+        return ffxDofLuminance(color1);
+    if (coc2 == reference)
+        return ffxDofLuminance(color2);
+    return ffxDofLuminance(color3);
+}
+
+// Keeps the energy of small lights through the bilateral reduction, which would drop the pixels of
+// another radius than the quad's reference:
+// - a pixel far brighter than the reference pixel is kept whatever its radius (weight 1 from 4 times
+//   the reference's luminance, none below 2 times): a small light among pixels of another radius
+//   would otherwise vanish from the half-resolution image and every MIP above it. Its radius then
+//   dominates the texel's (radii are averaged with luminance weights), so it spreads with its disc;
+// - where the reference is itself such a light in the far field, the far darker pixels behind it are
+//   kept as well (same ratios): dropped, the light's color would fill the whole texel, and a light of
+//   a few texels would gain up to a third of its energy at every MIP level.
+FFX_DOF_INLINE FfxFloat32 ffxDofLightKeep(FfxDofFloat3 color, FfxFloat32 coc, FfxFloat32 referenceCoc,
+                                          FfxFloat32 referenceLuminance)
+{
+    // Only within the far field: a near-field pixel in a far texel, or the reverse,
+    // would move the texel's radius across the layers.
+    if (coc >= FFX_DOF_NEAR_THRESHOLD || referenceCoc >= FFX_DOF_NEAR_THRESHOLD)
+        return 0.0f;
+    FfxFloat32 luminance = ffxDofLuminance(color);
+    // An in-focus pixel is drawn from the full-resolution input: kept in a blurred texel, it would
+    // only spread its color into the background.
+    FfxFloat32 brighter = ffxDofSaturate(luminance / (2.0f * referenceLuminance + 1e-4f) - 1.0f) *
+                          ffxDofSaturate(-coc - FFX_DOF_IN_FOCUS_RADIUS);
+    FfxFloat32 darkerBehind = ffxDofSaturate(referenceLuminance / (2.0f * luminance + 1e-4f) - 1.0f) *
+                              ffxDofSaturate(referenceCoc - coc) *
+                              ffxDofSaturate(-referenceCoc - FFX_DOF_IN_FOCUS_RADIUS);
+    return max(brighter, darkerBehind);
+}
+
+// Reduces a 2x2 quad (0: top-left, 1: top-right, 2: bottom-left, 3: bottom-right). The same kernel
+// makes every MIP level. The radius is averaged with the color's luminance as an extra weight: the
+// texel's light spreads with the radius of the pixels it comes from (a bright point keeps its own
+// radius among darker pixels of a slightly different one).
+FFX_DOF_INLINE void ffxDofBilateralReduce(FfxDofFloat3 color0, FfxDofFloat3 color1, FfxDofFloat3 color2,
+                                          FfxDofFloat3 color3, FfxFloat32 coc0, FfxFloat32 coc1, FfxFloat32 coc2,
+                                          FfxFloat32 coc3, FFX_DOF_OUT(FfxDofFloat3) color, FFX_DOF_OUT(FfxFloat32) coc)
+{
+    FfxFloat32 reference = ffxDofQuadReferenceCoc(coc0, coc1, coc2, coc3);
+    FfxFloat32 range = max(max(coc0, coc1), max(coc2, coc3)) - min(min(coc0, coc1), min(coc2, coc3));
+    FfxFloat32 referenceLight =
+        ffxDofQuadReferenceLuminance(reference, coc0, coc1, coc2, color0, color1, color2, color3);
+    FfxFloat32 weight0 =
+        max(ffxDofQuadWeight(reference, range, coc0), ffxDofLightKeep(color0, coc0, reference, referenceLight));
+    FfxFloat32 weight1 =
+        max(ffxDofQuadWeight(reference, range, coc1), ffxDofLightKeep(color1, coc1, reference, referenceLight));
+    FfxFloat32 weight2 =
+        max(ffxDofQuadWeight(reference, range, coc2), ffxDofLightKeep(color2, coc2, reference, referenceLight));
+    FfxFloat32 weight3 =
+        max(ffxDofQuadWeight(reference, range, coc3), ffxDofLightKeep(color3, coc3, reference, referenceLight));
+    FfxFloat32 normalization = 1.0f / (weight0 + weight1 + weight2 + weight3);  // the reference weighs 1
+    color = (color0 * FfxDofFloat(weight0) + color1 * FfxDofFloat(weight1) + color2 * FfxDofFloat(weight2) +
+             color3 * FfxDofFloat(weight3)) *
+            FfxDofFloat(normalization);
+    // A small floor keeps black quads at the plain weighted mean.
+    FfxFloat32 light0 = weight0 * (ffxDofLuminance(color0) + 1e-3f);
+    FfxFloat32 light1 = weight1 * (ffxDofLuminance(color1) + 1e-3f);
+    FfxFloat32 light2 = weight2 * (ffxDofLuminance(color2) + 1e-3f);
+    FfxFloat32 light3 = weight3 * (ffxDofLuminance(color3) + 1e-3f);
+    coc = (coc0 * light0 + coc1 * light1 + coc2 * light2 + coc3 * light3) / (light0 + light1 + light2 + light3);
+}
+
+// ---- HDR range --------------------------------------------------------------------------------------
+
+// The factor the frame's colour is multiplied by inside the effect: 1 when `peak` (the largest finite
+// colour channel of the frame) is at most FFX_DOF_COLOR_RANGE_LIMIT, else the largest power of two
+// 2^-k with peak * 2^-k <= FFX_DOF_COLOR_RANGE_LIMIT (for any finite peak, k <= 116: a normal float).
+FFX_DOF_INLINE FfxFloat32 ffxDofColorRangeScale(FfxFloat32 peak)
+{
+    if (!(peak > FFX_DOF_COLOR_RANGE_LIMIT))
+        return 1.0f;
+    FfxUInt32 bits = ffxDofAsUInt(min(peak, FFX_DOF_FLOAT32_MAX));
+    // peak is in [2^exponent, 2^(exponent + 1)); an exact power of two needs one step less.
+    FfxInt32 exponent = FfxInt32((bits >> 23u) & 0xffu) - 127;
+    FfxInt32 k = exponent - FFX_DOF_COLOR_RANGE_LIMIT_LOG2 + ((bits & 0x7fffffu) != 0u ? 1 : 0);
+    return ffxDofAsFloat(FfxUInt32(127 - k) << 23u);
+}
+
 FFX_DOF_GROUPSHARED FfxDofFloat3 ffxDofSharedMipColor[FFX_DOF_GROUP_THREADS];
 FFX_DOF_GROUPSHARED FfxFloat32 ffxDofSharedMipCoc[FFX_DOF_GROUP_THREADS];
 
@@ -80,7 +203,7 @@ FFX_DOF_INLINE void ffxDofDownsampleColor(FfxUInt32x2 groupId, FfxUInt32 localIn
         {
             FfxUInt32 i0 = localIndex;
             FfxUInt32 i1 = localIndex + halfStep;
-            FfxUInt32 i2 = localIndex + halfStep * 8u;
+            FfxUInt32 i2 = localIndex + halfStep * FfxUInt32(FFX_DOF_GROUP_SIDE);
             FfxUInt32 i3 = i2 + halfStep;
             ffxDofBilateralReduce(ffxDofSharedMipColor[i0], ffxDofSharedMipColor[i1], ffxDofSharedMipColor[i2],
                                   ffxDofSharedMipColor[i3], ffxDofSharedMipCoc[i0], ffxDofSharedMipCoc[i1],

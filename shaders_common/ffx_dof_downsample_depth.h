@@ -21,6 +21,40 @@ void ffxDofStoreTile(FfxUInt32x2 tile, FfxFloat32x2 cocMinMax);
 void ffxDofAtomicMaxGlobalRadius(FfxFloat32 radius);
 #endif
 
+// ---- Depth order ------------------------------------------------------------------------------------
+
+// The depth (of two) that is nearer the camera: the smaller one unless the depth buffer is inverted.
+FFX_DOF_INLINE FfxFloat32 ffxDofNearerDepth(FfxFloat32 a, FfxFloat32 b)
+{
+#if FFX_DOF_OPTION_REVERSE_DEPTH
+    return max(a, b);
+#else
+    return min(a, b);
+#endif
+}
+FFX_DOF_INLINE FfxFloat32 ffxDofFartherDepth(FfxFloat32 a, FfxFloat32 b)
+{
+#if FFX_DOF_OPTION_REVERSE_DEPTH
+    return min(a, b);
+#else
+    return max(a, b);
+#endif
+}
+
+// ---- Colour peak ------------------------------------------------------------------------------------
+
+// `value` when it is finite and not negative (so it can be a colour peak), else 0 (NaN, inf and
+// negative channels never set the peak: they are left as they are, as before).
+FFX_DOF_INLINE FfxFloat32 ffxDofPeakCandidate(FfxFloat32 value)
+{
+    return (value >= 0.0f && value <= FFX_DOF_FLOAT32_MAX) ? value : 0.0f;
+}
+// The largest finite, non-negative channel of an RGB(A) colour (alpha ignored), else 0.
+FFX_DOF_INLINE FfxFloat32 ffxDofColorPeak(FfxFloat32x4 color)
+{
+    return max(max(ffxDofPeakCandidate(color.x), ffxDofPeakCandidate(color.y)), ffxDofPeakCandidate(color.z));
+}
+
 // One slot per wave (a wave of one lane on the CPU, so up to one per invocation).
 FFX_DOF_GROUPSHARED FfxFloat32 ffxDofSharedNearDepth[FFX_DOF_GROUP_THREADS];
 FFX_DOF_GROUPSHARED FfxFloat32 ffxDofSharedFarDepth[FFX_DOF_GROUP_THREADS];
@@ -50,7 +84,7 @@ FFX_DOF_INLINE FfxFloat32 ffxDofWaveFarthestDepth(FfxFloat32 depth)
 FFX_DOF_INLINE void ffxDofDownsampleDepth(FfxUInt32x2 groupId, FfxUInt32 localIndex)
 {
     FfxDofConstants constants = ffxDofGetConstants();
-    FfxUInt32x2 quad = groupId * 16u + ffxDofLocalCoord(localIndex) * 2u;
+    FfxUInt32x2 quad = groupId * FfxUInt32(FFX_DOF_DOWNSAMPLE_DEPTH_GROUP_EXTENT) + ffxDofLocalCoord(localIndex) * 2u;
     FfxUInt32x2 lastPixel = constants.fullSize - FfxUInt32x2(1u, 1u);
 
     // Pixels past the image edge repeat the edge, which leaves the extremes unchanged.

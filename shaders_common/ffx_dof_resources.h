@@ -7,7 +7,7 @@
 //   storage images   (UAV, u#)     base 16
 //   storage buffers  (UAV, u#)     base 40   (D3D12: u<index> in space 1, since u# is shared
 //                                            with the storage images)
-//   samplers         (s#)          base 48
+//   samplers         (s#)          base 48   (no pass declares one; see FFX_DOF_SAMPLER_LINEAR_CLAMP)
 // Push/root constants carry FfxDofConstants (b0 on D3D12).
 //
 // Internal images (sizes at full resolution W x H; half = ceil(W/2) x ceil(H/2);
@@ -77,9 +77,9 @@
 #define FFX_DOF_GLOBALS_COLOR_SCALE 2
 #define FFX_DOF_GLOBALS_WORD_COUNT 4
 
-// Samplers. LINEAR_CLAMP: min/mag filter linear, mipmap mode NEAREST, address mode clamp-to-edge on
-// u, v and w, no anisotropy, no compare, LOD range [0, FFX_DOF_OPTION_MAX_MIP - 1]. The shaders always
-// pass an explicit integer LOD (textureLod / SampleLevel), so the mipmap mode never blends levels.
+// Samplers: no pass declares one (every read is an integer texel fetch, texelFetch / Load).
+// TODO(issue 14): removed from the backends next; the D3D12 backend still creates a static sampler
+// at this register and accepts a reflected sampler only here.
 #define FFX_DOF_SAMPLER_LINEAR_CLAMP 0
 
 // Dispatch geometry. Every pass runs FFX_DOF_GROUP_THREADS threads per workgroup (8 x 8, in wave32
@@ -90,6 +90,11 @@
 //   TILES     domain = tileCount (ceil(halfSize / FFX_DOF_TILE_SIZE))
 // The four tile-aligned passes give exactly tileCount groups: ceil(W / 16) == ceil(ceil(W / 2) / 8).
 #define FFX_DOF_GROUP_THREADS 64
+// Invocations per side of that square (ffxDofLocalCoord lays them out row by row).
+#define FFX_DOF_GROUP_SIDE 8
+#if FFX_DOF_GROUP_SIDE * FFX_DOF_GROUP_SIDE != FFX_DOF_GROUP_THREADS
+#error "FFX_DOF_GROUP_THREADS must be FFX_DOF_GROUP_SIDE squared"
+#endif
 #define FFX_DOF_DOMAIN_FULL_RES 0
 #define FFX_DOF_DOMAIN_HALF_RES 1
 #define FFX_DOF_DOMAIN_TILES 2

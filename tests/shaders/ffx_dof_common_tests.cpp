@@ -1,9 +1,15 @@
-// Unit tests of the pure functions of shaders_common/ffx_dof_common.h through the C++ mapping.
+// Unit tests of the pure functions of shaders_common (ffx_dof_common.h and each pass's own math in its
+// pass header) through the C++ mapping.
 // Every expectation is computed independently of the function under test (formula, brute force,
 // numerical integration or a standard-library algorithm).
 #include <catch2/catch.hpp>
 
 #include "ffx_dof_common.h"
+#include "ffx_dof_downsample_depth.h"
+#include "ffx_dof_downsample_color.h"
+#include "ffx_dof_dilate.h"
+#include "ffx_dof_blur.h"
+#include "ffx_dof_composite.h"
 
 #include <algorithm>
 #include <cmath>

@@ -3,7 +3,9 @@
 // scenes state the blur they want.
 #include <catch2/catch.hpp>
 
-#include "ffx_dof_common.h"
+#include "ffx_dof_blur.h"
+#include "ffx_dof_dilate.h"
+#include "ffx_dof_downsample_color.h"
 #include "ffx_dof_cpu_pipeline.h"
 
 #include <algorithm>
