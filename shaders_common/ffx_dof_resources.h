@@ -7,7 +7,6 @@
 //   storage images   (UAV, u#)     base 16
 //   storage buffers  (UAV, u#)     base 40   (D3D12: u<index> in space 1, since u# is shared
 //                                            with the storage images)
-//   samplers         (s#)          base 48   (no pass declares one; see FFX_DOF_SAMPLER_LINEAR_CLAMP)
 // Push/root constants carry FfxDofConstants (b0 on D3D12).
 //
 // Internal images (sizes at full resolution W x H; half = ceil(W/2) x ceil(H/2);
@@ -39,7 +38,6 @@
 #define FFX_DOF_SRV_BASE 0
 #define FFX_DOF_UAV_IMAGE_BASE 16
 #define FFX_DOF_UAV_BUFFER_BASE 40
-#define FFX_DOF_SAMPLER_BASE 48
 
 // Sampled textures
 #define FFX_DOF_SRV_INPUT_COLOR 0
@@ -77,10 +75,8 @@
 #define FFX_DOF_GLOBALS_COLOR_SCALE 2
 #define FFX_DOF_GLOBALS_WORD_COUNT 4
 
-// Samplers: no pass declares one (every read is an integer texel fetch, texelFetch / Load).
-// TODO(issue 14): removed from the backends next; the D3D12 backend still creates a static sampler
-// at this register and accepts a reflected sampler only here.
-#define FFX_DOF_SAMPLER_LINEAR_CLAMP 0
+// No samplers: every read is an integer texel fetch (texelFetch / Load), so no pass declares one and
+// a reflected sampler is refused at context creation.
 
 // Dispatch geometry. Every pass runs FFX_DOF_GROUP_THREADS threads per workgroup (8 x 8, in wave32
 // and wave64 alike). Each pass covers a domain; one workgroup covers GROUP_EXTENT x GROUP_EXTENT
