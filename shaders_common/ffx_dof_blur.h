@@ -135,7 +135,7 @@ struct FfxDofAnnulusBorder
 {
     FfxFloat32 block;          // texels per block side (a power of two)
     FfxFloat32 scale;          // 1 / block
-    FfxFloat32 radiusSquared;  // in blocks^2
+    FfxFloat32 radius;  // in blocks
     FfxFloat32 spanCenter;     // origin.x in blocks, less half a block (ffxDofTexelSpan's centre - 0.5)
     FfxFloat32 rowOffset;      // half a block less origin.y, in blocks
 };
@@ -164,8 +164,7 @@ FFX_DOF_INLINE FfxDofAnnulusBorder ffxDofMakeAnnulusBorder(FfxFloat32x2 origin, 
     FfxDofAnnulusBorder border;
     border.block = block;
     border.scale = 1.0f / block;
-    FfxFloat32 blockRadius = radius * border.scale;
-    border.radiusSquared = blockRadius * blockRadius;
+    border.radius = radius * border.scale;
     border.spanCenter = origin.x * border.scale - 0.5f;
     border.rowOffset = 0.5f - origin.y * border.scale;
     return border;
@@ -177,7 +176,7 @@ FFX_DOF_INLINE FfxDofAnnulusBorder ffxDofMakeAnnulusBorder(FfxFloat32x2 origin, 
 FFX_DOF_INLINE FfxFloat32x2 ffxDofBorderSpan(FfxDofAnnulusBorder border, FfxFloat32 y)
 {
     FfxFloat32 dy = floor(y * border.scale) + border.rowOffset;
-    FfxFloat32 halfWidth = sqrt(max(border.radiusSquared - dy * dy, 0.0f));
+    FfxFloat32 halfWidth = ffxDofKernelRowHalfWidth(border.radius, dy);
     FfxFloat32 first = floor(border.spanCenter - halfWidth) + 1.0f;
     FfxFloat32 last = ceil(border.spanCenter + halfWidth) - 1.0f;
     return FfxFloat32x2(first * border.block, last * border.block + border.block - 1.0f);

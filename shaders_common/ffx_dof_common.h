@@ -139,7 +139,8 @@ FFX_DOF_INLINE FfxFloat32 ffxDofTileKernelRadius(FfxFloat32x2 farNear) { return 
 
 // Half the width of the kernel's row `dy` from its centre, for a kernel of `radius` (same units): a
 // texel is in the kernel when its centre lies less than this far from the centre horizontally.
-// Another bokeh shape replaces this function (the row of a convex polygon is one interval too).
+// The blur's ring walk (ffxDofBorderSpan) asks it for every row, so another bokeh shape replaces this
+// function (the row of a convex polygon is one interval too).
 FFX_DOF_INLINE FfxFloat32 ffxDofKernelRowHalfWidth(FfxFloat32 radius, FfxFloat32 dy)
 {
     return sqrt(max(radius * radius - dy * dy, 0.0f));
