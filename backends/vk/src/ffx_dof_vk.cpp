@@ -4,6 +4,7 @@
 
 #include "ffx_dof_backend.h"
 #include "ffx_dof_context.h"
+#include "ffx_dof_vk_features.h"
 #include "ffx_dof_vk_functions.h"
 #include "ffx_dof_vk_internal_images.h"
 #include "ffx_dof_vk_shaders.h"
@@ -196,10 +197,11 @@ public:
         fn.vkGetPhysicalDeviceMemoryProperties(physicalDevice, &memoryProperties);
 
         language = (description.flags & FFX_DOF_VK_USE_HLSL_SHADERS) ? ShaderLanguage::Hlsl : ShaderLanguage::Glsl;
-        useHalf = description.shaderFloat16Enabled && description.storage16BitEnabled &&
-                  !(description.flags & FFX_DOF_VK_DISABLE_FLOAT16);
-        useWave64 = description.subgroupSizeControlEnabled && !(description.flags & FFX_DOF_VK_DISABLE_WAVE64) &&
-                    deviceSupportsWave64();
+        features = enabledFeaturesOf(description.pEnabledFeatures);
+        features.shader |= queriedSubgroupFeatures(fn, physicalDevice);
+        useHalf = features.has(shaders::Feature::Float16) && !(description.flags & FFX_DOF_VK_DISABLE_FLOAT16);
+        useWave64 = features.subgroupSizeControl && features.computeFullSubgroups &&
+                    !(description.flags & FFX_DOF_VK_DISABLE_WAVE64) && deviceSupportsWave64();
 
         if (description.pipelineCache != VK_NULL_HANDLE) {
             pipelineCache = description.pipelineCache;
@@ -262,6 +264,7 @@ public:
     VkPhysicalDeviceMemoryProperties memoryProperties{};
     uint32_t framesInFlight = kDefaultFramesInFlight;
     ShaderLanguage language = ShaderLanguage::Glsl;
+    EnabledFeatures features;
     bool useHalf = false;
     bool useWave64 = false;
 
@@ -447,6 +450,9 @@ FfxDofErrorCode ContextVK::createPipelines() {
         if (!blob) {
             return fail(FFX_DOF_ERROR_UNSUPPORTED, "no %s permutation: %s", kPassNames[pass], error.c_str());
         }
+        const FfxDofErrorCode supported =
+            checkShaderFeatures(backend_.features, *blob, kPassNames[pass], backend_.useHalf, backend_.useWave64);
+        if (supported != FFX_DOF_OK) return supported;
 
         // Descriptor set layout from the reflected bindings (the union over the permutations).
         std::vector<VkDescriptorSetLayoutBinding> bindings;
@@ -911,6 +917,11 @@ FfxDofErrorCode ffxDofBackendCreateVK(const FfxDofBackendDescriptionVK* pDescrip
         return fail(FFX_DOF_ERROR_INVALID_POINTER, "physicalDevice is VK_NULL_HANDLE");
     }
     if (d.device == VK_NULL_HANDLE) return fail(FFX_DOF_ERROR_INVALID_POINTER, "device is VK_NULL_HANDLE");
+    if (!d.pEnabledFeatures) {
+        return fail(FFX_DOF_ERROR_INVALID_POINTER,
+                    "pEnabledFeatures is null; pass the VkPhysicalDeviceFeatures2 chain given to vkCreateDevice "
+                    "(VkDeviceCreateInfo::pNext) so the backend knows which features the device has enabled");
+    }
     if (!d.vkGetInstanceProcAddr) return fail(FFX_DOF_ERROR_INVALID_POINTER, "vkGetInstanceProcAddr is null");
     if (!d.vkGetDeviceProcAddr) return fail(FFX_DOF_ERROR_INVALID_POINTER, "vkGetDeviceProcAddr is null");
 
