@@ -119,7 +119,12 @@ typedef struct FfxDofDispatchDescription {
     FfxDofCommandList commandList;
     /** Scene color, full resolution, sampled. */
     FfxDofResource color;
-    /** Scene depth (device z), full resolution, sampled through its depth aspect. */
+    /** Scene depth (device z), full resolution, sampled. Vulkan accepts VK_FORMAT_D32_SFLOAT,
+     *  D24_UNORM_S8_UINT and D16_UNORM, read through a depth-aspect view, and R32_SFLOAT (a copy of
+     *  depth in a colour image), read through a colour-aspect view. D3D12 accepts a depth buffer
+     *  created typeless (D32_FLOAT, D24_UNORM_S8_UINT, D16_UNORM, D32_FLOAT_S8X24_UINT families,
+     *  declared by any format of the family) and R32_FLOAT or R16_UNORM copies
+     *  (docs/integration-d3d12.md). Anything else is FFX_DOF_ERROR_INVALID_RESOURCE. */
     FfxDofResource depth;
     /** Destination, full resolution, written as a storage image / UAV. May be the color image only
      *  with FFX_DOF_OUTPUT_PRE_INIT. */

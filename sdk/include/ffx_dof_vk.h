@@ -36,6 +36,17 @@ typedef struct FfxDofBackendDescriptionVK {
     VkInstance instance; /**< the engine's; outlives the backend */
     VkPhysicalDevice physicalDevice;
     VkDevice device; /**< created with the features listed in docs/integration-vulkan.md */
+    /** Required: the features the engine enabled on `device`, as the VkPhysicalDeviceFeatures2 chain
+     *  it passed to vkCreateDevice in VkDeviceCreateInfo::pNext (VkPhysicalDeviceVulkan11/12/13Features
+     *  or the individual structures such as VkPhysicalDevice16BitStorageFeatures,
+     *  VkPhysicalDeviceShaderFloat16Int8Features, VkPhysicalDeviceSubgroupSizeControlFeatures in its
+     *  pNext). Other structures are skipped; a feature counts as enabled when any structure in the
+     *  chain enables it. Read only during ffxDofBackendCreateVK. The backend chooses the 16-bit
+     *  shaders with shaderFloat16 and wave64 with subgroupSizeControl and computeFullSubgroups; a
+     *  feature that the chosen shaders need and the chain does not enable (such as
+     *  shaderStorageImageWriteWithoutFormat) makes ffxDofContextCreate fail with
+     *  FFX_DOF_ERROR_UNSUPPORTED naming it. */
+    const VkPhysicalDeviceFeatures2* pEnabledFeatures;
     PFN_vkGetInstanceProcAddr vkGetInstanceProcAddr; /**< all other entry points are loaded from these */
     PFN_vkGetDeviceProcAddr vkGetDeviceProcAddr;
     const VkAllocationCallbacks* allocationCallbacks; /**< optional; used for every object the backend creates */
@@ -43,11 +54,6 @@ typedef struct FfxDofBackendDescriptionVK {
     uint32_t maxFramesInFlight;                       /**< dispatches the GPU may still be executing when the
                                                            next is recorded; 0 means 3 */
     uint32_t flags;                                   /**< FfxDofBackendFlagBitsVK */
-    /** Which device features the engine enabled at vkCreateDevice. The backend uses the 16-bit
-     *  shaders only when both are VK_TRUE, and wave64 only with subgroupSizeControl. */
-    VkBool32 shaderFloat16Enabled;       /**< VkPhysicalDeviceShaderFloat16Int8Features::shaderFloat16 */
-    VkBool32 storage16BitEnabled;        /**< VkPhysicalDevice16BitStorageFeatures::storageBuffer16BitAccess */
-    VkBool32 subgroupSizeControlEnabled; /**< VkPhysicalDeviceSubgroupSizeControlFeatures::subgroupSizeControl */
 } FfxDofBackendDescriptionVK;
 
 /** Creates a Vulkan backend. *pBackend is set to NULL on failure. */

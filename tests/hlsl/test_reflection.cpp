@@ -184,7 +184,8 @@ TEST_CASE("HLSL FFX_HALF=1 colour passes compute in 16-bit floats, FFX_HALF=0 ne
             const BlobFacts facts = parse(hlslBlob);
             INFO("pass " << glsl->pass << " permutation " << p << " FFX_HALF=" << half);
             // The table's flag is the reflected capability; the parsed type shows it is used.
-            CHECK(hlslBlob.usesFloat16 == facts.float16Capability);
+            const uint32_t float16 = shaders::featureBit(shaders::Feature::Float16);
+            CHECK(((hlslBlob.requiredFeatures & float16) != 0) == facts.float16Capability);
             if (!half) {
                 CHECK_FALSE(facts.float16Capability);
                 CHECK_FALSE(facts.float16Type);
@@ -192,7 +193,7 @@ TEST_CASE("HLSL FFX_HALF=1 colour passes compute in 16-bit floats, FFX_HALF=0 ne
                 CHECK(facts.float16Capability);
                 CHECK(facts.float16Type);
             }
-            CHECK(hlslBlob.usesFloat16 == glslBlob.usesFloat16);
+            CHECK((hlslBlob.requiredFeatures & float16) == (glslBlob.requiredFeatures & float16));
         }
     }
 }

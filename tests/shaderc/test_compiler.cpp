@@ -3,6 +3,9 @@
 
 #include <catch2/catch.hpp>
 
+#include <set>
+#include <string>
+
 using namespace ffxdof::shaderc;
 
 namespace {
@@ -111,4 +114,42 @@ TEST_CASE("the depfile names every included header", "[compiler]") {
     CHECK(depfile.find("/ffx_dof_test_common.h") != std::string::npos);
     CHECK(depfile.find("/ffx_dof_test.glsl") != std::string::npos);
     CHECK(emitDepfile("/a b/t.h", {"/c d/e.h"}) == "/a\\ b/t.h: \\\n  /c\\ d/e.h\n");
+}
+
+TEST_CASE("capabilities become the feature bits a device must enable, an unknown one is an error",
+          "[compiler][reflection]") {
+    using ffxdof::shaders::Feature;
+    using ffxdof::shaders::featureBit;
+    // SPIR-V capability numbers: Shader 1, StorageImageExtendedFormats 49 and ImageQuery 50 are core.
+    CHECK(requiredFeatures({1, 49, 50}) == 0);
+    // Float16 9, StorageImageWriteWithoutFormat 56, GroupNonUniform 61, GroupNonUniformArithmetic 63,
+    // StorageBuffer16BitAccess 4433, StoragePushConstant16 4435, Int16 22.
+    CHECK(requiredFeatures({1, 9, 56}) ==
+          (featureBit(Feature::Float16) | featureBit(Feature::StorageImageWriteWithoutFormat)));
+    CHECK(requiredFeatures({61, 63}) ==
+          (featureBit(Feature::GroupNonUniform) | featureBit(Feature::GroupNonUniformArithmetic)));
+    CHECK(requiredFeatures({4433, 4435, 22}) ==
+          (featureBit(Feature::StorageBuffer16BitAccess) | featureBit(Feature::StoragePushConstant16) |
+           featureBit(Feature::Int16)));
+    // Geometry (2) needs a feature the runtime does not check; Kernel (6) is not Vulkan at all.
+    for (uint32_t unknown : {2u, 6u}) {
+        const std::string message = errorOf([unknown] { requiredFeatures({1, unknown}); });
+        CHECK(message.find("capability " + std::to_string(unknown)) != std::string::npos);
+        CHECK(message.find("capabilities.cpp") != std::string::npos);
+    }
+}
+
+TEST_CASE("every feature bit has a distinct name", "[compiler]") {
+    std::set<std::string> names;
+    for (uint32_t bit = 0; bit < ffxdof::shaders::kFeatureCount; ++bit) {
+        const char* name = ffxdof::shaders::featureName(ffxdof::shaders::Feature(1u << bit));
+        REQUIRE(name != nullptr);
+        names.insert(name);
+    }
+    CHECK(names.size() == ffxdof::shaders::kFeatureCount);
+    CHECK(ffxdof::shaders::featureName(ffxdof::shaders::Feature(1u << ffxdof::shaders::kFeatureCount)) == nullptr);
+    CHECK(featureNames(ffxdof::shaders::featureBit(ffxdof::shaders::Feature::Float16) |
+                       ffxdof::shaders::featureBit(ffxdof::shaders::Feature::GroupNonUniform)) ==
+          "Float16 GroupNonUniform");
+    CHECK(featureNames(0).empty());
 }

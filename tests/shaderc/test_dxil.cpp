@@ -59,10 +59,11 @@ TEST_CASE("dxil: one permutation per key, each blob made from exactly that key's
         CHECK(text == expectedBlobText(key));
         const auto [it, inserted] = blobOfText.emplace(text, table->permutationToBlob[p]);
         CHECK(it->second == table->permutationToBlob[p]);  // equal contents, one blob
-        // The SPIR-V reflection of the same permutation: the workgroup size and Float16 use.
+        // The SPIR-V reflection of the same permutation: the workgroup size and the 16-bit types.
         const ffxdof::shaders::Blob& blob = table->blobs[table->permutationToBlob[p]];
         CHECK(blob.localSize[0] == 64);  // FFX_DOF_TEST_WIDE=1: 8 * 8 threads in x
-        CHECK(blob.usesFloat16 == (key.at("FFX_HALF") == 1));
+        const uint32_t float16 = ffxdof::shaders::featureBit(ffxdof::shaders::Feature::Float16);
+        CHECK(((blob.requiredFeatures & float16) != 0) == (key.at("FFX_HALF") == 1));
         CHECK(blob.wordCount * sizeof(uint32_t) % 4 == 0);
     }
     CHECK(blobOfText.size() == table->blobCount);

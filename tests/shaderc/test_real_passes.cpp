@@ -127,3 +127,32 @@ TEST_CASE("push constants are laid out like FfxDofConstants", "[passes][reflecti
         }
     }
 }
+
+// What the real blobs need of a Vulkan device (reflected by ffx-dof-shaderc). A shader change that
+// adds a requirement fails here: document it in docs/integration-vulkan.md, then add it below.
+TEST_CASE("the real blobs require only the documented features, and the 32-bit ones no 16-bit one", "[passes]") {
+    using ffxdof::shaders::Feature;
+    using ffxdof::shaders::featureBit;
+    const uint32_t documented = featureBit(Feature::Float16) | featureBit(Feature::StorageImageWriteWithoutFormat) |
+                                featureBit(Feature::GroupNonUniform) | featureBit(Feature::GroupNonUniformArithmetic);
+    const uint32_t sixteenBit =
+        featureBit(Feature::Float16) | featureBit(Feature::Int16) | featureBit(Feature::StorageBuffer16BitAccess) |
+        featureBit(Feature::UniformAndStorageBuffer16BitAccess) | featureBit(Feature::StoragePushConstant16);
+    const nlohmann::json json = permutationsJson();
+    for (const char* language : {"glsl", "hlsl"}) {
+        for (const auto& entry : json.at("passes")) {
+            const std::string pass = entry.at("name");
+            const PassTable* table = tableOf(language, pass);
+            REQUIRE(table != nullptr);
+            for (uint32_t p = 0; p < table->permutationCount; ++p) {
+                const auto defines = ffxdof::shaders::permutationDefines(*table, p);
+                uint32_t half = 0;
+                for (const auto& [macro, value] : defines) half = macro == "FFX_HALF" ? value : half;
+                const uint32_t required = table->blobs[table->permutationToBlob[p]].requiredFeatures;
+                INFO(language << " " << pass << " permutation " << p << " requires 0x" << std::hex << required);
+                CHECK((required & ~documented) == 0);
+                if (!half) CHECK((required & sixteenBit) == 0);
+            }
+        }
+    }
+}

@@ -9,6 +9,8 @@
 #include <set>
 
 using ffxdof::shaders::Blob;
+using ffxdof::shaders::Feature;
+using ffxdof::shaders::featureBit;
 using ffxdof::shaders::PassTable;
 
 namespace {
@@ -59,7 +61,8 @@ TEST_CASE("permutation count is the product of the axes and every key resolves",
             CHECK(blob->wordCount > 5);
             CHECK(blob->words[0] == 0x07230203u);  // SPIR-V magic
             // The 16-bit permutations really use 16-bit floats; the 32-bit ones do not.
-            CHECK(blob->usesFloat16 == (defineValue(defines, "FFX_HALF") == 1));
+            CHECK(((blob->requiredFeatures & featureBit(Feature::Float16)) != 0) ==
+                  (defineValue(defines, "FFX_HALF") == 1));
             const bool wide = defineValue(defines, "FFX_DOF_TEST_WIDE") == 1;
             CHECK(blob->localSize[0] == (wide ? 64u : 8u));
             CHECK(blob->localSize[1] == (wide ? 1u : 8u));

@@ -49,10 +49,11 @@ FfxDofErrorCode BackendVK::init(const FfxDofBackendDescriptionVK& description) {
     fn.vkGetPhysicalDeviceMemoryProperties(physicalDevice, &memoryProperties_);
 
     language_ = (description.flags & FFX_DOF_VK_USE_HLSL_SHADERS) ? ShaderLanguage::Hlsl : ShaderLanguage::Glsl;
-    useHalf_ = description.shaderFloat16Enabled && description.storage16BitEnabled &&
-               !(description.flags & FFX_DOF_VK_DISABLE_FLOAT16);
-    useWave64 = description.subgroupSizeControlEnabled && !(description.flags & FFX_DOF_VK_DISABLE_WAVE64) &&
-                deviceSupportsWave64();
+    features = enabledFeaturesOf(description.pEnabledFeatures);
+    features.shader |= queriedSubgroupFeatures(fn, physicalDevice);
+    useHalf_ = features.has(shaders::Feature::Float16) && !(description.flags & FFX_DOF_VK_DISABLE_FLOAT16);
+    useWave64 = features.subgroupSizeControl && features.computeFullSubgroups &&
+                !(description.flags & FFX_DOF_VK_DISABLE_WAVE64) && deviceSupportsWave64();
 
     if (description.pipelineCache != VK_NULL_HANDLE) {
         pipelineCache = description.pipelineCache;
@@ -128,6 +129,11 @@ extern "C" FfxDofErrorCode ffxDofBackendCreateVK(const FfxDofBackendDescriptionV
         return fail(FFX_DOF_ERROR_INVALID_POINTER, "physicalDevice is VK_NULL_HANDLE");
     }
     if (d.device == VK_NULL_HANDLE) return fail(FFX_DOF_ERROR_INVALID_POINTER, "device is VK_NULL_HANDLE");
+    if (!d.pEnabledFeatures) {
+        return fail(FFX_DOF_ERROR_INVALID_POINTER,
+                    "pEnabledFeatures is null; pass the VkPhysicalDeviceFeatures2 chain given to vkCreateDevice "
+                    "(VkDeviceCreateInfo::pNext) so the backend knows which features the device has enabled");
+    }
     if (!d.vkGetInstanceProcAddr) return fail(FFX_DOF_ERROR_INVALID_POINTER, "vkGetInstanceProcAddr is null");
     if (!d.vkGetDeviceProcAddr) return fail(FFX_DOF_ERROR_INVALID_POINTER, "vkGetDeviceProcAddr is null");
 

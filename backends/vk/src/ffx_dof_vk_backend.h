@@ -4,6 +4,7 @@
 
 #include "ffx_dof_backend.h"
 #include "ffx_dof_vk.h"
+#include "ffx_dof_vk_features.h"
 #include "ffx_dof_vk_functions.h"
 #include "ffx_dof_vk_shaders.h"
 
@@ -36,7 +37,8 @@ public:
     const VkAllocationCallbacks* allocator = nullptr;
     VkPipelineCache pipelineCache = VK_NULL_HANDLE;
     uint32_t framesInFlight = 0;
-    bool useWave64 = false;  // the pipelines require 64-wide full subgroups
+    EnabledFeatures features;  // what the engine enabled at vkCreateDevice (pEnabledFeatures)
+    bool useWave64 = false;    // the pipelines require 64-wide full subgroups
 
 private:
     bool deviceSupportsWave64() const;

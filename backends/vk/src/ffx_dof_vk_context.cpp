@@ -158,6 +158,9 @@ FfxDofErrorCode ContextVK::createPipelines() {
     const VkAllocationCallbacks* allocator = backend_.allocator;
     for (uint32_t pass = 0; pass < kPassCount; ++pass) {
         const PlannedPass& planned = plan_.passes[pass];
+        const FfxDofErrorCode supported = checkShaderFeatures(backend_.features, *planned.blob, kPassNames[pass],
+                                                              plan_.axes.half != 0, plan_.axes.wave64 != 0);
+        if (supported != FFX_DOF_OK) return supported;
         std::vector<VkDescriptorSetLayoutBinding> bindings;
         for (const SlotClass& slotClass : kSlotClasses) {
             const uint32_t slots = planned.*slotClass.slots;

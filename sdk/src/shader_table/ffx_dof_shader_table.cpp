@@ -117,4 +117,58 @@ const char* bindingKindName(BindingKind kind) {
     return "unknown";
 }
 
+const char* featureName(Feature feature) {
+    switch (feature) {
+        case Feature::Float16:
+            return "Float16";
+        case Feature::Float64:
+            return "Float64";
+        case Feature::Int8:
+            return "Int8";
+        case Feature::Int16:
+            return "Int16";
+        case Feature::Int64:
+            return "Int64";
+        case Feature::StorageBuffer16BitAccess:
+            return "StorageBuffer16BitAccess";
+        case Feature::UniformAndStorageBuffer16BitAccess:
+            return "UniformAndStorageBuffer16BitAccess";
+        case Feature::StoragePushConstant16:
+            return "StoragePushConstant16";
+        case Feature::StorageBuffer8BitAccess:
+            return "StorageBuffer8BitAccess";
+        case Feature::UniformAndStorageBuffer8BitAccess:
+            return "UniformAndStorageBuffer8BitAccess";
+        case Feature::StoragePushConstant8:
+            return "StoragePushConstant8";
+        case Feature::StorageImageReadWithoutFormat:
+            return "StorageImageReadWithoutFormat";
+        case Feature::StorageImageWriteWithoutFormat:
+            return "StorageImageWriteWithoutFormat";
+        case Feature::ImageGatherExtended:
+            return "ImageGatherExtended";
+        case Feature::VulkanMemoryModel:
+            return "VulkanMemoryModel";
+        case Feature::VulkanMemoryModelDeviceScope:
+            return "VulkanMemoryModelDeviceScope";
+        case Feature::GroupNonUniform:
+            return "GroupNonUniform";
+        case Feature::GroupNonUniformVote:
+            return "GroupNonUniformVote";
+        case Feature::GroupNonUniformArithmetic:
+            return "GroupNonUniformArithmetic";
+        case Feature::GroupNonUniformBallot:
+            return "GroupNonUniformBallot";
+        case Feature::GroupNonUniformShuffle:
+            return "GroupNonUniformShuffle";
+        case Feature::GroupNonUniformShuffleRelative:
+            return "GroupNonUniformShuffleRelative";
+        case Feature::GroupNonUniformClustered:
+            return "GroupNonUniformClustered";
+        case Feature::GroupNonUniformQuad:
+            return "GroupNonUniformQuad";
+    }
+    return nullptr;
+}
+
 }  // namespace ffxdof::shaders

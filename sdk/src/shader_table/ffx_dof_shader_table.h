@@ -47,6 +47,42 @@ struct PushConstantMember {
     uint32_t size;
 };
 
+// What a blob needs of the device beyond core Vulkan: one bit per SPIR-V capability that a Vulkan
+// device only accepts with an optional feature enabled (or, for the GroupNonUniform* ones, with a
+// subgroup operation the device reports). ffx-dof-shaderc reflects them from the declared
+// capabilities of each binary and refuses a capability it cannot classify, so this list covers
+// every blob. The bit is named after the capability; the Vulkan feature is in the comment.
+enum class Feature : uint32_t {
+    Float16 = 1u << 0,                             // shaderFloat16
+    Float64 = 1u << 1,                             // shaderFloat64
+    Int8 = 1u << 2,                                // shaderInt8
+    Int16 = 1u << 3,                               // shaderInt16
+    Int64 = 1u << 4,                               // shaderInt64
+    StorageBuffer16BitAccess = 1u << 5,            // storageBuffer16BitAccess
+    UniformAndStorageBuffer16BitAccess = 1u << 6,  // uniformAndStorageBuffer16BitAccess
+    StoragePushConstant16 = 1u << 7,               // storagePushConstant16
+    StorageBuffer8BitAccess = 1u << 8,             // storageBuffer8BitAccess
+    UniformAndStorageBuffer8BitAccess = 1u << 9,   // uniformAndStorageBuffer8BitAccess
+    StoragePushConstant8 = 1u << 10,               // storagePushConstant8
+    StorageImageReadWithoutFormat = 1u << 11,      // shaderStorageImageReadWithoutFormat
+    StorageImageWriteWithoutFormat = 1u << 12,     // shaderStorageImageWriteWithoutFormat
+    ImageGatherExtended = 1u << 13,                // shaderImageGatherExtended
+    VulkanMemoryModel = 1u << 14,                  // vulkanMemoryModel
+    VulkanMemoryModelDeviceScope = 1u << 15,       // vulkanMemoryModelDeviceScope
+    GroupNonUniform = 1u << 16,                    // subgroup operations: VK_SUBGROUP_FEATURE_BASIC_BIT
+    GroupNonUniformVote = 1u << 17,                // VK_SUBGROUP_FEATURE_VOTE_BIT
+    GroupNonUniformArithmetic = 1u << 18,          // VK_SUBGROUP_FEATURE_ARITHMETIC_BIT
+    GroupNonUniformBallot = 1u << 19,              // VK_SUBGROUP_FEATURE_BALLOT_BIT
+    GroupNonUniformShuffle = 1u << 20,             // VK_SUBGROUP_FEATURE_SHUFFLE_BIT
+    GroupNonUniformShuffleRelative = 1u << 21,     // VK_SUBGROUP_FEATURE_SHUFFLE_RELATIVE_BIT
+    GroupNonUniformClustered = 1u << 22,           // VK_SUBGROUP_FEATURE_CLUSTERED_BIT
+    GroupNonUniformQuad = 1u << 23,                // VK_SUBGROUP_FEATURE_QUAD_BIT
+};
+constexpr uint32_t kFeatureCount = 24;
+constexpr uint32_t featureBit(Feature feature) { return static_cast<uint32_t>(feature); }
+// The capability's name ("Float16"); nullptr for a value that is not one bit of Feature.
+const char* featureName(Feature feature);
+
 // One unique binary: SPIR-V, or for language "dxil" the DXIL container (its bytes as words). localSize is the reflected
 // workgroup size; it can differ between blobs of one pass (the wave64 axis changes it), so it lives here and not on the
 // pass.
@@ -54,7 +90,10 @@ struct Blob {
     const uint32_t* words;
     size_t wordCount;
     uint32_t localSize[3];
-    bool usesFloat16;  // declares the Float16 capability (the FFX_HALF=1 permutations must)
+    // Feature bits: the optional capabilities the SPIR-V declares (the FFX_HALF=1 permutations
+    // declare Float16). For "dxil" tables, those of the SPIR-V compiled from the same permutation
+    // for the reflection: Float16 there is the DXIL's native 16-bit types.
+    uint32_t requiredFeatures;
 };
 
 struct Axis {

@@ -18,6 +18,10 @@ int main() {
 #if defined(CONSUMER_USES_VULKAN)
     FfxDofBackend backend = nullptr;
     if (ffxDofBackendCreateVK(nullptr, &backend) == FFX_DOF_OK) return 2;
+    // The installed header has the features chain; the backend refuses a description without it.
+    FfxDofBackendDescriptionVK vulkan{};
+    vulkan.pEnabledFeatures = nullptr;
+    if (ffxDofBackendCreateVK(&vulkan, &backend) != FFX_DOF_ERROR_INVALID_POINTER) return 2;
 #endif
     if (sizeof(FfxDofConstants) != 64) return 3;
     if (consumer_version_from_c() != ffxDofGetEffectVersion()) return 4;

@@ -130,7 +130,12 @@ PassBuild buildPass(const CompileOptions& options, const std::vector<Axis>& axes
         std::vector<uint32_t>& blob = options.dxc.empty() ? compiled[p]->spirv : compiled[p]->dxil;
         auto [it, inserted] = unique.emplace(blob, static_cast<uint16_t>(build.blobs.size()));
         if (inserted) {
-            build.blobReflections.push_back(reflect(compiled[p]->spirv));
+            try {
+                build.blobReflections.push_back(reflect(compiled[p]->spirv));
+            } catch (const Error& error) {
+                throw Error("pass '" + options.pass + "' (" + languageName(options.language) + "), permutation " +
+                            describeKey(build, p) + ": " + error.what());
+            }
             build.blobs.push_back(std::move(blob));
         }
         build.permutationToBlob.push_back(it->second);

@@ -48,7 +48,33 @@ std::string symbolOf(const PassBuild& build, const EmitOptions& options) {
     return options.symbol.empty() ? symbolFor(build.options.pass) : options.symbol;
 }
 
+// Blob::requiredFeatures as a literal with the capability names beside it: "0x00000001u /* Float16 */".
+std::string featureWord(const Reflection& reflection) {
+    char word[16];
+    std::snprintf(word, sizeof(word), "0x%08xu", reflection.requiredFeatures);
+    const std::string names = featureNames(reflection.requiredFeatures);
+    return names.empty() ? word : std::string(word) + " /* " + names + " */";
+}
+
+nlohmann::ordered_json featureList(uint32_t features) {
+    nlohmann::ordered_json list = nlohmann::ordered_json::array();
+    for (uint32_t bit = 0; bit < shaders::kFeatureCount; ++bit) {
+        if (features & (1u << bit)) list.push_back(shaders::featureName(shaders::Feature(1u << bit)));
+    }
+    return list;
+}
+
 }  // namespace
+
+std::string featureNames(uint32_t features) {
+    std::string names;
+    for (uint32_t bit = 0; bit < 32; ++bit) {
+        if (!(features & (1u << bit))) continue;
+        const char* name = shaders::featureName(shaders::Feature(1u << bit));
+        names += (names.empty() ? "" : " ") + std::string(name ? name : "bit" + std::to_string(bit));
+    }
+    return names;
+}
 
 std::string symbolFor(const std::string& pass) {
     std::string symbol = "pass_";
@@ -97,8 +123,7 @@ std::string emitSource(const PassBuild& build, const EmitOptions& options, const
     for (size_t b = 0; b < build.blobs.size(); ++b) {
         const Reflection& reflection = build.blobReflections[b];
         out << "    {kBlob" << b << ", " << build.blobs[b].size() << ", {" << reflection.localSize[0] << ", "
-            << reflection.localSize[1] << ", " << reflection.localSize[2] << "}, "
-            << (reflection.usesFloat16 ? "true" : "false") << "},\n";
+            << reflection.localSize[1] << ", " << reflection.localSize[2] << "}, " << featureWord(reflection) << "},\n";
     }
     out << "};\n\nconst uint16_t kPermutationToBlob[] = {";
     for (size_t p = 0; p < build.permutationToBlob.size(); ++p) {
@@ -150,7 +175,7 @@ std::string emitManifest(const PassBuild& build) {
         bytes += build.blobs[b].size() * sizeof(uint32_t);
         blobs.push_back({{"bytes", build.blobs[b].size() * sizeof(uint32_t)},
                          {"localSize", reflection.localSize},
-                         {"usesFloat16", reflection.usesFloat16}});
+                         {"requiredFeatures", featureList(reflection.requiredFeatures)}});
     }
     manifest["bytes"] = bytes;
     manifest["blobs"] = blobs;

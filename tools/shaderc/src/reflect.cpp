@@ -154,8 +154,7 @@ Reflection reflect(const std::vector<uint32_t>& spirv) {
     size_t capabilityCount = 0;
     check(spvc_compiler_get_declared_capabilities(compiler, &capabilities, &capabilityCount), rawContext,
           "capabilities");
-    reflection.usesFloat16 =
-        std::find(capabilities, capabilities + capabilityCount, SpvCapabilityFloat16) != capabilities + capabilityCount;
+    reflection.requiredFeatures = requiredFeatures(std::vector<uint32_t>(capabilities, capabilities + capabilityCount));
     return reflection;
 }
 

@@ -128,10 +128,19 @@ struct Reflection {
     std::vector<ReflectedBinding> bindings;  // sorted by (kind == PushConstants, set, binding)
     std::vector<ReflectedMember> pushConstantMembers;
     uint32_t localSize[3] = {1, 1, 1};
-    bool usesFloat16 = false;
+    uint32_t requiredFeatures = 0;  // shaders::Feature bits (see requiredFeatures below)
 };
 
+// Throws Error for a blob the reflection cannot describe (among them a capability that
+// requiredFeatures cannot classify).
 Reflection reflect(const std::vector<uint32_t>& spirv);
+
+// The shaders::Feature bits of these SPIR-V capabilities (capabilities.cpp). Core capabilities add
+// nothing; one that is neither core nor a known Feature is an Error naming it, so no blob can need
+// something the runtime does not check.
+uint32_t requiredFeatures(const std::vector<uint32_t>& capabilities);
+// "Float16 StorageImageWriteWithoutFormat": the names of the bits, in bit order; "" for none.
+std::string featureNames(uint32_t features);
 
 struct PassBuild {
     CompileOptions options;

@@ -40,6 +40,11 @@ struct DeviceOptions {
     bool validation = false;
     // Which physical device (index in vkEnumeratePhysicalDevices order); -1 picks the first.
     int physicalDeviceIndex = -1;
+    // Features to leave disabled although the device supports them (to test how ffx-dof copes):
+    // any of "shaderStorageImageWriteWithoutFormat", "shaderStorageImageExtendedFormats",
+    // "storageBuffer16BitAccess", "shaderFloat16", "subgroupSizeControl", "computeFullSubgroups".
+    // Another name is an Error.
+    std::vector<std::string> withoutFeatures;
 };
 
 // Features ffx-dof can use, as enabled on the created device (each only where supported).
@@ -76,8 +81,10 @@ public:
     // Nanoseconds per timestamp tick.
     double timestampPeriod() const;
 
-    // The backend description for this device, with the features it enabled filled in.
+    // The backend description for this device; pEnabledFeatures is the very chain given to
+    // vkCreateDevice (it lives as long as the Device).
     FfxDofBackendDescriptionVK backendDescription(uint32_t backendFlags = 0) const;
+    const VkPhysicalDeviceFeatures2& enabledFeatures() const;
 
     // Messages of the validation layer (and any other debug-utils message of warning or error
     // severity) since creation or the last clear. Always empty without DeviceOptions::validation.

@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <cstring>
 #include <mutex>
+#include <utility>
 
 namespace ffxdof::vkrun {
 
@@ -32,6 +33,12 @@ struct Device::Impl {
     VkCommandPool commandPool = VK_NULL_HANDLE;
     std::string name;
     DeviceFeatures features;
+    // The chain given to vkCreateDevice (enabled -> enabled11 -> enabled12 -> enabled13); the
+    // backend description points at it.
+    VkPhysicalDeviceFeatures2 enabled{};
+    VkPhysicalDeviceVulkan11Features enabled11{};
+    VkPhysicalDeviceVulkan12Features enabled12{};
+    VkPhysicalDeviceVulkan13Features enabled13{};
     double timestampPeriod = 1.0;
 
     mutable std::mutex messagesMutex;  // the layer may call back from driver threads
@@ -181,19 +188,40 @@ Device::Device(const DeviceOptions& options) : impl_(std::make_unique<Impl>()) {
     supported12.pNext = &supported13;
     vkGetPhysicalDeviceFeatures2(d.physicalDevice, &supported);
 
-    auto enable13 = makeInfo<VkPhysicalDeviceVulkan13Features>(VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_3_FEATURES);
-    auto enable12 = makeInfo<VkPhysicalDeviceVulkan12Features>(VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_2_FEATURES);
-    auto enable11 = makeInfo<VkPhysicalDeviceVulkan11Features>(VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_1_FEATURES);
-    auto enable = makeInfo<VkPhysicalDeviceFeatures2>(VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2);
+    VkPhysicalDeviceFeatures2& enable = d.enabled;
+    VkPhysicalDeviceVulkan11Features& enable11 = d.enabled11;
+    VkPhysicalDeviceVulkan12Features& enable12 = d.enabled12;
+    VkPhysicalDeviceVulkan13Features& enable13 = d.enabled13;
+    enable = makeInfo<VkPhysicalDeviceFeatures2>(VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2);
+    enable11 = makeInfo<VkPhysicalDeviceVulkan11Features>(VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_1_FEATURES);
+    enable12 = makeInfo<VkPhysicalDeviceVulkan12Features>(VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_2_FEATURES);
+    enable13 = makeInfo<VkPhysicalDeviceVulkan13Features>(VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_3_FEATURES);
     enable.pNext = &enable11;
     enable11.pNext = &enable12;
     enable12.pNext = &enable13;
-    enable.features.shaderStorageImageWriteWithoutFormat = supported.features.shaderStorageImageWriteWithoutFormat;
-    enable.features.shaderStorageImageExtendedFormats = supported.features.shaderStorageImageExtendedFormats;
-    enable11.storageBuffer16BitAccess = supported11.storageBuffer16BitAccess;
-    enable12.shaderFloat16 = supported12.shaderFloat16;
-    enable13.subgroupSizeControl = supported13.subgroupSizeControl;
-    enable13.computeFullSubgroups = supported13.computeFullSubgroups;
+    const std::pair<const char*, std::pair<VkBool32*, VkBool32>> wanted[] = {
+        {"shaderStorageImageWriteWithoutFormat",
+         {&enable.features.shaderStorageImageWriteWithoutFormat,
+          supported.features.shaderStorageImageWriteWithoutFormat}},
+        {"shaderStorageImageExtendedFormats",
+         {&enable.features.shaderStorageImageExtendedFormats, supported.features.shaderStorageImageExtendedFormats}},
+        {"storageBuffer16BitAccess", {&enable11.storageBuffer16BitAccess, supported11.storageBuffer16BitAccess}},
+        {"shaderFloat16", {&enable12.shaderFloat16, supported12.shaderFloat16}},
+        {"subgroupSizeControl", {&enable13.subgroupSizeControl, supported13.subgroupSizeControl}},
+        {"computeFullSubgroups", {&enable13.computeFullSubgroups, supported13.computeFullSubgroups}},
+    };
+    for (const auto& [name, feature] : wanted) *feature.first = feature.second;
+    for (const std::string& without : options.withoutFeatures) {
+        bool known = false;
+        for (const auto& [name, feature] : wanted) {
+            if (without == name) {
+                *feature.first = VK_FALSE;
+                known = true;
+            }
+        }
+        if (!known)
+            throw Error("DeviceOptions::withoutFeatures: '" + without + "' is not a feature the harness enables");
+    }
     d.features.shaderStorageImageWriteWithoutFormat = enable.features.shaderStorageImageWriteWithoutFormat;
     d.features.shaderStorageImageExtendedFormats = enable.features.shaderStorageImageExtendedFormats;
     d.features.storageBuffer16BitAccess = enable11.storageBuffer16BitAccess;
@@ -262,12 +290,12 @@ FfxDofBackendDescriptionVK Device::backendDescription(uint32_t backendFlags) con
     description.device = impl_->device;
     description.vkGetInstanceProcAddr = vkGetInstanceProcAddr;
     description.vkGetDeviceProcAddr = vkGetDeviceProcAddr;
+    description.pEnabledFeatures = &impl_->enabled;
     description.flags = backendFlags;
-    description.shaderFloat16Enabled = impl_->features.shaderFloat16;
-    description.storage16BitEnabled = impl_->features.storageBuffer16BitAccess;
-    description.subgroupSizeControlEnabled = impl_->features.subgroupSizeControl;
     return description;
 }
+
+const VkPhysicalDeviceFeatures2& Device::enabledFeatures() const { return impl_->enabled; }
 
 size_t Device::validationMessageCount() const {
     std::lock_guard<std::mutex> lock(impl_->messagesMutex);
