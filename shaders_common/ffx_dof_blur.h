@@ -133,11 +133,11 @@ FFX_DOF_INLINE FfxFloat32 ffxDofRingInnerRadius(FfxUInt32 ring, FfxFloat32 spaci
 // once per walk (the span of the next row is computed at every step of the walk).
 struct FfxDofAnnulusBorder
 {
-    FfxFloat32 block;          // texels per block side (a power of two)
-    FfxFloat32 scale;          // 1 / block
-    FfxFloat32 radius;  // in blocks
-    FfxFloat32 spanCenter;     // origin.x in blocks, less half a block (ffxDofTexelSpan's centre - 0.5)
-    FfxFloat32 rowOffset;      // half a block less origin.y, in blocks
+    FfxFloat32 block;       // texels per block side (a power of two)
+    FfxFloat32 scale;       // 1 / block
+    FfxFloat32 radius;      // in blocks
+    FfxFloat32 spanCenter;  // origin.x in blocks, less half a block (ffxDofTexelSpan's centre - 0.5)
+    FfxFloat32 rowOffset;   // half a block less origin.y, in blocks
 };
 struct FfxDofAnnulus
 {
