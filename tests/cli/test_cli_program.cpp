@@ -378,6 +378,21 @@ TEST_CASE("bench --json", "[vulkan]") {
     CHECK(json.at("copyMs").get<double>() > 0.0);
     CHECK(json.at("ratio").get<double>() == Approx(json.at("totalMs").get<double>() / json.at("copyMs").get<double>()));
     CHECK(json.at("memoryBytes").get<uint64_t>() > 0);
+    // Host CPU time of recording one dispatch (median of 1000 calls, never submitted): present and
+    // positive; its size is a measurement, not asserted.
+    REQUIRE(json.contains("hostRecordUs"));
+    REQUIRE(json.at("hostRecordUs").is_number());
+    CHECK(std::isfinite(json.at("hostRecordUs").get<double>()));
+    CHECK(json.at("hostRecordUs").get<double>() > 0.0);
+    CHECK(json.at("hostRecordCalls") == 1000);
+}
+
+TEST_CASE("bench prints the host recording time", "[vulkan]") {
+    const ProgramResult bench = runProgram("bench --width 40 --height 24 --repeat 1 --validate");
+    INFO(bench.err);
+    REQUIRE(bench.exitCode == 0);
+    CHECK_THAT(bench.out,
+               Catch::Contains("host record") && Catch::Contains(" us (median of 1000 ffxDofContextDispatch calls)"));
 }
 
 TEST_CASE("demo writes every image", "[vulkan]") {

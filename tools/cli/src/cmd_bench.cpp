@@ -1,5 +1,6 @@
-// ffx-dof bench: GPU timestamps of every pass, the total, the internal memory, and a plain copy
-// pass measured in the same run (the device floor), on a reproducible procedural scene.
+// ffx-dof bench: GPU timestamps of every pass, the total, the internal memory, a plain copy pass
+// measured in the same run (the device floor), and the host CPU time of recording one dispatch, on a
+// reproducible procedural scene.
 #include "cli_error.h"
 #include "commands.h"
 #include "effect_run.h"
@@ -17,6 +18,9 @@ namespace {
 // A floor receding from 0.6 m to 60 m with objects before, at and behind the focus: every tile class
 // of the blur pass occurs (in focus, near, far, mixed). The reference renderer draws it deterministically.
 constexpr const char* kBenchScene = "floor";
+
+// ffxDofContextDispatch calls timed on the host (recorded, never submitted) after the GPU runs.
+constexpr uint32_t kHostRecordCalls = 1000;
 
 std::string utcDate() {
     const std::time_t now = std::time(nullptr);
@@ -56,6 +60,7 @@ void runBench(const BenchOptions& options) {
     settings.repeat = options.repeat;
     settings.measureCopyPass = true;
     settings.forceFloat32 = options.float32;
+    settings.hostRecordCalls = kHostRecordCalls;
     const vkrun::RunResult result = runEffectOrThrow(
         *device, toHostImage(pinhole.color), toHostImage(options.width, options.height, depth.deviceDepth), settings);
 
@@ -84,6 +89,8 @@ void runBench(const BenchOptions& options) {
         json["ratio"] = ratio;
         json["memoryBytes"] = result.internalMemoryBytes;
         json["aliasableMemoryBytes"] = result.aliasableMemoryBytes;
+        json["hostRecordUs"] = result.hostRecordMicroseconds;
+        json["hostRecordCalls"] = kHostRecordCalls;
         std::printf("%s\n", json.dump(2).c_str());
         return;
     }
@@ -101,6 +108,8 @@ void runBench(const BenchOptions& options) {
                 static_cast<unsigned long long>(result.internalMemoryBytes),
                 double(result.internalMemoryBytes) / (1024.0 * 1024.0),
                 static_cast<unsigned long long>(result.aliasableMemoryBytes));
+    std::printf("  %-24s %10.1f us (median of %u ffxDofContextDispatch calls)\n", "host record",
+                result.hostRecordMicroseconds, kHostRecordCalls);
 }
 
 }  // namespace ffxdof::cli

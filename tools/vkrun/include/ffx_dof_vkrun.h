@@ -158,6 +158,10 @@ struct RunSettings {
     bool measureCopyPass = false;
     // Frames in flight given to the backend (0 means its default of 3).
     uint32_t maxFramesInFlight = 0;
+    // After the timed runs, the host CPU time of this many more ffxDofContextDispatch calls (0: none),
+    // each recorded into its own command buffer that is never submitted and then freed, without
+    // timestamps: the cost of recording the five passes (RunResult::hostRecordMicroseconds).
+    uint32_t hostRecordCalls = 0;
 };
 
 struct RunResult {
@@ -167,6 +171,7 @@ struct RunResult {
     double copyPassMilliseconds = -1.0;                 // median; -1 without measureCopyPass
     uint64_t internalMemoryBytes = 0;                   // ffxDofContextGetGpuMemoryUsage total
     uint64_t aliasableMemoryBytes = 0;
+    double hostRecordMicroseconds = -1.0;  // median over hostRecordCalls; -1 without them
 };
 
 // Runs the effect once per repeat on color (RGBA) and depth (1 channel) of the same size and
