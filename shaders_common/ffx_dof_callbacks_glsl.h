@@ -187,6 +187,18 @@ void ffxDofStoreColorScale(FfxFloat32 scale)
     ffxDofGlobalWords[FFX_DOF_GLOBALS_COLOR_SCALE] = floatBitsToUint(scale);
 }
 FfxFloat32 ffxDofLoadColorScale() { return uintBitsToFloat(ffxDofGlobalWords[FFX_DOF_GLOBALS_COLOR_SCALE]); }
+FfxFloat32 ffxDofLoadFocusDistance() { return uintBitsToFloat(ffxDofGlobalWords[FFX_DOF_GLOBALS_FOCUS_DISTANCE]); }
+FfxFloat32x2 ffxDofLoadFocusCocLine()
+{
+    return FfxFloat32x2(uintBitsToFloat(ffxDofGlobalWords[FFX_DOF_GLOBALS_FOCUS_COC_SCALE]),
+                        uintBitsToFloat(ffxDofGlobalWords[FFX_DOF_GLOBALS_FOCUS_COC_BIAS]));
+}
+void ffxDofStoreFocus(FfxFloat32 distance, FfxFloat32 cocScale, FfxFloat32 cocBias)
+{
+    ffxDofGlobalWords[FFX_DOF_GLOBALS_FOCUS_DISTANCE] = floatBitsToUint(distance);
+    ffxDofGlobalWords[FFX_DOF_GLOBALS_FOCUS_COC_SCALE] = floatBitsToUint(cocScale);
+    ffxDofGlobalWords[FFX_DOF_GLOBALS_FOCUS_COC_BIAS] = floatBitsToUint(cocBias);
+}
 #endif
 
 #endif  // FFX_DOF_CALLBACKS_GLSL_H

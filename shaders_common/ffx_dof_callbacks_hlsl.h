@@ -217,6 +217,18 @@ FfxFloat32 ffxDofLoadColorPeak() { return asfloat(ffxDofGlobals[FFX_DOF_GLOBALS_
 void ffxDofResetColorPeak() { ffxDofGlobals[FFX_DOF_GLOBALS_COLOR_PEAK] = 0u; }
 void ffxDofStoreColorScale(FfxFloat32 scale) { ffxDofGlobals[FFX_DOF_GLOBALS_COLOR_SCALE] = asuint(scale); }
 FfxFloat32 ffxDofLoadColorScale() { return asfloat(ffxDofGlobals[FFX_DOF_GLOBALS_COLOR_SCALE]); }
+FfxFloat32 ffxDofLoadFocusDistance() { return asfloat(ffxDofGlobals[FFX_DOF_GLOBALS_FOCUS_DISTANCE]); }
+FfxFloat32x2 ffxDofLoadFocusCocLine()
+{
+    return FfxFloat32x2(asfloat(ffxDofGlobals[FFX_DOF_GLOBALS_FOCUS_COC_SCALE]),
+                        asfloat(ffxDofGlobals[FFX_DOF_GLOBALS_FOCUS_COC_BIAS]));
+}
+void ffxDofStoreFocus(FfxFloat32 distance, FfxFloat32 cocScale, FfxFloat32 cocBias)
+{
+    ffxDofGlobals[FFX_DOF_GLOBALS_FOCUS_DISTANCE] = asuint(distance);
+    ffxDofGlobals[FFX_DOF_GLOBALS_FOCUS_COC_SCALE] = asuint(cocScale);
+    ffxDofGlobals[FFX_DOF_GLOBALS_FOCUS_COC_BIAS] = asuint(cocBias);
+}
 #endif
 
 #endif  // FFX_DOF_CALLBACKS_HLSL_H

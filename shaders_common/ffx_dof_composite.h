@@ -26,6 +26,7 @@
 #define FFX_DOF_COMPOSITE_H
 
 #include "ffx_dof_common.h"
+#include "ffx_dof_focus.h"
 
 #if defined(FFX_CPU)
 FfxDofConstants ffxDofGetConstants();
@@ -372,7 +373,7 @@ FFX_DOF_INLINE FfxBoolean ffxDofComposePixel(FfxUInt32x2 pixel, FfxUInt32x2 inQu
 
 FFX_DOF_INLINE void ffxDofComposite(FfxUInt32x2 groupId, FfxUInt32 localIndex)
 {
-    FfxDofConstants constants = ffxDofGetConstants();
+    FfxDofConstants constants = ffxDofGetFocusedConstants();
     if (groupId.x == 0u && groupId.y == 0u && localIndex == 0u)
         ffxDofResetGlobals();
 

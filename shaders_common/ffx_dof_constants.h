@@ -23,13 +23,28 @@ struct FfxDofConstants
     FfxFloat32x2 fullTexelSize;  // 1 / fullSize
     FfxUInt32 frameIndex;        // increments every dispatch; seeds the kernel jitter
     FfxUInt32 outputFlags;       // FFX_DOF_OUTPUT_FLAG_* bits
+    // Autofocus (ffx_dof_autofocus.h); ignored unless focusFlags has FFX_DOF_FOCUS_FLAG_AUTO.
+    FfxFloat32x2 focusRegionCenter;  // normalized image coordinates, origin top-left
+    FfxFloat32x2 focusRegionSize;    // normalized width and height
+    FfxFloat32 focusInvZScale;       // 1 / view z = depth * focusInvZScale - focusInvZBias (p43 / p34)
+    FfxFloat32 focusInvZBias;        // p33 / p34
+    FfxFloat32 focusLensFactor;      // aperture * focalLength * conversion (sensor units -> half-res px)
+    FfxFloat32 focusFocalLength;
+    FfxFloat32 focusMinDistance;  // nearest focus, signed like view z in front of the camera
+    FfxFloat32 focusMaxDistance;  // farthest focus, likewise
+    FfxFloat32 focusBlend;        // 1 - exp(-deltaTime / timeConstant): the share of the new distance
+    FfxUInt32 focusFlags;         // FFX_DOF_FOCUS_FLAG_* bits
 };
 
 // Bits of FfxDofConstants::outputFlags.
 #define FFX_DOF_OUTPUT_FLAG_ENCODE_SRGB 1u  // the output view is UNORM over an sRGB image: encode in shader
 
+// Bits of FfxDofConstants::focusFlags.
+#define FFX_DOF_FOCUS_FLAG_AUTO 1u   // the passes read the CoC line autofocus wrote to GLOBALS
+#define FFX_DOF_FOCUS_FLAG_RESET 2u  // autofocus ignores the previous distance (a camera cut)
+
 #if defined(FFX_CPU)
-static_assert(sizeof(FfxDofConstants) == 64, "FfxDofConstants layout changed: update the offset checks");
+static_assert(sizeof(FfxDofConstants) == 112, "FfxDofConstants layout changed: update the offset checks");
 static_assert(offsetof(FfxDofConstants, fullSize) == 16, "FfxDofConstants::fullSize offset");
 static_assert(offsetof(FfxDofConstants, halfSize) == 24, "FfxDofConstants::halfSize offset");
 static_assert(offsetof(FfxDofConstants, tileCount) == 32, "FfxDofConstants::tileCount offset");
@@ -37,6 +52,10 @@ static_assert(offsetof(FfxDofConstants, halfTexelSize) == 40, "FfxDofConstants::
 static_assert(offsetof(FfxDofConstants, fullTexelSize) == 48, "FfxDofConstants::fullTexelSize offset");
 static_assert(offsetof(FfxDofConstants, frameIndex) == 56, "FfxDofConstants::frameIndex offset");
 static_assert(offsetof(FfxDofConstants, outputFlags) == 60, "FfxDofConstants::outputFlags offset");
+static_assert(offsetof(FfxDofConstants, focusRegionCenter) == 64, "FfxDofConstants::focusRegionCenter offset");
+static_assert(offsetof(FfxDofConstants, focusRegionSize) == 72, "FfxDofConstants::focusRegionSize offset");
+static_assert(offsetof(FfxDofConstants, focusInvZScale) == 80, "FfxDofConstants::focusInvZScale offset");
+static_assert(offsetof(FfxDofConstants, focusFlags) == 108, "FfxDofConstants::focusFlags offset");
 #endif
 
 #endif  // FFX_DOF_CONSTANTS_H

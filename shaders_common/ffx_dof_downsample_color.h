@@ -10,6 +10,7 @@
 #define FFX_DOF_DOWNSAMPLE_COLOR_H
 
 #include "ffx_dof_common.h"
+#include "ffx_dof_focus.h"
 
 #if defined(FFX_CPU)
 FfxDofConstants ffxDofGetConstants();
@@ -156,7 +157,7 @@ FFX_DOF_INLINE FfxDofFloat3 ffxDofLoadInputColorRgb(FfxUInt32x2 pixel, FfxFloat3
 
 FFX_DOF_INLINE void ffxDofDownsampleColor(FfxUInt32x2 groupId, FfxUInt32 localIndex)
 {
-    FfxDofConstants constants = ffxDofGetConstants();
+    FfxDofConstants constants = ffxDofGetFocusedConstants();
     FfxUInt32x2 local = ffxDofLocalCoord(localIndex);
     FfxUInt32x2 texel = groupId * FfxUInt32(FFX_DOF_TILE_SIZE) + local;
     FfxUInt32x2 quad = texel * 2u;

@@ -10,6 +10,7 @@
 #define FFX_DOF_DOWNSAMPLE_DEPTH_H
 
 #include "ffx_dof_common.h"
+#include "ffx_dof_focus.h"
 
 #if defined(FFX_CPU)
 // Accessors this pass calls; each API's callback header implements them.
@@ -83,7 +84,7 @@ FFX_DOF_INLINE FfxFloat32 ffxDofWaveFarthestDepth(FfxFloat32 depth)
 // (a log2(64)-step tree in group-shared memory, one barrier per step, made this pass 2.5x a copy pass).
 FFX_DOF_INLINE void ffxDofDownsampleDepth(FfxUInt32x2 groupId, FfxUInt32 localIndex)
 {
-    FfxDofConstants constants = ffxDofGetConstants();
+    FfxDofConstants constants = ffxDofGetFocusedConstants();
     FfxUInt32x2 quad = groupId * FfxUInt32(FFX_DOF_DOWNSAMPLE_DEPTH_GROUP_EXTENT) + ffxDofLocalCoord(localIndex) * 2u;
     FfxUInt32x2 lastPixel = constants.fullSize - FfxUInt32x2(1u, 1u);
 

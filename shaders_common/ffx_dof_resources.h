@@ -29,7 +29,11 @@
 //                  float bits, atomic max by pass 1 (only where it exceeds FFX_DOF_COLOR_RANGE_LIMIT,
 //                  so 0 in most frames); pass 2 reads, pass 3 writes 0 back.
 //                  [2] (FFX_DOF_GLOBALS_COLOR_SCALE): ffxDofColorRangeScale of the peak as float bits,
-//                  written by pass 2, read by the composite. [3]: unused.
+//                  written by pass 2, read by the composite.
+//                  [3] (FFX_DOF_GLOBALS_FOCUS_DISTANCE): the focus autofocus chose (signed like view
+//                  z, 0 before the first autofocus dispatch), kept across dispatches for smoothing;
+//                  [4], [5] (FFX_DOF_GLOBALS_FOCUS_COC_SCALE / _BIAS): its CoC line, which the passes
+//                  read instead of the constants' when FFX_DOF_FOCUS_FLAG_AUTO is set. [6], [7]: unused.
 #ifndef FFX_DOF_RESOURCES_H
 #define FFX_DOF_RESOURCES_H
 
@@ -73,7 +77,10 @@
 #define FFX_DOF_GLOBALS_MAX_RADIUS 0
 #define FFX_DOF_GLOBALS_COLOR_PEAK 1
 #define FFX_DOF_GLOBALS_COLOR_SCALE 2
-#define FFX_DOF_GLOBALS_WORD_COUNT 4
+#define FFX_DOF_GLOBALS_FOCUS_DISTANCE 3
+#define FFX_DOF_GLOBALS_FOCUS_COC_SCALE 4
+#define FFX_DOF_GLOBALS_FOCUS_COC_BIAS 5
+#define FFX_DOF_GLOBALS_WORD_COUNT 8
 
 // No samplers: every read is an integer texel fetch (texelFetch / Load), so no pass declares one and
 // a reflected sampler is refused at context creation.
@@ -84,6 +91,7 @@
 //   FULL_RES  domain = fullSize  (FfxDofConstants::fullSize)
 //   HALF_RES  domain = halfSize  (ceil(fullSize / 2))
 //   TILES     domain = tileCount (ceil(halfSize / FFX_DOF_TILE_SIZE))
+//   SINGLE    one workgroup (GROUP_EXTENT unused)
 // The four tile-aligned passes give exactly tileCount groups: ceil(W / 16) == ceil(ceil(W / 2) / 8).
 #define FFX_DOF_GROUP_THREADS 64
 // Invocations per side of that square (ffxDofLocalCoord lays them out row by row).
@@ -94,6 +102,11 @@
 #define FFX_DOF_DOMAIN_FULL_RES 0
 #define FFX_DOF_DOMAIN_HALF_RES 1
 #define FFX_DOF_DOMAIN_TILES 2
+#define FFX_DOF_DOMAIN_SINGLE 3
+
+// Pass 0 (autofocus, when asked for): one workgroup samples the focus region.
+#define FFX_DOF_AUTOFOCUS_DOMAIN FFX_DOF_DOMAIN_SINGLE
+#define FFX_DOF_AUTOFOCUS_GROUP_EXTENT 1
 
 // Pass 1: one workgroup = one tile (16 x 16 full-res px); a thread reduces a 2 x 2 px quad.
 #define FFX_DOF_DOWNSAMPLE_DEPTH_DOMAIN FFX_DOF_DOMAIN_FULL_RES

@@ -113,6 +113,30 @@ typedef struct FfxDofContextDescription {
     float cocLimitFactor;
 } FfxDofContextDescription;
 
+/** Autofocus (not in FidelityFX DoF 1.1): the dispatch picks its focus distance from the depth in a
+ *  region, on the GPU, instead of taking cocScale / cocBias. See docs/autofocus.md. Zero-initialise,
+ *  then set every field. */
+typedef struct FfxDofAutofocus {
+    /** Centre of the region, normalized image coordinates (0,0 top-left, 1,1 bottom-right). */
+    float regionCenter[2];
+    /** Width and height of the region, normalized (0 < size <= 1; e.g. 0.1 = a tenth of the image). */
+    float regionSize[2];
+    /** The lens and projection, as ffxDofCalculateCocScale takes them: aperture radius, focal length
+     *  (same unit as the distances), sensor units -> half-resolution pixels, and the projection terms. */
+    float aperture;
+    float focalLength;
+    float conversion;
+    float proj33, proj34, proj43;
+    /** The focus distance is clamped to [minFocusDistance, maxFocusDistance] (positive, same unit;
+     *  focalLength < minFocusDistance <= maxFocusDistance, finite). */
+    float minFocusDistance;
+    float maxFocusDistance;
+    /** Seconds for the focus to cover 63% of a change (exponential, in dioptres); 0 = no smoothing. */
+    float timeConstant;
+    /** Seconds since the previous dispatch of this context. */
+    float deltaTime;
+} FfxDofAutofocus;
+
 /** Per-frame parameters. */
 typedef struct FfxDofDispatchDescription {
     /** The engine's command buffer, recording; the effect appends to it and never submits it. */
@@ -133,6 +157,9 @@ typedef struct FfxDofDispatchDescription {
      *  near field, negative for the far field. See ffxDofCalculateCocScale / ffxDofCalculateCocBias. */
     float cocScale;
     float cocBias;
+    /** NULL: manual focus (cocScale / cocBias). Otherwise autofocus decides the focus on the GPU and
+     *  cocScale / cocBias are ignored. Read during the call only. */
+    const FfxDofAutofocus* pAutofocus;
 } FfxDofDispatchDescription;
 
 /** Internal GPU memory of a context. */
@@ -151,6 +178,18 @@ FfxDofErrorCode ffxDofContextDispatch(FfxDofContext* pContext, const FfxDofDispa
 /** Destroys the context and sets *pContext to NULL. The GPU must have finished every dispatch
  *  recorded with it. Destroying a NULL handle returns FFX_DOF_OK. */
 FfxDofErrorCode ffxDofContextDestroy(FfxDofContext* pContext);
+
+/** Autofocus forgets the distance it has been smoothing (a camera cut): the next autofocus dispatch
+ *  focuses at once. */
+FfxDofErrorCode ffxDofContextResetAutofocus(FfxDofContext* pContext);
+
+/** The focus distance autofocus chose in the dispatch recorded dispatchesAgo dispatches before the
+ *  latest one (0 = the latest), without waiting: the caller says that dispatch has finished on the
+ *  GPU. maxFramesInFlight (see the backend description) is always safe while recording the next
+ *  frame; 0 is right after the engine waited for the GPU. Positive, in the unit of the lens. Returns
+ *  FFX_DOF_ERROR_INVALID_ARGUMENT when that dispatch did not run autofocus or is not kept (at most
+ *  maxFramesInFlight dispatches back). */
+FfxDofErrorCode ffxDofContextGetAutofocusDistance(FfxDofContext* pContext, uint32_t dispatchesAgo, float* pDistance);
 
 /** Bytes of internal GPU memory the context holds. */
 FfxDofErrorCode ffxDofContextGetGpuMemoryUsage(FfxDofContext* pContext, FfxDofMemoryUsage* pVramUsage);

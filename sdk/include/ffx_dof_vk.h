@@ -74,8 +74,9 @@ FfxDofCommandList ffxDofGetCommandListVK(VkCommandBuffer commandBuffer);
 FfxDofErrorCode ffxDofContextReleaseImageVK(FfxDofContext* pContext, VkImage image);
 
 /** Number of timestamps ffxDofContextSetTimestampQueriesVK writes per dispatch: one before the first
- *  pass and one after each of the five passes. */
-#define FFX_DOF_VK_TIMESTAMP_COUNT 6u
+ *  pass and one after each of the six passes (autofocus, then the five of FidelityFX DoF; autofocus
+ *  takes no time in a dispatch that does not ask for it). */
+#define FFX_DOF_VK_TIMESTAMP_COUNT 7u
 
 /** Profiling: later dispatches write FFX_DOF_VK_TIMESTAMP_COUNT timestamps into queryPool starting at
  *  firstQuery (and reset them first). VK_NULL_HANDLE stops it. The pool is the engine's. */

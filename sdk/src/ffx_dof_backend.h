@@ -20,6 +20,9 @@ public:
     // Checks what is API-specific about the engine's resources (formats, states, flags) and records.
     virtual FfxDofErrorCode dispatch(const DispatchPlan& dispatch) = 0;
     virtual FfxDofMemoryUsage memoryUsage() const = 0;
+    // The focus distance the autofocus pass of the dispatch `dispatchesAgo` before the latest chose
+    // (the caller says the GPU finished it); FFX_DOF_ERROR_INVALID_ARGUMENT when not kept or not run.
+    virtual FfxDofErrorCode autofocusDistance(uint32_t dispatchesAgo, float* distance) const = 0;
 };
 
 }  // namespace ffxdof

@@ -11,6 +11,7 @@ struct FfxDofContext_T {
     ffxdof::ContextPlan plan;
     std::unique_ptr<ffxdof::BackendContext> impl;
     uint32_t frameIndex = 0;
+    bool resetAutofocus = false;  // ffxDofContextResetAutofocus: applies to the next autofocus dispatch
 };
 
 namespace ffxdof {
@@ -159,16 +160,21 @@ extern "C" FfxDofErrorCode ffxDofContextDispatch(FfxDofContext* pContext,
                     desc.output.flags != desc.color.flags))
         return fail(FFX_DOF_ERROR_INVALID_RESOURCE,
                     "output is the color image (in place) but its format, state or flags differ from color's");
-    if (!std::isfinite(desc.cocScale) || !std::isfinite(desc.cocBias))
+    if (desc.pAutofocus != nullptr) {
+        if (const FfxDofErrorCode status = checkAutofocus(*desc.pAutofocus); status != FFX_DOF_OK) return status;
+    } else if (!std::isfinite(desc.cocScale) || !std::isfinite(desc.cocBias))
         return fail(FFX_DOF_ERROR_INVALID_ARGUMENT,
                     "cocScale %g / cocBias %g must be finite (ffxDofCalculateCocScale/Bias return NaN for "
                     "impossible lenses: |focus| <= focalLength)",
                     static_cast<double>(desc.cocScale), static_cast<double>(desc.cocBias));
 
     try {
-        const DispatchPlan dispatch = planDispatch(context->plan, desc, context->frameIndex);
+        const DispatchPlan dispatch = planDispatch(context->plan, desc, context->frameIndex, context->resetAutofocus);
         const FfxDofErrorCode status = context->impl->dispatch(dispatch);
-        if (status == FFX_DOF_OK) ++context->frameIndex;
+        if (status == FFX_DOF_OK) {
+            ++context->frameIndex;
+            if (desc.pAutofocus != nullptr) context->resetAutofocus = false;
+        }
         return status;
     } catch (const std::bad_alloc&) {
         return fail(FFX_DOF_ERROR_OUT_OF_MEMORY, "host allocation failed while recording the dispatch");
@@ -187,6 +193,23 @@ extern "C" FfxDofErrorCode ffxDofContextDestroy(FfxDofContext* pContext) {
     --backend->liveContexts;
     *pContext = nullptr;
     return FFX_DOF_OK;
+}
+
+extern "C" FfxDofErrorCode ffxDofContextResetAutofocus(FfxDofContext* pContext) {
+    clearLastError();
+    FfxDofContext_T* context = nullptr;
+    if (const FfxDofErrorCode status = lookUpLiveContext(pContext, &context); status != FFX_DOF_OK) return status;
+    context->resetAutofocus = true;
+    return FFX_DOF_OK;
+}
+
+extern "C" FfxDofErrorCode ffxDofContextGetAutofocusDistance(FfxDofContext* pContext, uint32_t dispatchesAgo,
+                                                             float* pDistance) {
+    clearLastError();
+    FfxDofContext_T* context = nullptr;
+    if (const FfxDofErrorCode status = lookUpLiveContext(pContext, &context); status != FFX_DOF_OK) return status;
+    if (pDistance == nullptr) return fail(FFX_DOF_ERROR_INVALID_POINTER, "pDistance is NULL");
+    return context->impl->autofocusDistance(dispatchesAgo, pDistance);
 }
 
 extern "C" FfxDofErrorCode ffxDofContextGetGpuMemoryUsage(FfxDofContext* pContext, FfxDofMemoryUsage* pVramUsage) {

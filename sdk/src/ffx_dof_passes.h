@@ -60,8 +60,8 @@ constexpr uint32_t kSampledSlotCount = FFX_DOF_SRV_LAYER_ALPHA + 1;
 constexpr uint32_t kStorageImageSlotCount = FFX_DOF_UAV_OUTPUT + 1;
 constexpr uint32_t kStorageBufferSlotCount = FFX_DOF_UAV_BUFFER_GLOBALS + 1;
 
-// The GLOBALS storage buffer (FFX_DOF_UAV_BUFFER_GLOBALS): four 32-bit words.
-constexpr uint32_t kGlobalsWordCount = 4;
+// The GLOBALS storage buffer (FFX_DOF_UAV_BUFFER_GLOBALS): 32-bit words.
+constexpr uint32_t kGlobalsWordCount = FFX_DOF_GLOBALS_WORD_COUNT;
 constexpr uint32_t kGlobalsBufferBytes = kGlobalsWordCount * 4;
 
 // Levels of an image of this size: kMipCount for a mip chain, clamped to the full chain of a

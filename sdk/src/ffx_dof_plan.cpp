@@ -4,6 +4,7 @@
 
 #include "ffx_dof_backend.h"
 
+#include <cmath>
 #include <cstring>
 #include <string>
 #include <vector>
@@ -144,6 +145,7 @@ PassGrid passGroups(const FfxDofConstants& constants, Pass pass) {
     // Each pass covers a domain with groups of a fixed extent, both declared next to the resource
     // table (ffx_dof_resources.h), so shader and host cannot disagree.
     const uint32_t p = uint32_t(pass);
+    if (kPassDomain[p] == FFX_DOF_DOMAIN_SINGLE) return PassGrid{1, 1, 1};
     FfxUInt32x2 domain = constants.fullSize;
     if (kPassDomain[p] == FFX_DOF_DOMAIN_HALF_RES) domain = constants.halfSize;
     if (kPassDomain[p] == FFX_DOF_DOMAIN_TILES) domain = constants.tileCount;
@@ -188,7 +190,59 @@ FfxDofErrorCode buildContextPlan(const ContextConfig& config, const BackendCapab
     return FFX_DOF_OK;
 }
 
-DispatchPlan planDispatch(const ContextPlan& plan, const FfxDofDispatchDescription& dispatch, uint32_t frameIndex) {
+FfxDofErrorCode checkAutofocus(const FfxDofAutofocus& a) {
+    const struct {
+        const char* name;
+        float value;
+    } fields[] = {{"regionCenter[0]", a.regionCenter[0]},
+                  {"regionCenter[1]", a.regionCenter[1]},
+                  {"regionSize[0]", a.regionSize[0]},
+                  {"regionSize[1]", a.regionSize[1]},
+                  {"aperture", a.aperture},
+                  {"focalLength", a.focalLength},
+                  {"conversion", a.conversion},
+                  {"proj33", a.proj33},
+                  {"proj34", a.proj34},
+                  {"proj43", a.proj43},
+                  {"minFocusDistance", a.minFocusDistance},
+                  {"maxFocusDistance", a.maxFocusDistance},
+                  {"timeConstant", a.timeConstant},
+                  {"deltaTime", a.deltaTime}};
+    for (const auto& field : fields) {
+        if (!std::isfinite(field.value))
+            return fail(FFX_DOF_ERROR_INVALID_ARGUMENT, "pAutofocus->%s is %g; it must be finite", field.name,
+                        double(field.value));
+    }
+    for (int i = 0; i < 2; ++i) {
+        if (a.regionCenter[i] < 0.0f || a.regionCenter[i] > 1.0f)
+            return fail(FFX_DOF_ERROR_INVALID_ARGUMENT, "pAutofocus->regionCenter[%d] is %g; it must be in 0..1", i,
+                        double(a.regionCenter[i]));
+        if (!(a.regionSize[i] > 0.0f) || a.regionSize[i] > 1.0f)
+            return fail(FFX_DOF_ERROR_INVALID_ARGUMENT, "pAutofocus->regionSize[%d] is %g; it must be in (0, 1]", i,
+                        double(a.regionSize[i]));
+    }
+    if (a.aperture < 0.0f)
+        return fail(FFX_DOF_ERROR_INVALID_ARGUMENT, "pAutofocus->aperture is %g; it must be >= 0", double(a.aperture));
+    if (!(a.focalLength > 0.0f) || !(a.conversion > 0.0f))
+        return fail(FFX_DOF_ERROR_INVALID_ARGUMENT, "pAutofocus->focalLength (%g) and conversion (%g) must be > 0",
+                    double(a.focalLength), double(a.conversion));
+    if (a.proj34 == 0.0f || a.proj43 == 0.0f)
+        return fail(FFX_DOF_ERROR_INVALID_ARGUMENT,
+                    "pAutofocus->proj34 (%g) and proj43 (%g) must not be 0 (a perspective projection)",
+                    double(a.proj34), double(a.proj43));
+    if (!(a.minFocusDistance > a.focalLength) || a.maxFocusDistance < a.minFocusDistance)
+        return fail(FFX_DOF_ERROR_INVALID_ARGUMENT,
+                    "pAutofocus: focus distances must satisfy focalLength (%g) < minFocusDistance (%g) <= "
+                    "maxFocusDistance (%g)",
+                    double(a.focalLength), double(a.minFocusDistance), double(a.maxFocusDistance));
+    if (a.timeConstant < 0.0f || a.deltaTime < 0.0f)
+        return fail(FFX_DOF_ERROR_INVALID_ARGUMENT, "pAutofocus->timeConstant (%g) and deltaTime (%g) must be >= 0",
+                    double(a.timeConstant), double(a.deltaTime));
+    return FFX_DOF_OK;
+}
+
+DispatchPlan planDispatch(const ContextPlan& plan, const FfxDofDispatchDescription& dispatch, uint32_t frameIndex,
+                          bool resetAutofocus) {
     DispatchPlan out;
     out.commandList = dispatch.commandList;
     out.color = dispatch.color;
@@ -199,6 +253,24 @@ DispatchPlan planDispatch(const ContextPlan& plan, const FfxDofDispatchDescripti
     out.constants.cocScale = dispatch.cocScale;
     out.constants.cocBias = dispatch.cocBias;
     out.constants.frameIndex = frameIndex;
+    for (uint32_t p = 0; p < kPassCount; ++p) out.runs[p] = Pass(p) != Pass::Autofocus;
+    if (const FfxDofAutofocus* a = dispatch.pAutofocus) {
+        out.runs[uint32_t(Pass::Autofocus)] = true;
+        FfxDofConstants& c = out.constants;
+        c.focusRegionCenter = {a->regionCenter[0], a->regionCenter[1]};
+        c.focusRegionSize = {a->regionSize[0], a->regionSize[1]};
+        // 1 / z = depth * p43 / p34 - p33 / p34 (docs/coc.md).
+        c.focusInvZScale = a->proj43 / a->proj34;
+        c.focusInvZBias = a->proj33 / a->proj34;
+        c.focusLensFactor = a->aperture * a->focalLength * a->conversion;
+        c.focusFocalLength = a->focalLength;
+        // In front of the camera clip w = p43 z is positive: z has the sign of p43.
+        const float side = a->proj43 > 0.0f ? 1.0f : -1.0f;
+        c.focusMinDistance = side * a->minFocusDistance;
+        c.focusMaxDistance = side * a->maxFocusDistance;
+        c.focusBlend = a->timeConstant > 0.0f ? float(1.0 - std::exp(-double(a->deltaTime) / a->timeConstant)) : 1.0f;
+        c.focusFlags = FFX_DOF_FOCUS_FLAG_AUTO | (resetAutofocus ? FFX_DOF_FOCUS_FLAG_RESET : 0u);
+    }
     return out;
 }
 

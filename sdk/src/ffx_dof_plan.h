@@ -98,10 +98,16 @@ struct DispatchPlan {
     FfxDofResource output{};
     FfxDofConstants constants{};  // the backend may only add FFX_DOF_OUTPUT_FLAG_* bits
     bool outputIsColor = false;   // in place: output and color are the same image
+    bool runs[kPassCount] = {};   // the passes to record (autofocus only when the dispatch asks for it)
 };
 
-// The per-frame values added to the context's constants.
-DispatchPlan planDispatch(const ContextPlan& plan, const FfxDofDispatchDescription& dispatch, uint32_t frameIndex);
+// Checks an autofocus description; FFX_DOF_ERROR_INVALID_ARGUMENT naming the field otherwise.
+FfxDofErrorCode checkAutofocus(const FfxDofAutofocus& autofocus);
+
+// The per-frame values added to the context's constants. resetAutofocus: autofocus ignores its
+// previous distance (ffxDofContextResetAutofocus).
+DispatchPlan planDispatch(const ContextPlan& plan, const FfxDofDispatchDescription& dispatch, uint32_t frameIndex,
+                          bool resetAutofocus = false);
 
 // The grid, images and constants of a configuration without shader tables (for tests and tools).
 FfxDofConstants contextConstants(const ContextConfig& config);

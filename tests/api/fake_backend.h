@@ -27,6 +27,9 @@ public:
         return FFX_DOF_OK;
     }
     FfxDofMemoryUsage memoryUsage() const override { return {1234, 0}; }
+    FfxDofErrorCode autofocusDistance(uint32_t, float*) const override {
+        return fail(FFX_DOF_ERROR_INVALID_ARGUMENT, "the recording backend runs no autofocus");
+    }
 
 private:
     std::vector<DispatchPlan>* log_;

@@ -31,7 +31,8 @@ struct Fixture {
     FfxDofContextDescription description{0, 10, {64, 32}, nullptr, 0.05f};
     FfxDofContext context = nullptr;
     int commandListStorage = 0;
-    FfxDofDispatchDescription dispatch{&commandListStorage, image(kColor), image(kDepth), image(kOutput), -2.0f, 1.0f};
+    FfxDofDispatchDescription dispatch{
+        &commandListStorage, image(kColor), image(kDepth), image(kOutput), -2.0f, 1.0f, nullptr};
 
     FfxDofErrorCode create() { return ffxDofContextCreate(&context, &description); }
 };

@@ -101,6 +101,16 @@ TEST_CASE("push constants are laid out like FfxDofConstants", "[passes][reflecti
         {"fullTexelSize", offsetof(FfxDofConstants, fullTexelSize)},
         {"frameIndex", offsetof(FfxDofConstants, frameIndex)},
         {"outputFlags", offsetof(FfxDofConstants, outputFlags)},
+        {"focusRegionCenter", offsetof(FfxDofConstants, focusRegionCenter)},
+        {"focusRegionSize", offsetof(FfxDofConstants, focusRegionSize)},
+        {"focusInvZScale", offsetof(FfxDofConstants, focusInvZScale)},
+        {"focusInvZBias", offsetof(FfxDofConstants, focusInvZBias)},
+        {"focusLensFactor", offsetof(FfxDofConstants, focusLensFactor)},
+        {"focusFocalLength", offsetof(FfxDofConstants, focusFocalLength)},
+        {"focusMinDistance", offsetof(FfxDofConstants, focusMinDistance)},
+        {"focusMaxDistance", offsetof(FfxDofConstants, focusMaxDistance)},
+        {"focusBlend", offsetof(FfxDofConstants, focusBlend)},
+        {"focusFlags", offsetof(FfxDofConstants, focusFlags)},
     };
     for (const char* language : {"glsl", "hlsl"}) {
         const nlohmann::json json = permutationsJson();

@@ -119,6 +119,10 @@ void ffxDofStoreColorScale(FfxFloat32 scale) {
     g_state->globals[FFX_DOF_GLOBALS_COLOR_SCALE].store(ffxDofAsUInt(scale));
 }
 FfxFloat32 ffxDofLoadColorScale() { return ffxDofAsFloat(g_state->globals[FFX_DOF_GLOBALS_COLOR_SCALE].load()); }
+FfxFloat32x2 ffxDofLoadFocusCocLine() {
+    return {ffxDofAsFloat(g_state->globals[FFX_DOF_GLOBALS_FOCUS_COC_SCALE].load()),
+            ffxDofAsFloat(g_state->globals[FFX_DOF_GLOBALS_FOCUS_COC_BIAS].load())};
+}
 void ffxDofStoreColorMip(FfxUInt32 mip, FfxUInt32x2 t, FfxDofFloat3 c) { g_state->colorMips[mip].store(t.x, t.y, c); }
 void ffxDofStoreCocMip(FfxUInt32 mip, FfxUInt32x2 t, FfxFloat32 c) { g_state->cocMips[mip].store(t.x, t.y, c); }
 FfxFloat32 ffxDofLoadGlobalMaxRadius() { return ffxDofAsFloat(g_state->globals[FFX_DOF_GLOBALS_MAX_RADIUS].load()); }

@@ -5,8 +5,10 @@
 #include "ffx_dof_dx12_formats.h"
 #include "ffx_dof_dx12_state_tracker.h"
 
+#include <cmath>
 #include <cstdint>
 #include <new>
+#include <vector>
 
 namespace ffxdof::dx12 {
 namespace {
@@ -88,6 +90,7 @@ public:
     FfxDofErrorCode init();
     FfxDofErrorCode dispatch(const DispatchPlan& plan) override;
     FfxDofMemoryUsage memoryUsage() const override { return memory_; }
+    FfxDofErrorCode autofocusDistance(uint32_t dispatchesAgo, float* distance) const override;
 
 private:
     struct InternalImage {
@@ -101,6 +104,8 @@ private:
     void chooseRestStates();
     FfxDofErrorCode createPipelines();
     FfxDofErrorCode createResources();
+    FfxDofErrorCode createReadback();
+    void recordFocusReadback(ID3D12GraphicsCommandList* list, uint32_t slot) const;
     FfxDofErrorCode createDescriptorHeap();
     FfxDofErrorCode checkOutputFormatSupport(DXGI_FORMAT format);
 
@@ -117,6 +122,12 @@ private:
     ComPtr<ID3D12PipelineState> pipelines_[kPassCount];
     InternalImage images_[kInternalImageCount];
     ComPtr<ID3D12Resource> globals_;
+    // The focus distance of the last maxFramesInFlight + 1 dispatches (ffxDofContextGetAutofocusDistance):
+    // a readback buffer, mapped for the context's life; slot = dispatch index % slots.
+    ComPtr<ID3D12Resource> readback_;
+    const float* readbackValues_ = nullptr;
+    std::vector<uint64_t> readbackDispatch_;  // per slot: 1 + the dispatch index that wrote it, 0: none
+    uint64_t dispatchCount_ = 0;
     ComPtr<ID3D12DescriptorHeap> heap_;
     D3D12_CPU_DESCRIPTOR_HANDLE heapCpuStart_{};
     D3D12_GPU_DESCRIPTOR_HANDLE heapGpuStart_{};
@@ -129,6 +140,7 @@ FfxDofErrorCode Context::init() {
     if (const FfxDofErrorCode status = createPipelines(); status != FFX_DOF_OK) return status;
     chooseRestStates();
     if (const FfxDofErrorCode status = createResources(); status != FFX_DOF_OK) return status;
+    if (const FfxDofErrorCode status = createReadback(); status != FFX_DOF_OK) return status;
     return createDescriptorHeap();
 }
 
@@ -234,6 +246,68 @@ FfxDofErrorCode Context::createResources() {
                     "creating the GLOBALS buffer failed (HRESULT 0x%08lx)", static_cast<unsigned long>(hr));
     // Not aliasable: it carries the zero the composite pass writes back into the next dispatch.
     memory_.totalUsageInBytes += device->GetResourceAllocationInfo(0, 1, &desc).SizeInBytes;
+    return FFX_DOF_OK;
+}
+
+FfxDofErrorCode Context::createReadback() {
+    const uint32_t slots = backend_.framesInFlight() + 1;
+    readbackDispatch_.assign(slots, 0);
+    D3D12_HEAP_PROPERTIES heap{};
+    heap.Type = D3D12_HEAP_TYPE_READBACK;
+    D3D12_RESOURCE_DESC desc{};
+    desc.Dimension = D3D12_RESOURCE_DIMENSION_BUFFER;
+    desc.Width = slots * sizeof(float);
+    desc.Height = 1;
+    desc.DepthOrArraySize = 1;
+    desc.MipLevels = 1;
+    desc.Format = DXGI_FORMAT_UNKNOWN;
+    desc.SampleDesc.Count = 1;
+    desc.Layout = D3D12_TEXTURE_LAYOUT_ROW_MAJOR;
+    HRESULT hr = backend_.device()->CreateCommittedResource(
+        &heap, D3D12_HEAP_FLAG_NONE, &desc, D3D12_RESOURCE_STATE_COPY_DEST, nullptr, IID_PPV_ARGS(&readback_));
+    if (FAILED(hr))
+        return fail(hr == E_OUTOFMEMORY ? FFX_DOF_ERROR_OUT_OF_MEMORY : FFX_DOF_ERROR_BACKEND,
+                    "creating the autofocus readback buffer failed (HRESULT 0x%08lx)", static_cast<unsigned long>(hr));
+    memory_.totalUsageInBytes += backend_.device()->GetResourceAllocationInfo(0, 1, &desc).SizeInBytes;
+    void* mapped = nullptr;
+    hr = readback_->Map(0, nullptr, &mapped);
+    if (FAILED(hr))
+        return fail(FFX_DOF_ERROR_BACKEND, "mapping the autofocus readback buffer failed (HRESULT 0x%08lx)",
+                    static_cast<unsigned long>(hr));
+    readbackValues_ = static_cast<const float*>(mapped);
+    return FFX_DOF_OK;
+}
+
+void Context::recordFocusReadback(ID3D12GraphicsCommandList* list, uint32_t slot) const {
+    // GLOBALS is a UAV during the passes; the copy reads it, then it is a UAV again for whatever the
+    // list records next (another dispatch of this context).
+    D3D12_RESOURCE_BARRIER barrier{};
+    barrier.Type = D3D12_RESOURCE_BARRIER_TYPE_TRANSITION;
+    barrier.Transition.pResource = globals_.Get();
+    barrier.Transition.Subresource = D3D12_RESOURCE_BARRIER_ALL_SUBRESOURCES;
+    barrier.Transition.StateBefore = D3D12_RESOURCE_STATE_UNORDERED_ACCESS;
+    barrier.Transition.StateAfter = D3D12_RESOURCE_STATE_COPY_SOURCE;
+    list->ResourceBarrier(1, &barrier);
+    list->CopyBufferRegion(readback_.Get(), slot * sizeof(float), globals_.Get(),
+                           FFX_DOF_GLOBALS_FOCUS_DISTANCE * kGlobalsElementBytes, sizeof(float));
+    barrier.Transition.StateBefore = D3D12_RESOURCE_STATE_COPY_SOURCE;
+    barrier.Transition.StateAfter = D3D12_RESOURCE_STATE_UNORDERED_ACCESS;
+    list->ResourceBarrier(1, &barrier);
+}
+
+FfxDofErrorCode Context::autofocusDistance(uint32_t dispatchesAgo, float* distance) const {
+    if (dispatchesAgo > backend_.framesInFlight())
+        return fail(FFX_DOF_ERROR_INVALID_ARGUMENT, "dispatchesAgo %u: only the last maxFramesInFlight (%u) are kept",
+                    dispatchesAgo, backend_.framesInFlight());
+    if (dispatchesAgo >= dispatchCount_)
+        return fail(FFX_DOF_ERROR_INVALID_ARGUMENT, "dispatchesAgo %u: the context has recorded %llu dispatches",
+                    dispatchesAgo, static_cast<unsigned long long>(dispatchCount_));
+    const uint64_t index = dispatchCount_ - 1 - dispatchesAgo;
+    const size_t slot = static_cast<size_t>(index % readbackDispatch_.size());
+    if (readbackDispatch_[slot] != index + 1)
+        return fail(FFX_DOF_ERROR_INVALID_ARGUMENT, "the dispatch %u before the latest did not run autofocus",
+                    dispatchesAgo);
+    *distance = std::fabs(readbackValues_[slot]);
     return FFX_DOF_OK;
 }
 
@@ -367,6 +441,7 @@ FfxDofErrorCode Context::dispatch(const DispatchPlan& plan) {
     list->SetComputeRootDescriptorTable(kRootDescriptorTableParameter, table);
 
     for (uint32_t p = 0; p < kPassCount; ++p) {
+        if (!plan.runs[p]) continue;  // autofocus, when the dispatch does not ask for it
         const PlannedPass& pass = plan_.passes[p];
         tracker.beforePass(slots, pass, globals_.Get());
         tracker.flush(list);
@@ -376,6 +451,13 @@ FfxDofErrorCode Context::dispatch(const DispatchPlan& plan) {
     }
     tracker.restore();
     tracker.flush(list);
+    const uint32_t readbackSlot = static_cast<uint32_t>(dispatchCount_ % readbackDispatch_.size());
+    readbackDispatch_[readbackSlot] = 0;
+    if (plan.runs[static_cast<uint32_t>(Pass::Autofocus)]) {
+        recordFocusReadback(list, readbackSlot);
+        readbackDispatch_[readbackSlot] = dispatchCount_ + 1;
+    }
+    ++dispatchCount_;
     return FFX_DOF_OK;
 }
 

@@ -83,9 +83,9 @@ FfxDofErrorCode BackendVK::createContext(const ContextPlan& plan, std::unique_pt
     return FFX_DOF_OK;
 }
 
-bool BackendVK::findMemoryType(uint32_t typeBits, uint32_t* index) const {
+bool BackendVK::findMemoryType(uint32_t typeBits, uint32_t* index, VkMemoryPropertyFlags required) const {
     for (VkMemoryPropertyFlags wanted :
-         {VkMemoryPropertyFlags(VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT), VkMemoryPropertyFlags(0)}) {
+         {VkMemoryPropertyFlags(VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT | required), required}) {
         for (uint32_t i = 0; i < memoryProperties_.memoryTypeCount; ++i) {
             if ((typeBits & (1u << i)) && (memoryProperties_.memoryTypes[i].propertyFlags & wanted) == wanted) {
                 *index = i;

@@ -27,8 +27,8 @@ public:
     BackendCapabilities capabilities() const override;
     FfxDofErrorCode createContext(const ContextPlan& plan, std::unique_ptr<BackendContext>* out) override;
 
-    // A memory type allowed by typeBits, device-local where possible.
-    bool findMemoryType(uint32_t typeBits, uint32_t* index) const;
+    // A memory type allowed by typeBits with the `required` properties, device-local where possible.
+    bool findMemoryType(uint32_t typeBits, uint32_t* index, VkMemoryPropertyFlags required = 0) const;
     VkFormatFeatureFlags optimalFeatures(VkFormat format) const;
 
     Functions fn;

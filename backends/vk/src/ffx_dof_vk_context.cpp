@@ -47,11 +47,14 @@ ContextVK::~ContextVK() {
     fn.vkFreeMemory(device, imageMemory_, allocator);
     fn.vkDestroyBuffer(device, globals_, allocator);
     fn.vkFreeMemory(device, globalsMemory_, allocator);
+    fn.vkDestroyBuffer(device, readback_, allocator);
+    fn.vkFreeMemory(device, readbackMemory_, allocator);  // unmaps it
 }
 
 FfxDofErrorCode ContextVK::create() {
     FfxDofErrorCode result = createImages();
     if (result == FFX_DOF_OK) result = createGlobals();
+    if (result == FFX_DOF_OK) result = createReadback();
     if (result == FFX_DOF_OK) result = createPipelines();
     if (result == FFX_DOF_OK) result = createDescriptors();
     return result;
@@ -135,7 +138,8 @@ FfxDofErrorCode ContextVK::createGlobals() {
     const VkDevice device = backend_.device;
     auto bufferInfo = makeInfo<VkBufferCreateInfo>(VK_STRUCTURE_TYPE_BUFFER_CREATE_INFO);
     bufferInfo.size = kGlobalsBufferBytes;
-    bufferInfo.usage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT;
+    bufferInfo.usage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT |
+                       VK_BUFFER_USAGE_TRANSFER_SRC_BIT;  // autofocus copies its distance out
     bufferInfo.sharingMode = VK_SHARING_MODE_EXCLUSIVE;
     FFX_DOF_VK_CHECK(fn.vkCreateBuffer(device, &bufferInfo, backend_.allocator, &globals_), "vkCreateBuffer (GLOBALS)");
     VkMemoryRequirements requirements{};
@@ -149,6 +153,36 @@ FfxDofErrorCode ContextVK::createGlobals() {
     FFX_DOF_VK_CHECK(fn.vkAllocateMemory(device, &allocation, backend_.allocator, &globalsMemory_),
                      "vkAllocateMemory (GLOBALS)");
     FFX_DOF_VK_CHECK(fn.vkBindBufferMemory(device, globals_, globalsMemory_, 0), "vkBindBufferMemory");
+    return FFX_DOF_OK;
+}
+
+FfxDofErrorCode ContextVK::createReadback() {
+    const Functions& fn = backend_.fn;
+    const VkDevice device = backend_.device;
+    const uint32_t slots = backend_.framesInFlight + 1;
+    readbackDispatch_.assign(slots, 0);
+    auto bufferInfo = makeInfo<VkBufferCreateInfo>(VK_STRUCTURE_TYPE_BUFFER_CREATE_INFO);
+    bufferInfo.size = slots * sizeof(float);
+    bufferInfo.usage = VK_BUFFER_USAGE_TRANSFER_DST_BIT;
+    bufferInfo.sharingMode = VK_SHARING_MODE_EXCLUSIVE;
+    FFX_DOF_VK_CHECK(fn.vkCreateBuffer(device, &bufferInfo, backend_.allocator, &readback_),
+                     "vkCreateBuffer (autofocus readback)");
+    VkMemoryRequirements requirements{};
+    fn.vkGetBufferMemoryRequirements(device, readback_, &requirements);
+    memoryUsage_.totalUsageInBytes += requirements.size;
+    auto allocation = makeInfo<VkMemoryAllocateInfo>(VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO);
+    allocation.allocationSize = requirements.size;
+    if (!backend_.findMemoryType(requirements.memoryTypeBits, &allocation.memoryTypeIndex,
+                                 VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT)) {
+        return fail(FFX_DOF_ERROR_UNSUPPORTED, "no host-visible, coherent memory type can hold the autofocus readback");
+    }
+    FFX_DOF_VK_CHECK(fn.vkAllocateMemory(device, &allocation, backend_.allocator, &readbackMemory_),
+                     "vkAllocateMemory (autofocus readback)");
+    FFX_DOF_VK_CHECK(fn.vkBindBufferMemory(device, readback_, readbackMemory_, 0), "vkBindBufferMemory");
+    void* mapped = nullptr;
+    FFX_DOF_VK_CHECK(fn.vkMapMemory(device, readbackMemory_, 0, VK_WHOLE_SIZE, 0, &mapped),
+                     "vkMapMemory (autofocus readback)");
+    readbackValues_ = static_cast<const float*>(mapped);
     return FFX_DOF_OK;
 }
 

@@ -19,6 +19,7 @@ public:
     FfxDofErrorCode create();
     FfxDofErrorCode dispatch(const DispatchPlan& dispatch) override;
     FfxDofMemoryUsage memoryUsage() const override { return memoryUsage_; }
+    FfxDofErrorCode autofocusDistance(uint32_t dispatchesAgo, float* distance) const override;
 
     void setTimestampQueries(VkQueryPool pool, uint32_t firstQuery) {
         queryPool_ = pool;
@@ -43,6 +44,7 @@ private:
     // Creation (ffx_dof_vk_context.cpp).
     FfxDofErrorCode createImages();
     FfxDofErrorCode createGlobals();
+    FfxDofErrorCode createReadback();
     FfxDofErrorCode createPipelines();
     FfxDofErrorCode createDescriptors();
     void writeInternalDescriptors();
@@ -54,6 +56,7 @@ private:
     void recordInternalBarrier(VkCommandBuffer commandBuffer) const;
     void recordEngineBarriers(VkCommandBuffer commandBuffer, const EngineImages& images, bool toEffect,
                               bool outputIsColor) const;
+    void recordFocusReadback(VkCommandBuffer commandBuffer);
 
     BackendVK& backend_;
     const ContextPlan& plan_;
@@ -62,6 +65,12 @@ private:
     VkBuffer globals_ = VK_NULL_HANDLE;
     VkDeviceMemory globalsMemory_ = VK_NULL_HANDLE;
     FfxDofMemoryUsage memoryUsage_{};
+    // The focus distance of the last maxFramesInFlight + 1 dispatches, copied from GLOBALS for
+    // ffxDofContextGetAutofocusDistance: host-visible, mapped; slot = dispatch index % slots.
+    VkBuffer readback_ = VK_NULL_HANDLE;
+    VkDeviceMemory readbackMemory_ = VK_NULL_HANDLE;
+    const float* readbackValues_ = nullptr;
+    std::vector<uint64_t> readbackDispatch_;  // per slot: 1 + the dispatch index that wrote it, 0: none
 
     std::array<VkDescriptorSetLayout, kPassCount> setLayouts_{};
     std::array<VkPipelineLayout, kPassCount> pipelineLayouts_{};

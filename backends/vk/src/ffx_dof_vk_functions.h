@@ -57,6 +57,8 @@ namespace ffxdof::vk {
     X(vkCmdDispatch)                   \
     X(vkCmdPipelineBarrier)            \
     X(vkCmdFillBuffer)                 \
+    X(vkCmdCopyBuffer)                 \
+    X(vkMapMemory)                     \
     X(vkCmdResetQueryPool)             \
     X(vkCmdWriteTimestamp)
 

@@ -3,6 +3,7 @@
 #include "ffx_dof_vk_context.h"
 
 #include <algorithm>
+#include <cmath>
 
 namespace ffxdof::vk {
 namespace {
@@ -110,11 +111,12 @@ void ContextVK::recordInternalBarrier(VkCommandBuffer commandBuffer) const {
         fn.vkCmdPipelineBarrier(commandBuffer, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, 0,
                                 0, nullptr, 1, &zeroed, 0, nullptr);
     } else if (plan_.written & plan_.touched) {
-        // The previous dispatch's writes of the internal resources before this one's accesses.
+        // The previous dispatch's writes of the internal resources (and its autofocus readback's read
+        // of GLOBALS) before this one's accesses.
         auto previous = makeInfo<VkMemoryBarrier>(VK_STRUCTURE_TYPE_MEMORY_BARRIER);
         previous.srcAccessMask = VK_ACCESS_SHADER_WRITE_BIT;
         previous.dstAccessMask = kShaderAccess;
-        fn.vkCmdPipelineBarrier(commandBuffer, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
+        fn.vkCmdPipelineBarrier(commandBuffer, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_TRANSFER_BIT,
                                 VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, 0, 1, &previous, 0, nullptr, 0, nullptr);
     }
 }
@@ -172,6 +174,14 @@ FfxDofErrorCode ContextVK::dispatch(const DispatchPlan& dispatch) {
     ResourceSet writtenSinceBarrier = 0;
     ResourceSet readSinceBarrier = 0;
     for (uint32_t pass = 0; pass < kPassCount; ++pass) {
+        if (!dispatch.runs[pass]) {
+            // Not asked for (autofocus without pAutofocus): its timestamp still comes, so indices stay.
+            if (timed) {
+                fn.vkCmdWriteTimestamp(commandBuffer, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, queryPool_,
+                                       firstQuery_ + 1 + pass);
+            }
+            continue;
+        }
         const PlannedPass& planned = plan_.passes[pass];
         const ResourceSet touched = planned.reads | planned.writes;
         if ((touched & writtenSinceBarrier) || (planned.writes & readSinceBarrier)) {
@@ -198,7 +208,51 @@ FfxDofErrorCode ContextVK::dispatch(const DispatchPlan& dispatch) {
         }
     }
     recordEngineBarriers(commandBuffer, images, false, dispatch.outputIsColor);
+    const uint32_t readbackSlot = uint32_t(dispatchCount_ % readbackDispatch_.size());
+    readbackDispatch_[readbackSlot] = 0;
+    if (dispatch.runs[uint32_t(Pass::Autofocus)]) {
+        recordFocusReadback(commandBuffer);
+        readbackDispatch_[readbackSlot] = dispatchCount_ + 1;
+    }
     ++dispatchCount_;
+    return FFX_DOF_OK;
+}
+
+void ContextVK::recordFocusReadback(VkCommandBuffer commandBuffer) {
+    // After every pass: the focus word is final once the autofocus pass ran, and the copy then
+    // needs no barrier against the later passes' GLOBALS atomics.
+    const Functions& fn = backend_.fn;
+    auto written = makeInfo<VkMemoryBarrier>(VK_STRUCTURE_TYPE_MEMORY_BARRIER);
+    written.srcAccessMask = VK_ACCESS_SHADER_WRITE_BIT;
+    written.dstAccessMask = VK_ACCESS_TRANSFER_READ_BIT;
+    fn.vkCmdPipelineBarrier(commandBuffer, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT, 0, 1,
+                            &written, 0, nullptr, 0, nullptr);
+    const uint32_t slot = uint32_t(dispatchCount_ % readbackDispatch_.size());
+    const VkBufferCopy region{FFX_DOF_GLOBALS_FOCUS_DISTANCE * sizeof(uint32_t), slot * sizeof(float), sizeof(float)};
+    fn.vkCmdCopyBuffer(commandBuffer, globals_, readback_, 1, &region);
+    auto toHost = makeInfo<VkMemoryBarrier>(VK_STRUCTURE_TYPE_MEMORY_BARRIER);
+    toHost.srcAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT;
+    toHost.dstAccessMask = VK_ACCESS_HOST_READ_BIT;
+    fn.vkCmdPipelineBarrier(commandBuffer, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_HOST_BIT, 0, 1, &toHost, 0,
+                            nullptr, 0, nullptr);
+}
+
+FfxDofErrorCode ContextVK::autofocusDistance(uint32_t dispatchesAgo, float* distance) const {
+    if (dispatchesAgo > backend_.framesInFlight) {
+        return fail(FFX_DOF_ERROR_INVALID_ARGUMENT, "dispatchesAgo %u: only the last maxFramesInFlight (%u) are kept",
+                    dispatchesAgo, backend_.framesInFlight);
+    }
+    if (dispatchesAgo >= dispatchCount_) {
+        return fail(FFX_DOF_ERROR_INVALID_ARGUMENT, "dispatchesAgo %u: the context has recorded %llu dispatches",
+                    dispatchesAgo, static_cast<unsigned long long>(dispatchCount_));
+    }
+    const uint64_t index = dispatchCount_ - 1 - dispatchesAgo;
+    const size_t slot = size_t(index % readbackDispatch_.size());
+    if (readbackDispatch_[slot] != index + 1) {
+        return fail(FFX_DOF_ERROR_INVALID_ARGUMENT, "the dispatch %u before the latest did not run autofocus",
+                    dispatchesAgo);
+    }
+    *distance = std::fabs(readbackValues_[slot]);
     return FFX_DOF_OK;
 }
 

@@ -143,6 +143,10 @@ struct RunSettings {
     // FfxDofDispatchDescription fields: radius (half-res px) = depth * cocScale + cocBias.
     float cocScale = 0.0f;
     float cocBias = 0.0f;
+    // Autofocus instead of cocScale / cocBias (FfxDofDispatchDescription::pAutofocus); the distance
+    // it chose comes back in RunResult::autofocusDistance.
+    bool useAutofocus = false;
+    FfxDofAutofocus autofocus{};
 
     // The output is the color image itself (needs FFX_DOF_OUTPUT_PRE_INIT, added automatically).
     bool inPlace = false;
@@ -172,6 +176,7 @@ struct RunResult {
     uint64_t internalMemoryBytes = 0;                   // ffxDofContextGetGpuMemoryUsage total
     uint64_t aliasableMemoryBytes = 0;
     double hostRecordMicroseconds = -1.0;  // median over hostRecordCalls; -1 without them
+    float autofocusDistance = 0.0f;        // the last dispatch's, with useAutofocus; else 0
 };
 
 // Runs the effect once per repeat on color (RGBA) and depth (1 channel) of the same size and
@@ -192,8 +197,10 @@ public:
     EffectSession(const EffectSession&) = delete;
     EffectSession& operator=(const EffectSession&) = delete;
 
-    // Throws Error as runEffect does.
-    HostImage run(const HostImage& color, const HostImage& depth, const RunSettings& settings);
+    // Throws Error as runEffect does. With settings.useAutofocus, *autofocusDistance (when not null)
+    // receives the distance autofocus chose.
+    HostImage run(const HostImage& color, const HostImage& depth, const RunSettings& settings,
+                  float* autofocusDistance = nullptr);
 
 private:
     struct Impl;

@@ -310,6 +310,7 @@ RunResult runEffect(Device& device, const HostImage& color, const HostImage& dep
                                           settings.inPlace ? colorLayout : outputLayout, outputFlags);
     dispatch.cocScale = settings.cocScale;
     dispatch.cocBias = settings.cocBias;
+    dispatch.pAutofocus = settings.useAutofocus ? &settings.autofocus : nullptr;
 
     for (uint32_t run = 0; run < settings.repeat; ++run) {
         const uint32_t first = run * (kEffectQueries + kCopyQueries);
@@ -346,6 +347,11 @@ RunResult runEffect(Device& device, const HostImage& color, const HostImage& dep
     for (uint32_t pass = 0; pass < kPassCount; ++pass) out.passMilliseconds[pass] = median(passTimes[pass]);
     out.totalMilliseconds = median(totals);
     if (copyPass) out.copyPassMilliseconds = median(copies);
+    if (settings.useAutofocus) {
+        // Every run was waited for: the latest dispatch is finished.
+        checkDof(ffxDofContextGetAutofocusDistance(&effect.context, 0, &out.autofocusDistance),
+                 "ffxDofContextGetAutofocusDistance");
+    }
     if (settings.hostRecordCalls > 0) {
         out.hostRecordMicroseconds = measureHostRecording(device, effect.context, dispatch, settings.hostRecordCalls);
     }

@@ -30,7 +30,8 @@ struct EffectSession::Impl {
 EffectSession::EffectSession(Device& device) : impl_(std::make_unique<Impl>(device)) {}
 EffectSession::~EffectSession() = default;
 
-HostImage EffectSession::run(const HostImage& color, const HostImage& depth, const RunSettings& settings) {
+HostImage EffectSession::run(const HostImage& color, const HostImage& depth, const RunSettings& settings,
+                             float* autofocusDistance) {
     if (color.channels != 4 || color.pixels.size() != size_t(color.width) * color.height * 4) {
         throw Error("the color image must be RGBA with width * height * 4 floats");
     }
@@ -108,11 +109,16 @@ HostImage EffectSession::run(const HostImage& color, const HostImage& depth, con
     dispatch.output = ffxDofGetResourceVK(s.output->image(), settings.outputFormat, width, height, outputLayout, 0);
     dispatch.cocScale = settings.cocScale;
     dispatch.cocBias = settings.cocBias;
+    dispatch.pAutofocus = settings.useAutofocus ? &settings.autofocus : nullptr;
     VkCommandBuffer commandBuffer = s.device.beginCommands();
     dispatch.commandList = ffxDofGetCommandListVK(commandBuffer);
     const FfxDofErrorCode dispatched = ffxDofContextDispatch(&context.handle, &dispatch);
     s.device.endSubmitAndWait(commandBuffer);  // also after a failed dispatch, to free the command buffer
     checkDof(dispatched, "ffxDofContextDispatch");
+    if (settings.useAutofocus && autofocusDistance != nullptr) {
+        checkDof(ffxDofContextGetAutofocusDistance(&context.handle, 0, autofocusDistance),
+                 "ffxDofContextGetAutofocusDistance");
+    }
     return s.output->download(outputLayout);
 }
 
