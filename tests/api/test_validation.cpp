@@ -255,3 +255,95 @@ TEST_CASE("every error code has its own description") {
 TEST_CASE("the version is 1.0.0 packed as FidelityFX packs it") {
     CHECK(ffxDofGetEffectVersion() == ((1u << 22) | (0u << 12) | 0u));
 }
+
+namespace {
+
+FfxDofAutofocus validAutofocus() {
+    FfxDofAutofocus a{};
+    a.regionCenter[0] = a.regionCenter[1] = 0.5f;
+    a.regionSize[0] = a.regionSize[1] = 0.1f;
+    a.aperture = 0.0125f;
+    a.focalLength = 0.05f;
+    a.conversion = 900.0f;
+    a.proj33 = -1.001f;
+    a.proj34 = -0.1001f;
+    a.proj43 = -1.0f;
+    a.minFocusDistance = 0.2f;
+    a.maxFocusDistance = 100.0f;
+    a.timeConstant = 0.5f;
+    a.deltaTime = 1.0f / 60.0f;
+    return a;
+}
+
+}  // namespace
+
+TEST_CASE_METHOD(Fixture, "an autofocus dispatch plans the autofocus pass and its constants") {
+    REQUIRE(create() == FFX_DOF_OK);
+    REQUIRE(ffxDofContextDispatch(&context, &dispatch) == FFX_DOF_OK);  // manual: no autofocus pass
+    const FfxDofAutofocus autofocus = validAutofocus();
+    dispatch.pAutofocus = &autofocus;
+    dispatch.cocScale = std::numeric_limits<float>::quiet_NaN();  // ignored with autofocus
+    REQUIRE(ffxDofContextDispatch(&context, &dispatch) == FFX_DOF_OK);
+    REQUIRE(ffxDofContextResetAutofocus(&context) == FFX_DOF_OK);
+    REQUIRE(ffxDofContextDispatch(&context, &dispatch) == FFX_DOF_OK);
+    REQUIRE(ffxDofContextDispatch(&context, &dispatch) == FFX_DOF_OK);
+    REQUIRE(backend->dispatches.size() == 4);
+
+    const uint32_t autofocusPass = uint32_t(ffxdof::Pass::Autofocus);
+    CHECK_FALSE(backend->dispatches[0].runs[autofocusPass]);
+    CHECK(backend->dispatches[0].constants.focusFlags == 0);
+    for (uint32_t p = 0; p < ffxdof::kPassCount; ++p) CHECK(backend->dispatches[1].runs[p]);
+    const FfxDofConstants& c = backend->dispatches[1].constants;
+    CHECK(c.focusFlags == FFX_DOF_FOCUS_FLAG_AUTO);
+    CHECK(c.focusInvZScale == Approx(-1.0f / -0.1001f));
+    CHECK(c.focusInvZBias == Approx(-1.001f / -0.1001f));
+    CHECK(c.focusMinDistance == Approx(-0.2f));  // signed like view z: this camera looks down -Z
+    CHECK(c.focusMaxDistance == Approx(-100.0f));
+    CHECK(c.focusBlend == Approx(1.0 - std::exp(-(1.0 / 60.0) / 0.5)));
+    CHECK(c.focusLensFactor == Approx(0.0125f * 0.05f * 900.0f));
+    // The reset applies to the next autofocus dispatch only.
+    CHECK(backend->dispatches[2].constants.focusFlags == (FFX_DOF_FOCUS_FLAG_AUTO | FFX_DOF_FOCUS_FLAG_RESET));
+    CHECK(backend->dispatches[3].constants.focusFlags == FFX_DOF_FOCUS_FLAG_AUTO);
+    // No smoothing with a zero time constant.
+    FfxDofAutofocus immediate = autofocus;
+    immediate.timeConstant = 0.0f;
+    dispatch.pAutofocus = &immediate;
+    REQUIRE(ffxDofContextDispatch(&context, &dispatch) == FFX_DOF_OK);
+    CHECK(backend->dispatches.back().constants.focusBlend == 1.0f);
+}
+
+TEST_CASE_METHOD(Fixture, "each invalid autofocus field is refused by name") {
+    REQUIRE(create() == FFX_DOF_OK);
+    const float nan = std::numeric_limits<float>::quiet_NaN();
+    const struct {
+        const char* field;
+        void (*spoil)(FfxDofAutofocus&, float);
+    } cases[] = {
+        {"regionCenter[0]", [](FfxDofAutofocus& a, float) { a.regionCenter[0] = 1.5f; }},
+        {"regionCenter[1]", [](FfxDofAutofocus& a, float n) { a.regionCenter[1] = n; }},
+        {"regionSize[0]", [](FfxDofAutofocus& a, float) { a.regionSize[0] = 0.0f; }},
+        {"regionSize[1]", [](FfxDofAutofocus& a, float) { a.regionSize[1] = 2.0f; }},
+        {"aperture", [](FfxDofAutofocus& a, float) { a.aperture = -1.0f; }},
+        {"focalLength", [](FfxDofAutofocus& a, float) { a.focalLength = 0.0f; }},
+        {"conversion", [](FfxDofAutofocus& a, float n) { a.conversion = n; }},
+        {"proj34", [](FfxDofAutofocus& a, float) { a.proj34 = 0.0f; }},
+        {"minFocusDistance", [](FfxDofAutofocus& a, float) { a.minFocusDistance = 0.01f; }},
+        {"maxFocusDistance", [](FfxDofAutofocus& a, float) { a.maxFocusDistance = 0.1f; }},
+        {"maxFocusDistance", [](FfxDofAutofocus& a, float) { a.maxFocusDistance = INFINITY; }},
+        {"timeConstant", [](FfxDofAutofocus& a, float) { a.timeConstant = -1.0f; }},
+        {"deltaTime", [](FfxDofAutofocus& a, float n) { a.deltaTime = n; }},
+    };
+    for (const auto& c : cases) {
+        FfxDofAutofocus autofocus = validAutofocus();
+        c.spoil(autofocus, nan);
+        dispatch.pAutofocus = &autofocus;
+        INFO(c.field);
+        CHECK(ffxDofContextDispatch(&context, &dispatch) == FFX_DOF_ERROR_INVALID_ARGUMENT);
+        CHECK(lastError().find(c.field) != std::string::npos);
+    }
+    CHECK(backend->dispatches.empty());
+    CHECK(ffxDofContextResetAutofocus(nullptr) == FFX_DOF_ERROR_INVALID_POINTER);
+    float distance = 0.0f;
+    CHECK(ffxDofContextGetAutofocusDistance(&context, 0, nullptr) == FFX_DOF_ERROR_INVALID_POINTER);
+    CHECK(ffxDofContextGetAutofocusDistance(&context, 0, &distance) == FFX_DOF_ERROR_INVALID_ARGUMENT);
+}
