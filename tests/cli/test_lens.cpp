@@ -246,3 +246,132 @@ TEST_CASE("EXR output type: auto keeps values beyond half's range, half refuses 
     image.at(0, 0)[0] = NAN;
     requireCliError([&] { chooseExrPixelType("auto", image, "o.exr"); }, ExitCode::Device, "non-finite");
 }
+
+TEST_CASE("autofocus: the point's syntax and the ranges of the point and the region", "[lens][autofocus]") {
+    for (const char* good : {"0.5,0.5", "0,1", "1e-1,.5", "nan,0", "+0.25,1.0"}) {
+        INFO(good);
+        CHECK(autofocusPointSyntaxError(good).empty());
+    }
+    for (const char* bad : {"0.5", "a,b", "", ",", "0.5,0.5,1", "0.5,", ",0.5", "0.5 0.5", " 0.5,0.5", "0.5, 0.5",
+                            "0.5,0.5 ", "0.5;0.5"}) {
+        INFO("'" << bad << "'");
+        CHECK_THAT(autofocusPointSyntaxError(bad), Catch::Contains("expected X,Y"));
+        requireCliError([&] { parseAutofocusPoint(bad); }, ExitCode::Usage, "--autofocus");
+    }
+    const AutofocusRegion region = parseAutofocusPoint("0.25,0.75", 0.2);
+    CHECK(region.x == 0.25);
+    CHECK(region.y == 0.75);
+    CHECK(region.size == 0.2);
+    CHECK(parseAutofocusPoint("0.5,0.5").size == kDefaultFocusRegion);
+
+    CHECK_NOTHROW(checkAutofocusRegion({0.0, 1.0, 1.0}));
+    CHECK_NOTHROW(checkAutofocusRegion({1.0, 0.0, 1e-6}));
+    for (const AutofocusRegion& bad : {AutofocusRegion{1.01, 0.5, 0.1}, AutofocusRegion{0.5, -0.01, 0.1},
+                                       AutofocusRegion{NAN, 0.5, 0.1}, AutofocusRegion{0.5, INFINITY, 0.1}}) {
+        requireCliError([&] { checkAutofocusRegion(bad); }, ExitCode::InvalidValue,
+                        "--autofocus X,Y must lie in 0 to 1");
+    }
+    for (const double size : {0.0, -0.1, 1.01, double(NAN), double(INFINITY)}) {
+        INFO(size);
+        requireCliError([&] { checkAutofocusRegion({0.5, 0.5, size}); }, ExitCode::InvalidValue, "--focus-region");
+    }
+}
+
+TEST_CASE("autofocus: a lens without focus and the range of distances", "[lens][autofocus]") {
+    LensSettings settings;
+    settings.focalLengthMm = 50.0;
+    settings.fNumber = 2.0;
+    const ThinLens lens = makeThinLens(settings, /*autofocus=*/true);  // no --focus needed
+    CHECK(lens.focusDistance == 0.0);
+    CHECK(lens.apertureRadius == Approx(0.0125));
+    requireCliError([&] { makeThinLens(settings); }, ExitCode::InvalidValue, "--focus");
+
+    // From twice the focal length to the far plane, or 10 km where there is none (or it is farther).
+    const FocusRange linear = autofocusRange(lens, projectionForLinearDepth(0.5));
+    CHECK(linear.nearest == Approx(0.1));
+    CHECK(linear.farthest == kAutofocusFarthest);
+    for (const bool reversed : {false, true}) {
+        INFO("reversed = " << reversed);
+        CHECK(autofocusRange(lens, projectionFromNearFar(0.1, 500.0, reversed)).farthest == Approx(500.0));
+        CHECK(autofocusRange(lens, projectionFromNearFar(0.1, INFINITY, reversed)).farthest == kAutofocusFarthest);
+        CHECK(autofocusRange(lens, projectionFromNearFar(0.1, 2e4, reversed)).farthest == kAutofocusFarthest);
+    }
+    const double n = 0.2, f = 200.0;
+    const std::array<double, 16> rightHanded = {1.5, 0, 0,  0, 0, 2.0, 0, 0, 0, 0, n / (f - n), n * f / (f - n),
+                                                0,   0, -1, 0};
+    CHECK(autofocusRange(lens, projectionFromMatrix(rightHanded, true)).farthest == Approx(f));
+    requireCliError([&] { autofocusRange(lens, projectionFromNearFar(0.01, 0.08, false)); }, ExitCode::InvalidValue,
+                    "twice --focal-length");
+}
+
+TEST_CASE("autofocus: the dispatch's lens and projection terms are those of manual focus", "[lens][autofocus]") {
+    LensSettings settings;
+    settings.focalLengthMm = 35.0;
+    settings.sensorWidthMm = 24.0;
+    settings.fNumber = 1.8;
+    const ThinLens lens = makeThinLens(settings, true);
+    const double n = 0.2, f = 200.0;
+    const std::array<double, 16> rightHanded = {1.5, 0, 0,  0, 0, 2.0, 0, 0, 0, 0, n / (f - n), n * f / (f - n),
+                                                0,   0, -1, 0};
+    for (const DepthProjection& projection : {projectionForLinearDepth(0.7), projectionFromNearFar(0.1, 500.0, false),
+                                              projectionFromMatrix(rightHanded, true)}) {
+        const FocusRange range = autofocusRange(lens, projection);
+        const FfxDofAutofocus a = makeAutofocus(lens, projection, 1920, {0.25, 0.75, 0.2}, range);
+        CHECK(a.regionCenter[0] == 0.25f);
+        CHECK(a.regionCenter[1] == 0.75f);
+        CHECK(a.regionSize[0] == 0.2f);
+        CHECK(a.regionSize[1] == 0.2f);
+        CHECK(a.minFocusDistance == float(range.nearest));
+        CHECK(a.maxFocusDistance == float(range.farthest));
+        CHECK(a.timeConstant == 0.0f);
+        // The SDK's CoC line from these terms at a focus F is the one --focus F gives, bit for bit.
+        for (const double focus : {0.5, 3.0, 40.0}) {
+            ThinLens focused = lens;
+            focused.focusDistance = focus;
+            const CocParameters manual = computeCocParameters(focused, projection, 1920);
+            const float signedFocus = float(a.proj43 < 0.0f ? -focus : focus);
+            CHECK(ffxDofCalculateCocScale(a.aperture, signedFocus, a.focalLength, a.conversion, a.proj33, a.proj34,
+                                          a.proj43) == manual.cocScale);
+            CHECK(ffxDofCalculateCocBias(a.aperture, signedFocus, a.focalLength, a.conversion, a.proj33, a.proj34,
+                                         a.proj43) == manual.cocBias);
+        }
+    }
+}
+
+TEST_CASE("autofocus: the distances it can reach are those of the pixels it reads", "[lens][autofocus]") {
+    // 40x20 linear depth: a target of 2 m at x 10..19, y 5..14, a wall at 30 m elsewhere.
+    const uint32_t width = 40, height = 20;
+    ffxdof::io::ImageR depth(width, height);
+    for (uint32_t y = 0; y < height; ++y) {
+        for (uint32_t x = 0; x < width; ++x) depth.at(x, y) = (x >= 10 && x < 20 && y >= 5 && y < 15) ? 2.0f : 30.0f;
+    }
+    const EffectDepth effect = linearToEffectDepth(depth, "d.exr");
+    const FocusRange range{0.1, kAutofocusFarthest};
+    const auto reach = [&](double x, double y, double size, const FocusRange& clamp) {
+        return reachableAutofocus(effect.deviceDepth, width, height, effect.projection, {x, y, size}, clamp);
+    };
+    const FocusRange inside = reach(0.375, 0.5, 0.1, range);  // pixels 13..17 (and a spare one) of the target
+    CHECK(inside.nearest == Approx(2.0));
+    CHECK(inside.farthest == Approx(2.0));
+    const FocusRange straddling = reach(0.5, 0.5, 0.2, range);  // x 16..24: target and wall
+    CHECK(straddling.nearest == Approx(2.0));
+    CHECK(straddling.farthest == Approx(30.0));
+    const FocusRange wall = reach(0.9, 0.5, 0.1, range);
+    CHECK(wall.nearest == Approx(30.0));
+    CHECK(wall.farthest == Approx(30.0));
+    // Next to the target: the centre's 3x3 neighbours (and the spare pixel) reach it.
+    CHECK(reach(21.5 / 40.0, 0.5, 0.01, range).nearest == Approx(2.0));
+    // Clamped to the range.
+    const FocusRange clamped = reach(0.5, 0.5, 1.0, {3.0, 10.0});
+    CHECK(clamped.nearest == 3.0);
+    CHECK(clamped.farthest == 10.0);
+}
+
+TEST_CASE("autofocus: the printed focus has three significant digits", "[lens][autofocus]") {
+    CHECK(focusText(2.4801) == "focus: 2.48 m");
+    CHECK(focusText(0.8) == "focus: 0.800 m");
+    CHECK(focusText(0.01234) == "focus: 0.0123 m");
+    CHECK(focusText(12.34) == "focus: 12.3 m");
+    CHECK(focusText(250.0) == "focus: 250 m");
+    CHECK(focusText(10000.0) == "focus: 10000 m");
+}

@@ -40,9 +40,10 @@ void checkArguments(const ApplyOptions& options, bool sequence) {
     if (options.keepLayers && !io::hasExtension(options.outputPath, ".exr")) {
         throw CliError(ExitCode::Usage, "--keep-layers needs an .exr output: " + options.outputPath);
     }
-    if (!options.focusGiven && options.cameraTrack.empty()) {
-        throw CliError(ExitCode::Usage, "--focus is required (or a --camera-track that gives it)");
+    if (!options.focusGiven && !options.autofocus && options.cameraTrack.empty()) {
+        throw CliError(ExitCode::Usage, "--focus is required (or --autofocus X,Y, or a --camera-track that gives it)");
     }
+    if (options.autofocus) checkAutofocusRegion(*options.autofocus);
     if (!sequence) {
         for (const auto& [option, given] :
              {std::pair{"--chunk", !options.chunk.empty()}, std::pair{"--camera-track", !options.cameraTrack.empty()},
@@ -89,9 +90,12 @@ struct PreparedFrame {
     uint32_t width = 0, height = 0;
     io::ImageRGBA color;
     vkrun::HostImage depth;  // device depth for the effect
-    CocParameters coc;
+    CocParameters coc;       // with autofocus: the chosen focus's, once the effect ran
     bool reversed = false;
-    ThinLens lens;
+    ThinLens lens;  // with autofocus: focusDistance is the chosen one once the effect ran
+    DepthProjection projection;
+    std::string projectionOrigin;
+    std::optional<FfxDofAutofocus> autofocus;
     float largestRadius = 0.0f;  // half-res px
     double cocLimit = 0.0;       // the cocLimitFactor used
     size_t clampedPixels = 0;    // full-res pixels whose radius exceeds the limit (0 when it follows the image)
@@ -99,15 +103,25 @@ struct PreparedFrame {
     io::IfExists ifExists = io::IfExists::Replace;
 };
 
+// Full-resolution pixels whose radius exceeds a --coc-limit (none when the limit follows the image).
+void countClampedPixels(const ApplyOptions& options, const std::vector<float>& deviceDepth, PreparedFrame& frame) {
+    frame.clampedPixels = 0;
+    if (options.effect.cocLimitFollowsImage) return;
+    const float radiusLimit = float(frame.cocLimit * frame.height * 0.5);
+    for (float d : deviceDepth)
+        frame.clampedPixels += std::fabs(d * frame.coc.cocScale + frame.coc.cocBias) > radiusLimit;
+}
+
 PreparedFrame prepareFrame(const ApplyOptions& options, const FrameFiles& files, const LensSettings& lensSettings) {
     PreparedFrame frame;
     frame.files = files;
     checkOutputIsNoInput(files.output, files.color, files.depth);
-    frame.lens = makeThinLens(lensSettings);
+    frame.lens = makeThinLens(lensSettings, options.autofocus.has_value());
     // Validates the projection before the (possibly large) files are read.
     std::optional<DepthProjection> projection;
     if (options.depthKind == DepthKind::Device) {
         projection = deviceProjection(options);
+        if (options.autofocus) (void)autofocusRange(frame.lens, *projection);
     }
     frame.color = readInput([&] { return io::readExrColor(files.color, options.colorLayer); });
     const io::ImageR depth = readInput([&] { return io::readExrChannel(files.depth, options.depthChannel); });
@@ -128,19 +142,27 @@ PreparedFrame prepareFrame(const ApplyOptions& options, const FrameFiles& files,
         effectDepth.projection = *projection;
         effectDepth.projectionOrigin = options.projection ? "--proj" : "--near/--far";
     }
-    frame.coc =
-        computeCocParameters(frame.lens, effectDepth.projection, frame.color.width, effectDepth.projectionOrigin);
+    frame.projection = effectDepth.projection;
+    frame.projectionOrigin = effectDepth.projectionOrigin;
     frame.reversed = effectDepth.projection.reversed;
-    for (float d : effectDepth.deviceDepth) {
-        frame.largestRadius = std::fmax(frame.largestRadius, std::fabs(d * frame.coc.cocScale + frame.coc.cocBias));
+    if (options.autofocus) {
+        // The focus is chosen on the device; the CoC limit must hold the radii of every focus it can choose.
+        const FocusRange range = autofocusRange(frame.lens, frame.projection);
+        frame.autofocus = makeAutofocus(frame.lens, frame.projection, frame.width, *options.autofocus, range);
+        const FocusRange reachable = reachableAutofocus(effectDepth.deviceDepth, frame.width, frame.height,
+                                                        frame.projection, *options.autofocus, range);
+        for (const double focus : {reachable.nearest, reachable.farthest}) {
+            ThinLens at = frame.lens;
+            at.focusDistance = focus;
+            const CocParameters coc = computeCocParameters(at, frame.projection, frame.width, frame.projectionOrigin);
+            frame.largestRadius = std::fmax(frame.largestRadius, largestCocRadius(effectDepth.deviceDepth, coc));
+        }
+    } else {
+        frame.coc = computeCocParameters(frame.lens, frame.projection, frame.width, frame.projectionOrigin);
+        frame.largestRadius = largestCocRadius(effectDepth.deviceDepth, frame.coc);
     }
     frame.cocLimit = effectiveCocLimit(options.effect, frame.largestRadius, frame.color.height);
-    const float radiusLimit = float(frame.cocLimit * frame.color.height * 0.5);
-    if (!options.effect.cocLimitFollowsImage) {
-        for (float d : effectDepth.deviceDepth) {
-            frame.clampedPixels += std::fabs(d * frame.coc.cocScale + frame.coc.cocBias) > radiusLimit;
-        }
-    }
+    if (!options.autofocus) countClampedPixels(options, effectDepth.deviceDepth, frame);
     frame.depth = toHostImage(depth.width, depth.height, effectDepth.deviceDepth);
     return frame;
 }
@@ -154,8 +176,19 @@ ComputedFrame computeFrame(const ApplyOptions& options, vkrun::Device& device, v
                            PreparedFrame prepared) {
     EffectOptions effect = options.effect;
     effect.cocLimit = prepared.cocLimit;
-    const vkrun::HostImage output = runEffectOrThrow(device, session, toHostImage(prepared.color), prepared.depth,
-                                                     makeRunSettings(effect, prepared.coc, prepared.reversed));
+    float focus = 0.0f;
+    const vkrun::HostImage output = runEffectOrThrow(
+        device, session, toHostImage(prepared.color), prepared.depth,
+        makeRunSettings(effect, prepared.coc, prepared.reversed, prepared.autofocus ? &*prepared.autofocus : nullptr),
+        &focus);
+    if (prepared.autofocus) {
+        // What the chosen focus did: the image's radii and clamp, as for a --focus of that distance.
+        prepared.lens.focusDistance = focus;
+        prepared.coc =
+            computeCocParameters(prepared.lens, prepared.projection, prepared.width, prepared.projectionOrigin);
+        prepared.largestRadius = largestCocRadius(prepared.depth.pixels, prepared.coc);
+        countClampedPixels(options, prepared.depth.pixels, prepared);
+    }
     ComputedFrame computed;
     computed.output = toImageRGBA(output);
     prepared.color = {};  // the input's memory is not needed any more
@@ -192,6 +225,13 @@ WrittenFrame writeFrame(const ApplyOptions& options, const ComputedFrame& frame)
     return written;
 }
 
+// Without --coc-limit, whether the radii reached the largest automatic limit (the image height). With
+// autofocus the limit covers every focus it could choose: the chosen one may stay below it.
+bool clampsAtImageHeight(const ApplyOptions& options, const PreparedFrame& frame) {
+    return options.effect.cocLimitFollowsImage && frame.cocLimit >= kLargestAutoCocLimit &&
+           (!frame.autofocus || frame.largestRadius > frame.cocLimit * frame.height * 0.5);
+}
+
 std::string clampLine(const ApplyOptions& options, const PreparedFrame& frame) {
     char line[320];
     const size_t pixels = size_t(frame.width) * frame.height;
@@ -201,7 +241,7 @@ std::string clampLine(const ApplyOptions& options, const PreparedFrame& frame) {
                       "largest CoC radius %.2f half-res px; no clamp (the limit follows the image: "
                       "cocLimitFactor %.4g; --coc-limit L clamps at L x the image height)",
                       frame.largestRadius, frame.cocLimit);
-        if (frame.cocLimit >= kLargestAutoCocLimit) {
+        if (clampsAtImageHeight(options, frame)) {
             std::snprintf(line, sizeof(line),
                           "largest CoC radius %.2f half-res px, clamped at %.2f (the image height, the largest "
                           "limit without --coc-limit)",
@@ -234,6 +274,10 @@ void runSingle(const ApplyOptions& options) {
     const bool exr = io::hasExtension(options.outputPath, ".exr");
     std::printf("wrote %s (%ux%u%s) on %s\n", options.outputPath.c_str(), width, height,
                 exr ? (written.type == io::ExrPixelType::Half ? ", half" : ", float") : "", device->name().c_str());
+    if (options.autofocus) {
+        std::printf("%s (autofocus at %g,%g, region %g)\n", focusText(computed.prepared.lens.focusDistance).c_str(),
+                    options.autofocus->x, options.autofocus->y, options.autofocus->size);
+    }
     std::printf("%s; aperture radius %.4g m\n", clampLine(options, computed.prepared).c_str(),
                 computed.prepared.lens.apertureRadius);
 }
@@ -341,7 +385,8 @@ public:
         line("frame " + std::to_string(frame) + ": skipped, " + why);
     }
     void note(int64_t frame, const std::string& text) { line("frame " + std::to_string(frame) + ": " + text); }
-    void written(int64_t frame, const std::string& path, io::ExrPixelType type) {
+    // focus: "focus: 2.48 m" with autofocus, else empty.
+    void written(int64_t frame, const std::string& path, io::ExrPixelType type, const std::string& focus) {
         ++written_;
         ++done_;
         if (firstWritten_ == std::chrono::steady_clock::time_point{}) firstWritten_ = std::chrono::steady_clock::now();
@@ -350,11 +395,13 @@ public:
                       timeLeft().c_str());
         if (tty_) {
             status_ = status;
-            std::printf("\r\033[K%s (frame %lld)", status, static_cast<long long>(frame));
+            std::printf("\r\033[K%s (frame %lld%s%s)", status, static_cast<long long>(frame), focus.empty() ? "" : ", ",
+                        focus.c_str());
             std::fflush(stdout);
         } else {
-            std::printf("frame %lld: wrote %s (%s); %s\n", static_cast<long long>(frame), path.c_str(),
-                        type == io::ExrPixelType::Half ? "half" : "float", status);
+            std::printf("frame %lld: wrote %s (%s); %s%s%s\n", static_cast<long long>(frame), path.c_str(),
+                        type == io::ExrPixelType::Half ? "half" : "float", focus.c_str(), focus.empty() ? "" : "; ",
+                        status);
             std::fflush(stdout);
         }
     }
@@ -435,8 +482,16 @@ public:
         }
         if (!options.cameraTrack.empty()) track_ = readCameraTrack(options.cameraTrack);
         // Every frame's lens is checked before any work, so a bad track entry fails at once.
-        for (int64_t frame : frames_)
-            (void)makeThinLens(lensForFrame(options.lens, track_, frame, options.cameraTrack));
+        for (int64_t frame : frames_) {
+            const auto entry = track_.find(frame);
+            if (options.autofocus && entry != track_.end() && entry->second.focusMetres) {
+                throw CliError(ExitCode::Usage, "--autofocus chooses the focus, but " + options.cameraTrack +
+                                                    " gives one for frame " + std::to_string(frame) +
+                                                    "; drop its focus values or --autofocus");
+            }
+            (void)makeThinLens(lensForFrame(options.lens, track_, frame, options.cameraTrack),
+                               options.autofocus.has_value());
+        }
     }
 
     void run() {
@@ -520,13 +575,12 @@ private:
         if (item.error) return computed;
         computed.skipReason = item.skipReason;
         if (item.prepared) {
-            const PreparedFrame& prepared = *item.prepared;
+            computed.computed = computeFrame(options_, *device_, *session_, std::move(*item.prepared));
+            const PreparedFrame& prepared = computed.computed->prepared;
             largestRadius_ = std::max(largestRadius_, prepared.largestRadius);
-            if (prepared.clampedPixels > 0 ||
-                (options_.effect.cocLimitFollowsImage && prepared.cocLimit >= kLargestAutoCocLimit)) {
+            if (prepared.clampedPixels > 0 || clampsAtImageHeight(options_, prepared)) {
                 note(item.files.frame, clampLine(options_, prepared));
             }
-            computed.computed = computeFrame(options_, *device_, *session_, std::move(*item.prepared));
         }
         return computed;
     }
@@ -546,7 +600,9 @@ private:
         }
         std::lock_guard<std::mutex> lock(progressMutex_);
         if (written.landed) {
-            progress_->written(item.files.frame, item.files.output, written.type);
+            const PreparedFrame& prepared = item.computed->prepared;
+            progress_->written(item.files.frame, item.files.output, written.type,
+                               prepared.autofocus ? focusText(prepared.lens.focusDistance) : std::string());
         } else {
             progress_->skipped(item.files.frame, item.files.output + " was written by another process meanwhile");
         }

@@ -11,6 +11,8 @@
 #include <chrono>
 #include <cstdio>
 #include <ctime>
+#include <optional>
+#include <string>
 
 namespace ffxdof::cli {
 namespace {
@@ -42,6 +44,7 @@ void runBench(const BenchOptions& options) {
     if (options.repeat < 1 || options.repeat > 10000) {
         throw CliError(ExitCode::InvalidValue, "--repeat must be 1 to 10000, got " + std::to_string(options.repeat));
     }
+    if (options.autofocus) checkAutofocusRegion(*options.autofocus);
 
     const ref::SceneSetup setup = ref::makeScene(kBenchScene, options.width, options.height);
     ref::RenderSettings renderSettings;
@@ -52,8 +55,15 @@ void runBench(const BenchOptions& options) {
     const EffectDepth depth = linearToEffectDepth(pinhole.depth, "bench scene depth");
     const CocParameters coc = computeCocParameters(lens, depth.projection, options.width);
 
+    std::optional<FfxDofAutofocus> autofocus;
+    if (options.autofocus) {
+        autofocus = makeAutofocus(lens, depth.projection, options.width, *options.autofocus,
+                                  autofocusRange(lens, depth.projection));
+    }
+
     std::unique_ptr<vkrun::Device> device = openDevice(options.effect);
-    vkrun::RunSettings settings = makeRunSettings(options.effect, coc, depth.projection.reversed);
+    vkrun::RunSettings settings =
+        makeRunSettings(options.effect, coc, depth.projection.reversed, autofocus ? &*autofocus : nullptr);
     // What an engine would typically bind: half-float color and output.
     settings.colorFormat = VK_FORMAT_R16G16B16A16_SFLOAT;
     settings.outputFormat = VK_FORMAT_R16G16B16A16_SFLOAT;
@@ -65,6 +75,12 @@ void runBench(const BenchOptions& options) {
         *device, toHostImage(pinhole.color), toHostImage(options.width, options.height, depth.deviceDepth), settings);
 
     const double ratio = result.totalMilliseconds / result.copyPassMilliseconds;
+    double autofocusMilliseconds = 0.0;
+    for (uint32_t pass = 0; pass < vkrun::kPassCount; ++pass) {
+        if (std::string(vkrun::passName(pass)) == "autofocus") autofocusMilliseconds = result.passMilliseconds[pass];
+    }
+    const double autofocusShare =
+        result.totalMilliseconds > 0.0 ? autofocusMilliseconds / result.totalMilliseconds : 0.0;
     const vkrun::DeviceFeatures& features = device->features();
     // The backend runs the 16-bit shaders wherever shaderFloat16 is enabled (ffx_dof_vk.h).
     const bool float16 = !options.float32 && features.shaderFloat16;
@@ -92,6 +108,12 @@ void runBench(const BenchOptions& options) {
         json["aliasableMemoryBytes"] = result.aliasableMemoryBytes;
         json["hostRecordUs"] = result.hostRecordMicroseconds;
         json["hostRecordCalls"] = kHostRecordCalls;
+        if (options.autofocus) {
+            json["autofocus"] = {
+                {"x", options.autofocus->x}, {"y", options.autofocus->y}, {"region", options.autofocus->size}};
+            json["autofocusDistance"] = result.autofocusDistance;
+            json["autofocusShare"] = autofocusShare;  // passMs.autofocus / totalMs
+        }
         std::printf("%s\n", json.dump(2).c_str());
         return;
     }
@@ -111,6 +133,12 @@ void runBench(const BenchOptions& options) {
                 static_cast<unsigned long long>(result.aliasableMemoryBytes));
     std::printf("  %-24s %10.1f us (median of %u ffxDofContextDispatch calls)\n", "host record",
                 result.hostRecordMicroseconds, kHostRecordCalls);
+    if (options.autofocus) {
+        std::printf("  %-24s %10.3g %% of the total (%.3f of %.3f ms); %s (autofocus at %g,%g, region %g)\n",
+                    "autofocus share", 100.0 * autofocusShare, autofocusMilliseconds, result.totalMilliseconds,
+                    focusText(result.autofocusDistance).c_str(), options.autofocus->x, options.autofocus->y,
+                    options.autofocus->size);
+    }
 }
 
 }  // namespace ffxdof::cli

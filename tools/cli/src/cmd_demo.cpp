@@ -9,6 +9,7 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <optional>
 #include <stdexcept>
 #include <vector>
 
@@ -45,6 +46,7 @@ void runDemo(const DemoOptions& options) {
     if (options.lensSamples < 1) {
         throw CliError(ExitCode::InvalidValue, "--lens-samples must be at least 1");
     }
+    if (options.autofocus) checkAutofocusRegion(*options.autofocus);
     ref::SceneSetup setup;
     try {
         setup = ref::makeScene(options.scene, options.width, options.height);
@@ -72,18 +74,42 @@ void runDemo(const DemoOptions& options) {
     const ref::ThinLensImage truth = ref::renderThinLens(setup.scene, setup.camera, renderSettings);
 
     const ref::Camera& camera = setup.camera;
-    const ThinLens lens{camera.apertureRadius, camera.focalLength, camera.focusDistance, camera.sensorWidth};
+    ThinLens lens{camera.apertureRadius, camera.focalLength, camera.focusDistance, camera.sensorWidth};
     const EffectDepth depth = linearToEffectDepth(pinhole.depth, "scene depth");
-    const CocParameters coc = computeCocParameters(lens, depth.projection, camera.width, depth.projectionOrigin);
+    CocParameters coc;
     float largestRadius = 0.0f;
-    for (float d : depth.deviceDepth)
-        largestRadius = std::fmax(largestRadius, std::fabs(d * coc.cocScale + coc.cocBias));
+    std::optional<FfxDofAutofocus> autofocus;
+    if (options.autofocus) {
+        // As apply does: the limit holds the radii of every focus autofocus can choose.
+        const FocusRange range = autofocusRange(lens, depth.projection);
+        autofocus = makeAutofocus(lens, depth.projection, camera.width, *options.autofocus, range);
+        const FocusRange reachable = reachableAutofocus(depth.deviceDepth, camera.width, camera.height,
+                                                        depth.projection, *options.autofocus, range);
+        for (const double focus : {reachable.nearest, reachable.farthest}) {
+            ThinLens at = lens;
+            at.focusDistance = focus;
+            largestRadius = std::fmax(
+                largestRadius,
+                largestCocRadius(depth.deviceDepth,
+                                 computeCocParameters(at, depth.projection, camera.width, depth.projectionOrigin)));
+        }
+    } else {
+        coc = computeCocParameters(lens, depth.projection, camera.width, depth.projectionOrigin);
+        largestRadius = largestCocRadius(depth.deviceDepth, coc);
+    }
     EffectOptions effect = options.effect;
     effect.cocLimit = effectiveCocLimit(options.effect, largestRadius, camera.height);
-    const vkrun::RunResult result = runEffectOrThrow(*device, toHostImage(pinhole.color),
-                                                     toHostImage(camera.width, camera.height, depth.deviceDepth),
-                                                     makeRunSettings(effect, coc, depth.projection.reversed));
+    const vkrun::RunResult result = runEffectOrThrow(
+        *device, toHostImage(pinhole.color), toHostImage(camera.width, camera.height, depth.deviceDepth),
+        makeRunSettings(effect, coc, depth.projection.reversed, autofocus ? &*autofocus : nullptr));
     const io::ImageRGBA output = toImageRGBA(result.output);
+    if (autofocus) {
+        // The radii and clamp of the chosen focus. The truth keeps the scene's focus (a focus of its own
+        // would change the framing: the image distance moves with the focus).
+        lens.focusDistance = result.autofocusDistance;
+        coc = computeCocParameters(lens, depth.projection, camera.width, depth.projectionOrigin);
+        largestRadius = largestCocRadius(depth.deviceDepth, coc);
+    }
 
     std::vector<std::string> written;
     const auto write = [&](const char* name, auto&& writeFile) {
@@ -112,7 +138,12 @@ void runDemo(const DemoOptions& options) {
     write("camera.json", [&](const std::string& path) { ref::writeCameraJson(path, camera); });
 
     std::printf("applied depth of field on %s: focus %.2f m, f/%.2f, %.0f mm\n", device->name().c_str(),
-                camera.focusDistance, camera.fstop(), camera.focalLength * 1000.0);
+                lens.focusDistance, camera.fstop(), camera.focalLength * 1000.0);
+    if (autofocus) {
+        std::printf("%s (autofocus at %g,%g, region %g; the scene's camera and the truth focus at %.2f m)\n",
+                    focusText(lens.focusDistance).c_str(), options.autofocus->x, options.autofocus->y,
+                    options.autofocus->size, camera.focusDistance);
+    }
     size_t clamped = 0;
     const float radiusLimit = float(effect.cocLimit * camera.height * 0.5);
     for (float d : depth.deviceDepth) clamped += std::fabs(d * coc.cocScale + coc.cocBias) > radiusLimit;

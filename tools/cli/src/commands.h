@@ -52,6 +52,8 @@ struct ApplyOptions {
     std::string chunk;        // "I/N" or empty
     std::string cameraTrack;  // JSON or CSV, or empty
     bool focusGiven = true;   // --focus was given (a camera track may supply it instead)
+    // --autofocus X,Y [--focus-region R] instead of --focus: the effect chooses each frame's focus.
+    std::optional<AutofocusRegion> autofocus;
     bool keepLayers = false;
     bool overwrite = false;
     bool noOverlap = false;  // read, compute and write one frame after the other
@@ -66,6 +68,8 @@ struct DemoOptions {
     uint32_t lensSamples = 64;     // thin-lens samples per pixel of the truth
     std::string outType = "auto";  // the EXR images' pixels, as apply's --out-type
     EffectOptions effect;
+    // --autofocus: the effect chooses the focus (and the truth is rendered at it) instead of the scene's.
+    std::optional<AutofocusRegion> autofocus;
 };
 void runDemo(const DemoOptions& options);
 
@@ -76,6 +80,7 @@ struct BenchOptions {
     bool json = false;
     bool float32 = false;  // 32-bit shaders even where the device has 16-bit float and storage
     EffectOptions effect;
+    std::optional<AutofocusRegion> autofocus;  // --autofocus: the autofocus pass runs (and is timed)
 };
 void runBench(const BenchOptions& options);
 

@@ -38,7 +38,8 @@ std::unique_ptr<vkrun::Device> openDevice(const EffectOptions& effect) {
     }
 }
 
-vkrun::RunSettings makeRunSettings(const EffectOptions& effect, const CocParameters& coc, bool reversedDepth) {
+vkrun::RunSettings makeRunSettings(const EffectOptions& effect, const CocParameters& coc, bool reversedDepth,
+                                   const FfxDofAutofocus* autofocus) {
     vkrun::RunSettings settings;
     settings.colorFormat = VK_FORMAT_R32G32B32A32_SFLOAT;
     settings.outputFormat = VK_FORMAT_R32G32B32A32_SFLOAT;
@@ -49,6 +50,10 @@ vkrun::RunSettings makeRunSettings(const EffectOptions& effect, const CocParamet
                             (effect.noRingMerge ? uint32_t(FFX_DOF_DISABLE_RING_MERGE) : 0u);
     settings.cocScale = coc.cocScale;
     settings.cocBias = coc.cocBias;
+    if (autofocus != nullptr) {
+        settings.useAutofocus = true;
+        settings.autofocus = *autofocus;
+    }
     return settings;
 }
 
@@ -80,10 +85,11 @@ vkrun::RunResult runEffectOrThrow(vkrun::Device& device, const vkrun::HostImage&
 }
 
 vkrun::HostImage runEffectOrThrow(vkrun::Device& device, vkrun::EffectSession& session, const vkrun::HostImage& color,
-                                  const vkrun::HostImage& depth, const vkrun::RunSettings& settings) {
+                                  const vkrun::HostImage& depth, const vkrun::RunSettings& settings,
+                                  float* autofocusDistance) {
     vkrun::HostImage output;
     try {
-        output = session.run(color, depth, settings);
+        output = session.run(color, depth, settings, autofocusDistance);
     } catch (const vkrun::Error& error) {
         throw CliError(ExitCode::Device, std::string("running the effect failed: ") + error.what());
     }

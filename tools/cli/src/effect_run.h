@@ -15,17 +15,21 @@ namespace ffxdof::cli {
 std::unique_ptr<vkrun::Device> openDevice(const EffectOptions& effect);
 
 // The harness settings for one run: 32-bit float color and output (EXR values are kept as they are),
-// D32_SFLOAT depth, and the effect options.
-vkrun::RunSettings makeRunSettings(const EffectOptions& effect, const CocParameters& coc, bool reversedDepth);
+// D32_SFLOAT depth, and the effect options. With autofocus (not null) the effect chooses the focus and
+// coc is ignored.
+vkrun::RunSettings makeRunSettings(const EffectOptions& effect, const CocParameters& coc, bool reversedDepth,
+                                   const FfxDofAutofocus* autofocus = nullptr);
 
 // Runs the effect; harness failures, and with --validate any validation message, become CliError(Device).
 vkrun::RunResult runEffectOrThrow(vkrun::Device& device, const vkrun::HostImage& color, const vkrun::HostImage& depth,
                                   const vkrun::RunSettings& settings);
 
 // The same through a session (apply: one backend and one set of images for every frame, a fresh
-// context per frame, so a frame's output does not depend on the frames before it).
+// context per frame, so a frame's output does not depend on the frames before it). With autofocus,
+// *autofocusDistance (when not null) receives the distance it chose.
 vkrun::HostImage runEffectOrThrow(vkrun::Device& device, vkrun::EffectSession& session, const vkrun::HostImage& color,
-                                  const vkrun::HostImage& depth, const vkrun::RunSettings& settings);
+                                  const vkrun::HostImage& depth, const vkrun::RunSettings& settings,
+                                  float* autofocusDistance = nullptr);
 
 // Conversions between the image library's and the harness's host images.
 vkrun::HostImage toHostImage(const io::ImageRGBA& image);

@@ -3,8 +3,12 @@
 #include "cli_error.h"
 #include "ffx_dof.h"
 
+#include <algorithm>
+#include <cctype>
 #include <cfloat>
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
 #include <sstream>
 
 namespace ffxdof::cli {
@@ -29,17 +33,17 @@ void requirePositive(const char* option, double value, const char* unit) {
 
 }  // namespace
 
-ThinLens makeThinLens(const LensSettings& settings) {
-    requirePositive("--focus", settings.focusMetres, "metres");
+ThinLens makeThinLens(const LensSettings& settings, bool autofocus) {
+    if (!autofocus) requirePositive("--focus", settings.focusMetres, "metres");
     requirePositive("--focal-length", settings.focalLengthMm, "millimetres");
     requirePositive("--sensor-width", settings.sensorWidthMm, "millimetres");
 
     ThinLens lens;
     lens.focalLength = settings.focalLengthMm * kMillimetre;
-    lens.focusDistance = settings.focusMetres;
+    lens.focusDistance = autofocus ? 0.0 : settings.focusMetres;
     lens.sensorWidth = settings.sensorWidthMm * kMillimetre;
     // A lens cannot focus closer than its focal length: the image would form at infinity or behind it.
-    if (lens.focusDistance <= lens.focalLength) {
+    if (!autofocus && lens.focusDistance <= lens.focalLength) {
         invalid("--focus (" + formatNumber(settings.focusMetres) + " m) must be greater than --focal-length (" +
                 formatNumber(settings.focalLengthMm) + " mm = " + formatNumber(lens.focalLength) + " m)");
     }
@@ -64,11 +68,14 @@ ThinLens makeThinLens(const LensSettings& settings) {
     return lens;
 }
 
+double halfResPixelsPerSensorMetre(const ThinLens& lens, uint32_t imageWidth) {
+    return 0.5 * imageWidth / lens.sensorWidth;
+}
+
 double thinLensCocHalfResPixels(const ThinLens& lens, double z, uint32_t imageWidth) {
     const double sensorRadius = lens.apertureRadius * lens.focalLength * (lens.focusDistance - z) /
                                 (z * (lens.focusDistance - lens.focalLength));
-    const double halfResPixelsPerSensorUnit = 0.5 * imageWidth / lens.sensorWidth;
-    return sensorRadius * halfResPixelsPerSensorUnit;
+    return sensorRadius * halfResPixelsPerSensorMetre(lens, imageWidth);
 }
 
 double DepthProjection::deviceDepth(double distance) const {
@@ -142,7 +149,7 @@ DepthProjection projectionForLinearDepth(double nearestDepth) {
 
 CocParameters computeCocParameters(const ThinLens& lens, const DepthProjection& projection, uint32_t imageWidth,
                                    const std::string& projectionOrigin) {
-    const double conversion = 0.5 * imageWidth / lens.sensorWidth;
+    const double conversion = halfResPixelsPerSensorMetre(lens, imageWidth);
     // The SDK computes in single precision: a value a float cannot hold (or only as a subnormal) gives
     // an infinite or NaN CoC. Each is named by the option it comes from.
     const auto requireSinglePrecision = [](double value, const std::string& what) {
@@ -176,6 +183,127 @@ CocParameters computeCocParameters(const ThinLens& lens, const DepthProjection& 
                 formatNumber(coc.cocBias) + ")");
     }
     return coc;
+}
+
+float largestCocRadius(const std::vector<float>& deviceDepth, const CocParameters& coc) {
+    float largest = 0.0f;
+    for (float d : deviceDepth) largest = std::fmax(largest, std::fabs(d * coc.cocScale + coc.cocBias));
+    return largest;
+}
+
+// ---- Autofocus --------------------------------------------------------------------------------------------
+
+std::string autofocusPointSyntaxError(const std::string& text) {
+    const std::string expected = "expected X,Y (two numbers 0 to 1, e.g. 0.5,0.4), got '" + text + "'";
+    const size_t comma = text.find(',');
+    if (comma == std::string::npos || text.find(',', comma + 1) != std::string::npos) return expected;
+    for (const std::string& part : {text.substr(0, comma), text.substr(comma + 1)}) {
+        if (part.empty() || std::isspace(static_cast<unsigned char>(part.front()))) return expected;
+        char* end = nullptr;
+        (void)std::strtod(part.c_str(), &end);
+        if (*end != '\0') return expected;
+    }
+    return std::string();
+}
+
+AutofocusRegion parseAutofocusPoint(const std::string& text, double size) {
+    const std::string error = autofocusPointSyntaxError(text);
+    if (!error.empty()) throw CliError(ExitCode::Usage, "--autofocus: " + error);
+    const size_t comma = text.find(',');
+    AutofocusRegion region;
+    region.x = std::strtod(text.substr(0, comma).c_str(), nullptr);
+    region.y = std::strtod(text.substr(comma + 1).c_str(), nullptr);
+    region.size = size;
+    return region;
+}
+
+void checkAutofocusRegion(const AutofocusRegion& region) {
+    const auto inUnitRange = [](double value) { return value >= 0.0 && value <= 1.0; };  // false for NaN
+    if (!inUnitRange(region.x) || !inUnitRange(region.y)) {
+        invalid("--autofocus X,Y must lie in 0 to 1 (normalized image coordinates, 0,0 the top-left corner), got " +
+                formatNumber(region.x) + "," + formatNumber(region.y));
+    }
+    if (!(region.size > 0.0 && region.size <= 1.0)) {
+        invalid(
+            "--focus-region must be greater than 0 and at most 1 (a fraction of the image's width and height), "
+            "got " +
+            formatNumber(region.size));
+    }
+}
+
+FocusRange autofocusRange(const ThinLens& lens, const DepthProjection& projection) {
+    FocusRange range;
+    range.nearest = 2.0 * lens.focalLength;
+    // The far plane: where device depth reaches 1 (0 when reversed). Infinite, or on the wrong side of the
+    // camera for an infinite projection: none.
+    const double farPlane = projection.viewDistance(projection.reversed ? 0.0 : 1.0);
+    range.farthest =
+        std::isfinite(farPlane) && farPlane > 0.0 ? std::min(farPlane, kAutofocusFarthest) : kAutofocusFarthest;
+    if (!(range.farthest >= range.nearest)) {
+        invalid("--autofocus: the far plane (" + formatNumber(range.farthest) +
+                " m) must lie beyond twice --focal-length (" + formatNumber(range.nearest) +
+                " m), the nearest focus autofocus chooses");
+    }
+    return range;
+}
+
+FfxDofAutofocus makeAutofocus(const ThinLens& lens, const DepthProjection& projection, uint32_t imageWidth,
+                              const AutofocusRegion& region, const FocusRange& range) {
+    FfxDofAutofocus autofocus{};
+    autofocus.regionCenter[0] = float(region.x);
+    autofocus.regionCenter[1] = float(region.y);
+    autofocus.regionSize[0] = autofocus.regionSize[1] = float(region.size);
+    autofocus.aperture = float(lens.apertureRadius);
+    autofocus.focalLength = float(lens.focalLength);
+    autofocus.conversion = float(halfResPixelsPerSensorMetre(lens, imageWidth));
+    autofocus.proj33 = float(projection.m33);
+    autofocus.proj34 = float(projection.m34);
+    autofocus.proj43 = float(projection.m43);
+    autofocus.minFocusDistance = float(range.nearest);
+    autofocus.maxFocusDistance = float(range.farthest);
+    autofocus.timeConstant = 0.0f;
+    autofocus.deltaTime = 0.0f;
+    return autofocus;
+}
+
+FocusRange reachableAutofocus(const std::vector<float>& deviceDepth, uint32_t width, uint32_t height,
+                              const DepthProjection& projection, const AutofocusRegion& region,
+                              const FocusRange& range) {
+    // The pixels the pass reads (the region's grid and the centre's 3x3 neighbours), with a pixel to spare
+    // on every side against rounding.
+    const auto span = [](double centre, double size, uint32_t extent, uint32_t& first, uint32_t& last) {
+        const double low = std::min((centre - 0.5 * size) * extent, centre * extent - 1.0) - 1.0;
+        const double high = std::max((centre + 0.5 * size) * extent, centre * extent + 1.0) + 1.0;
+        first = uint32_t(std::clamp(std::floor(low), 0.0, double(extent - 1)));
+        last = uint32_t(std::clamp(std::floor(high), 0.0, double(extent - 1)));
+    };
+    uint32_t x0 = 0, x1 = 0, y0 = 0, y1 = 0;
+    span(region.x, region.size, width, x0, x1);
+    span(region.y, region.size, height, y0, y1);
+    float lowest = INFINITY, highest = -INFINITY;
+    for (uint32_t y = y0; y <= y1; ++y) {
+        for (uint32_t x = x0; x <= x1; ++x) {
+            const float d = deviceDepth[size_t(y) * width + x];
+            lowest = std::fmin(lowest, d);
+            highest = std::fmax(highest, d);
+        }
+    }
+    // Distance is monotonic in device depth; an average of inverse distances stays between the extremes.
+    const auto clampedDistance = [&](float d) {
+        const double distance = std::fabs(projection.viewDistance(d));
+        return std::isnan(distance) ? range.farthest : std::clamp(distance, range.nearest, range.farthest);
+    };
+    const double a = clampedDistance(lowest), b = clampedDistance(highest);
+    return {std::min(a, b), std::max(a, b)};
+}
+
+std::string focusText(double metres) {
+    // Three significant digits, never an exponent: 0.123, 2.48, 12.3, 10000.
+    const int decimals =
+        metres > 0.0 && std::isfinite(metres) ? std::clamp(2 - int(std::floor(std::log10(metres))), 0, 6) : 2;
+    char text[64];
+    std::snprintf(text, sizeof(text), "focus: %.*f m", decimals, metres);
+    return text;
 }
 
 }  // namespace ffxdof::cli

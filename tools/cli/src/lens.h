@@ -14,10 +14,13 @@
 //    vectors (clip = M * view); only rows 3 and 4 matter. Whether depth is reversed follows from it.
 #pragma once
 
+#include "ffx_dof.h"
+
 #include <array>
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace ffxdof::cli {
 
@@ -45,7 +48,13 @@ struct ThinLens {
 
 // Checks every value and converts to metres; throws CliError(InvalidValue) naming the bad option.
 // With neither fNumber nor apertureRadiusMetres it is a usage error (the parser supplies a default).
-ThinLens makeThinLens(const LensSettings& settings);
+// With autofocus the focus is not given (focusMetres is ignored, focusDistance is 0): autofocus
+// chooses it on the device.
+ThinLens makeThinLens(const LensSettings& settings, bool autofocus = false);
+
+// Half-resolution pixels per metre on the sensor of an image imageWidth pixels wide:
+// 0.5 * imageWidth / sensorWidth (the SDK's `conversion`).
+double halfResPixelsPerSensorMetre(const ThinLens& lens, uint32_t imageWidth);
 
 // The thin-lens CoC radius of a point at view distance z, in half-resolution pixels of an image
 // imageWidth pixels wide: |A f (F - z)| / (z (F - f)) * 0.5 * imageWidth / sensorWidth, signed
@@ -88,5 +97,56 @@ struct CocParameters {
 // came from ("--near/--far", "--proj", "the nearest depth of d.exr (... at x=.., y=..)").
 CocParameters computeCocParameters(const ThinLens& lens, const DepthProjection& projection, uint32_t imageWidth,
                                    const std::string& projectionOrigin = "the depth projection");
+
+// The largest |d * cocScale + cocBias| over device depths (half-res px).
+float largestCocRadius(const std::vector<float>& deviceDepth, const CocParameters& coc);
+
+// ---- Autofocus: --autofocus X,Y [--focus-region R] instead of --focus (docs/cli.md, "Autofocus") ----
+
+// The region's width and height when --focus-region is not given: a tenth of the image's.
+constexpr double kDefaultFocusRegion = 0.1;
+// The farthest focus where the depth has no far plane (linear depth, --far inf, an infinite --proj)
+// or one beyond it: 10 km, infinity for every lens the tool models (focused there, a 300 mm f/2.8 lens
+// on a 36 mm, 4096-pixel-wide sensor blurs infinity by under 0.1 half-res px).
+constexpr double kAutofocusFarthest = 10000.0;
+
+struct AutofocusRegion {
+    double x = 0.5, y = 0.5;            // centre, normalized image coordinates, origin top-left
+    double size = kDefaultFocusRegion;  // width and height as fractions of the image's width and height
+};
+
+// "X,Y": exactly two numbers (strtod's syntax) separated by one comma. Returns an empty string when
+// the text is well formed, else why not (the parser reports it as a usage error naming --autofocus).
+std::string autofocusPointSyntaxError(const std::string& text);
+// Parses text that autofocusPointSyntaxError accepts (throws CliError(Usage) naming --autofocus otherwise).
+AutofocusRegion parseAutofocusPoint(const std::string& text, double size = kDefaultFocusRegion);
+// X and Y in [0, 1], the size in (0, 1]; throws CliError(InvalidValue) naming the option.
+void checkAutofocusRegion(const AutofocusRegion& region);
+
+// The distances autofocus may choose, metres.
+struct FocusRange {
+    double nearest = 0.0, farthest = 0.0;
+};
+// From twice the focal length (1:1 magnification, as close as a macro lens focuses; the SDK needs more
+// than the focal length) to the projection's far plane, or kAutofocusFarthest where there is none or it
+// lies beyond. Throws CliError(InvalidValue) when the far plane is not beyond twice the focal length.
+FocusRange autofocusRange(const ThinLens& lens, const DepthProjection& projection);
+
+// The dispatch's FfxDofAutofocus: the lens and projection terms exactly as computeCocParameters gives
+// them to ffxDofCalculateCocScale / Bias, the region, the range; timeConstant 0 (every frame focuses on
+// its own: no smoothing).
+FfxDofAutofocus makeAutofocus(const ThinLens& lens, const DepthProjection& projection, uint32_t imageWidth,
+                              const AutofocusRegion& region, const FocusRange& range);
+
+// The focus distances autofocus can arrive at on this depth image (width x height device depths): it
+// reads only pixels of the region and the 3x3 pixels at its centre and averages inverse distances of
+// some of them, so its choice lies within their distance range, clamped to `range`. The tool sizes the
+// CoC limit for the whole of it before the dispatch (the chosen distance comes back with the output).
+FocusRange reachableAutofocus(const std::vector<float>& deviceDepth, uint32_t width, uint32_t height,
+                              const DepthProjection& projection, const AutofocusRegion& region,
+                              const FocusRange& range);
+
+// "focus: 2.48 m": the distance with three significant digits (at least), in fixed notation.
+std::string focusText(double metres);
 
 }  // namespace ffxdof::cli

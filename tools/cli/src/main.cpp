@@ -14,6 +14,7 @@
 #include <limits>
 #include <exception>
 #include <map>
+#include <optional>
 #include <vector>
 
 namespace ffxdof::cli {
@@ -98,8 +99,41 @@ CLI::Option* addEffectOptions(CLI::App& command, EffectOptions& effect, bool off
     return cocLimit;
 }
 
+// --autofocus X,Y and --focus-region R (apply, demo, bench). The point's syntax is checked by the parser
+// (exit 1 naming --autofocus), the ranges by checkAutofocusRegion (exit 3).
+struct AutofocusArguments {
+    std::string point;
+    double region = kDefaultFocusRegion;
+    CLI::Option *pointOption = nullptr, *regionOption = nullptr;
+
+    std::optional<AutofocusRegion> parsed() const {
+        if (pointOption->count() == 0) return std::nullopt;
+        return parseAutofocusPoint(point, region);
+    }
+};
+
+const CLI::Validator kAutofocusPoint([](std::string& text) { return autofocusPointSyntaxError(text); }, "X,Y",
+                                     "autofocus point");
+
+void addAutofocusOptions(CLI::App& command, AutofocusArguments& args) {
+    args.pointOption =
+        command
+            .add_option("--autofocus", args.point,
+                        "Focus on what lies at X,Y (0 to 1, 0,0 the top-left corner), chosen by the effect from the "
+                        "depth; prints 'focus: D m'")
+            ->check(kAutofocusPoint);
+    args.regionOption = command
+                            .add_option("--focus-region", args.region,
+                                        "With --autofocus: the region's width and height as fractions of the "
+                                        "image's, over 0 to 1")
+                            ->check(kNumber)
+                            ->capture_default_str();
+    args.regionOption->needs(args.pointOption);
+}
+
 struct ApplyArguments {
     ApplyOptions options;
+    AutofocusArguments autofocus;
     std::string depthKind = "linear";
     std::vector<double> projection;
     double nearPlane = 0.0, farPlane = 0.0, fNumber = 0.0, apertureRadius = 0.0;
@@ -145,7 +179,7 @@ CLI::App* addApply(CLI::App& app, ApplyArguments& args) {
     args.focusOption = apply
                            ->add_option("--focus", o.lens.focusMetres,
                                         "Distance in focus, metres (required unless "
-                                        "--camera-track gives it)")
+                                        "--autofocus or --camera-track gives it)")
                            ->check(kNumber);
     apply->add_option("--focal-length", o.lens.focalLengthMm, "Focal length, millimetres")
         ->check(kNumber)
@@ -159,6 +193,8 @@ CLI::App* addApply(CLI::App& app, ApplyArguments& args) {
     args.apertureOption =
         apply->add_option("--aperture-radius", args.apertureRadius, "Aperture radius, metres")->check(kNumber);
     args.fstopOption->excludes(args.apertureOption);
+    addAutofocusOptions(*apply, args.autofocus);
+    args.autofocus.pointOption->excludes(args.focusOption);
     args.cocLimitOption = addEffectOptions(*apply, o.effect, true);
 
     apply->add_option("--frames", o.frames,
@@ -180,6 +216,7 @@ CLI::App* addApply(CLI::App& app, ApplyArguments& args) {
 ApplyOptions finishApply(ApplyArguments& args) {
     ApplyOptions o = args.options;
     o.focusGiven = args.focusOption->count() > 0;
+    o.autofocus = args.autofocus.parsed();
     o.effect.cocLimitFollowsImage = args.cocLimitOption->count() == 0;
     o.depthKind = args.depthKind == "device" ? DepthKind::Device : DepthKind::Linear;
     if (o.depthKind == DepthKind::Linear) {
@@ -239,6 +276,8 @@ int run(int argc, char** argv) {
                      "EXR images: half, float, or auto (half unless a value exceeds half's largest, 65504)")
         ->check(CLI::IsMember({"auto", "half", "float"}))
         ->capture_default_str();
+    AutofocusArguments demoAutofocus;
+    addAutofocusOptions(*demoCommand, demoAutofocus);
     CLI::Option* demoCocLimit = addEffectOptions(*demoCommand, demo.effect, true);
 
     BenchOptions bench;
@@ -252,6 +291,8 @@ int run(int argc, char** argv) {
     benchCommand->add_flag("--json", bench.json, "Print one JSON object instead of a table");
     benchCommand->add_flag("--float32", bench.float32,
                            "Run the 32-bit shader permutations even where the device supports 16-bit ones");
+    AutofocusArguments benchAutofocus;
+    addAutofocusOptions(*benchCommand, benchAutofocus);
     addEffectOptions(*benchCommand, bench.effect);
 
     CompareOptions compare;
@@ -299,8 +340,10 @@ int run(int argc, char** argv) {
         runApply(finishApply(applyArgs));
     } else if (demoCommand->parsed()) {
         demo.effect.cocLimitFollowsImage = demoCocLimit->count() == 0;
+        demo.autofocus = demoAutofocus.parsed();
         runDemo(demo);
     } else if (benchCommand->parsed()) {
+        bench.autofocus = benchAutofocus.parsed();
         runBench(bench);
     } else if (compareCommand->parsed()) {
         runCompare(compare);
