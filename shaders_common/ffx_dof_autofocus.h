@@ -36,25 +36,6 @@ FFX_DOF_INLINE FfxFloat32 ffxDofInverseViewZ(FfxFloat32 depth, FfxDofConstants c
     return depth * constants.focusInvZScale - constants.focusInvZBias;
 }
 
-// The median of nine values (a sorting network's median: 19 compare-exchanges).
-FFX_DOF_INLINE FfxFloat32 ffxDofMedianOf9(FfxFloat32 v[9])
-{
-    FFX_DOF_UNROLL
-    for (FfxUInt32 pass = 0u; pass < 5u; ++pass)
-    {
-        // Five passes of a bubble sort bring the median (the fifth smallest) into place.
-        FFX_DOF_UNROLL
-        for (FfxUInt32 i = 0u; i < 8u - pass; ++i)
-        {
-            FfxFloat32 low = min(v[i], v[i + 1u]);
-            FfxFloat32 high = max(v[i], v[i + 1u]);
-            v[i] = low;
-            v[i + 1u] = high;
-        }
-    }
-    return v[4];
-}
-
 // Whether a sample of inverse distance `invZ` lies on the surface of the reference `referenceInvZ`.
 FFX_DOF_INLINE FfxBoolean ffxDofOnFocusSurface(FfxFloat32 invZ, FfxFloat32 referenceInvZ)
 {
@@ -124,11 +105,10 @@ void ffxDofAutofocus(FfxUInt32 localIndex)
             ffxDofInverseViewZ(ffxDofLoadInputDepth(ffxDofFocusCentrePixel(localIndex, constants)), constants);
     ffxDofGroupBarrier();
 
-    FfxFloat32 centre[9];
-    FFX_DOF_UNROLL
-    for (FfxUInt32 i = 0u; i < 9u; ++i)
-        centre[i] = ffxDofSharedCentreInvZ[i];
-    FfxFloat32 referenceInvZ = ffxDofMedianOf9(centre);
+    FfxFloat32 referenceInvZ =
+        ffxDofMedian9(ffxDofSharedCentreInvZ[0], ffxDofSharedCentreInvZ[1], ffxDofSharedCentreInvZ[2],
+                      ffxDofSharedCentreInvZ[3], ffxDofSharedCentreInvZ[4], ffxDofSharedCentreInvZ[5],
+                      ffxDofSharedCentreInvZ[6], ffxDofSharedCentreInvZ[7], ffxDofSharedCentreInvZ[8]);
 
     FfxFloat32 sum = 0.0f;
     FfxUInt32 count = 0u;

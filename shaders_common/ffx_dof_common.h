@@ -135,6 +135,38 @@ FFX_DOF_INLINE FfxUInt32x2 ffxDofMipSize(FfxUInt32x2 size, FfxUInt32 mip)
 // kernel is max(dilated near radius, |own radius|), and its own radius is within the range.
 FFX_DOF_INLINE FfxFloat32 ffxDofTileKernelRadius(FfxFloat32x2 farNear) { return max(max(farNear.y, -farNear.x), 0.0f); }
 
+// Median of nine values by a 19-exchange selection network (the composite's post-filter, autofocus's
+// centre).
+FFX_DOF_INLINE void ffxDofSort2(FFX_DOF_INOUT(FfxFloat32) a, FFX_DOF_INOUT(FfxFloat32) b)
+{
+    FfxFloat32 lo = min(a, b);
+    b = max(a, b);
+    a = lo;
+}
+FFX_DOF_INLINE FfxFloat32 ffxDofMedian9(FfxFloat32 p0, FfxFloat32 p1, FfxFloat32 p2, FfxFloat32 p3, FfxFloat32 p4,
+                                        FfxFloat32 p5, FfxFloat32 p6, FfxFloat32 p7, FfxFloat32 p8)
+{
+    ffxDofSort2(p1, p2);
+    ffxDofSort2(p4, p5);
+    ffxDofSort2(p7, p8);
+    ffxDofSort2(p0, p1);
+    ffxDofSort2(p3, p4);
+    ffxDofSort2(p6, p7);
+    ffxDofSort2(p1, p2);
+    ffxDofSort2(p4, p5);
+    ffxDofSort2(p7, p8);
+    p3 = max(p0, p3);
+    p5 = min(p5, p8);
+    ffxDofSort2(p4, p7);
+    p6 = max(p3, p6);
+    p4 = max(p1, p4);
+    p2 = min(p2, p5);
+    p4 = min(p4, p7);
+    ffxDofSort2(p4, p2);
+    p4 = max(p6, p4);
+    return min(p4, p2);
+}
+
 // ---- Kernel shape: the only function that knows it is circular ---------------------------------
 
 // Half the width of the kernel's row `dy` from its centre, for a kernel of `radius` (same units): a

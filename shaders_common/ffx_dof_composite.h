@@ -73,37 +73,6 @@ FFX_DOF_INLINE FfxFloat32x4 ffxDofUnscaleColor(FfxFloat32x4 color, FfxFloat32 sc
 
 // ---- Post-filter and composition ----------------------------------------------------------------
 
-// Median of nine values by a 19-exchange selection network.
-FFX_DOF_INLINE void ffxDofSort2(FFX_DOF_INOUT(FfxFloat32) a, FFX_DOF_INOUT(FfxFloat32) b)
-{
-    FfxFloat32 lo = min(a, b);
-    b = max(a, b);
-    a = lo;
-}
-FFX_DOF_INLINE FfxFloat32 ffxDofMedian9(FfxFloat32 p0, FfxFloat32 p1, FfxFloat32 p2, FfxFloat32 p3, FfxFloat32 p4,
-                                        FfxFloat32 p5, FfxFloat32 p6, FfxFloat32 p7, FfxFloat32 p8)
-{
-    ffxDofSort2(p1, p2);
-    ffxDofSort2(p4, p5);
-    ffxDofSort2(p7, p8);
-    ffxDofSort2(p0, p1);
-    ffxDofSort2(p3, p4);
-    ffxDofSort2(p6, p7);
-    ffxDofSort2(p1, p2);
-    ffxDofSort2(p4, p5);
-    ffxDofSort2(p7, p8);
-    p3 = max(p0, p3);
-    p5 = min(p5, p8);
-    ffxDofSort2(p4, p7);
-    p6 = max(p3, p6);
-    p4 = max(p1, p4);
-    p2 = min(p2, p5);
-    p4 = min(p4, p7);
-    ffxDofSort2(p4, p2);
-    p4 = max(p6, p4);
-    return min(p4, p2);
-}
-
 // Brightness factor that moves a pixel of luminance `centerLuminance` to the median of its
 // neighbourhood; a zero median or a black pixel leaves it unchanged, the gain is bounded.
 FFX_DOF_INLINE FfxFloat32 ffxDofMedianGain(FfxFloat32 centerLuminance, FfxFloat32 medianLuminance)
