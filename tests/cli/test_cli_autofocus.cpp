@@ -2,6 +2,7 @@
 // range errors with their exit codes ([cli]), and on the Vulkan device ([vulkan]) the printed focus of a
 // target at a known distance, the target left sharp, a focus per frame of a sequence (each frame equal
 // to the frame run alone), and bench's autofocus figures.
+#include "cli_program_support.h"
 #include "ffx_dof_imageio.h"
 
 #include <catch2/catch.hpp>
@@ -23,6 +24,8 @@
 using ffxdof::io::ImageR;
 using ffxdof::io::ImageRGBA;
 
+using namespace ffxdof::clitest;
+
 namespace {
 
 class TempFolder : public ffxdof::testing::TempFolder {
@@ -30,38 +33,6 @@ public:
     TempFolder() : ffxdof::testing::TempFolder("ffx_dof_autofocus_cli_test_") {}
 };
 using ffxdof::testing::readText;
-
-struct ProgramResult {
-    int exitCode = -1;
-    std::string out, err;
-};
-
-std::string quote(const std::string& text) {
-    std::string quoted = "'";
-    for (char c : text) quoted += c == '\'' ? std::string("'\\''") : std::string(1, c);
-    return quoted + "'";
-}
-
-// stdout goes to a file: not a terminal, so sequences print a plain line per frame.
-ProgramResult runProgram(const std::string& arguments) {
-    TempFolder folder;
-    const std::string command =
-        quote(FFX_DOF_CLI_PROGRAM) + " " + arguments + " > " + quote(folder / "out") + " 2> " + quote(folder / "err");
-    const int status = std::system(command.c_str());
-    ProgramResult result;
-    result.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    result.out = readText(folder.path() / "out");
-    result.err = readText(folder.path() / "err");
-    return result;
-}
-
-void requireError(const ProgramResult& result, int exitCode, const std::string& fragment) {
-    INFO("stderr: " << result.err);
-    CHECK(result.exitCode == exitCode);
-    CHECK(result.err.rfind("ffx-dof: error: ", 0) == 0);
-    CHECK(std::count(result.err.begin(), result.err.end(), '\n') == 1);
-    CHECK_THAT(result.err, Catch::Contains(fragment));
-}
 
 // A checker texture; depth: a target of `targetDistance` metres over the middle third of the image (in
 // both directions) before a wall at 20 m.

@@ -8,6 +8,8 @@
 
 #include <catch2/catch.hpp>
 
+#include "cli_program_support.h"
+
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -25,6 +27,8 @@
 
 namespace fs = std::filesystem;
 
+using ffxdof::clitest::quote;
+
 namespace {
 
 constexpr auto kTimeBudget = std::chrono::seconds(45);
@@ -41,12 +45,6 @@ std::string readBytes(const fs::path& path) {
 void writeBytes(const fs::path& path, const std::string& bytes) {
     std::ofstream file(path, std::ios::binary | std::ios::trunc);
     file.write(bytes.data(), std::streamsize(bytes.size()));
-}
-
-std::string quote(const std::string& text) {
-    std::string quoted = "'";
-    for (char c : text) quoted += c == '\'' ? std::string("'\\''") : std::string(1, c);
-    return quoted + "'";
 }
 
 // The EXR mutations: cut the file short, flip bits anywhere, or overwrite bytes of the header (its

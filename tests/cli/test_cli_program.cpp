@@ -1,5 +1,6 @@
 // Runs the built ffx-dof program with generated inputs and checks exit codes, the one-line error
 // messages, and (tag [vulkan]) real runs of apply, bench and demo on the Vulkan device.
+#include "cli_program_support.h"
 #include "ffx_dof_imageio.h"
 
 #include <ImfChannelList.h>
@@ -35,13 +36,9 @@ namespace fs = std::filesystem;
 using ffxdof::io::ImageR;
 using ffxdof::io::ImageRGBA;
 
-namespace {
+using namespace ffxdof::clitest;
 
-struct ProgramResult {
-    int exitCode = -1;
-    std::string out;
-    std::string err;
-};
+namespace {
 
 // A fresh folder per test case, removed at the end.
 class TempFolder : public ffxdof::testing::TempFolder {
@@ -49,33 +46,6 @@ public:
     TempFolder() : ffxdof::testing::TempFolder("ffx_dof_cli_test_") {}
 };
 using ffxdof::testing::readText;
-
-std::string quote(const std::string& text) {
-    std::string quoted = "'";
-    for (char c : text) quoted += c == '\'' ? std::string("'\\''") : std::string(1, c);
-    return quoted + "'";
-}
-
-ProgramResult runProgram(const std::string& arguments) {
-    TempFolder folder;
-    const std::string command =
-        quote(FFX_DOF_CLI_PROGRAM) + " " + arguments + " > " + quote(folder / "out") + " 2> " + quote(folder / "err");
-    const int status = std::system(command.c_str());
-    ProgramResult result;
-    result.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    result.out = readText(folder.path() / "out");
-    result.err = readText(folder.path() / "err");
-    return result;
-}
-
-// A failure is exactly one line on stderr, "ffx-dof: error: ...", and the documented exit code.
-void requireError(const ProgramResult& result, int exitCode, const std::string& fragment) {
-    INFO("stderr: " << result.err);
-    CHECK(result.exitCode == exitCode);
-    CHECK(result.err.rfind("ffx-dof: error: ", 0) == 0);
-    CHECK(std::count(result.err.begin(), result.err.end(), '\n') == 1);
-    CHECK_THAT(result.err, Catch::Contains(fragment));
-}
 
 // A scene a few tiles wide: a checker texture everywhere; depth in three vertical bands, near (left),
 // in focus (middle), far (right).
