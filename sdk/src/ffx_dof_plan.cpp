@@ -92,7 +92,6 @@ FfxDofErrorCode planPass(const ContextPlan& context, Pass pass, const shaders::P
                 return fail(FFX_DOF_ERROR_BACKEND, "the %s push constants are %u bytes; FfxDofConstants is %u",
                             kPassNames[p], binding.size, uint32_t(sizeof(FfxDofConstants)));
             }
-            out->pushConstantBytes = binding.size;
             continue;
         }
         Slot slot{};
@@ -179,13 +178,7 @@ FfxDofErrorCode buildContextPlan(const ContextConfig& config, const BackendCapab
             status != FFX_DOF_OK) {
             return status;
         }
-        for (uint32_t s = 0; s < kSampledSlotCount; ++s) plan->sampledSlots[s].used |= (pass.sampledSlots >> s) & 1u;
-        for (uint32_t s = 0; s < kStorageImageSlotCount; ++s)
-            plan->storageImageSlots[s].used |= (pass.storageSlots >> s) & 1u;
-        for (uint32_t s = 0; s < kStorageBufferSlotCount; ++s)
-            plan->storageBufferSlots[s].used |= (pass.bufferSlots >> s) & 1u;
         plan->touched |= pass.reads | pass.writes;
-        plan->written |= pass.writes;
     }
     return FFX_DOF_OK;
 }

@@ -40,7 +40,6 @@ static_assert(kResourceCount <= 32, "ResourceSet holds one bit per resource");
 // What one shader slot is bound to. A storage slot of a MIP level that a small image lacks is bound
 // to its last level (aliased: the shaders write the same 1x1 value to both).
 struct SlotTarget {
-    bool used = false;  // some pass declares the slot
     Resource resource = Resource::InputColor;
     uint32_t firstMip = 0;
     uint32_t mipCount = 1;  // sampled slots of a MIP chain see every level; storage slots one
@@ -59,9 +58,8 @@ struct PlannedPass {
     uint32_t sampledSlots = 0;  // bit i: FFX_DOF_SRV_* slot i is declared (reflected)
     uint32_t storageSlots = 0;  // bit i: FFX_DOF_UAV_* image slot i
     uint32_t bufferSlots = 0;   // bit i: FFX_DOF_UAV_BUFFER_* slot i
-    uint32_t pushConstantBytes = 0;
-    ResourceSet reads = 0;   // sampled
-    ResourceSet writes = 0;  // storage images and buffers (which the pass may also read)
+    ResourceSet reads = 0;      // sampled
+    ResourceSet writes = 0;     // storage images and buffers (which the pass may also read)
 };
 
 // What a backend's device can run, asked once per context.
@@ -79,9 +77,8 @@ struct ContextPlan {
     SlotTarget sampledSlots[kSampledSlotCount];
     SlotTarget storageImageSlots[kStorageImageSlotCount];
     SlotTarget storageBufferSlots[kStorageBufferSlotCount];
-    // Every pass's reads | writes, and which resources some pass writes.
+    // Every pass's reads | writes.
     ResourceSet touched = 0;
-    ResourceSet written = 0;
     FfxDofConstants constants{};  // the per-context part; planDispatch adds the per-frame values
 };
 

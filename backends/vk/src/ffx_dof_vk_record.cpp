@@ -110,7 +110,7 @@ void ContextVK::recordInternalBarrier(VkCommandBuffer commandBuffer) const {
         zeroed.size = VK_WHOLE_SIZE;
         fn.vkCmdPipelineBarrier(commandBuffer, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, 0,
                                 0, nullptr, 1, &zeroed, 0, nullptr);
-    } else if (plan_.written & plan_.touched) {
+    } else {
         // The previous dispatch's writes of the internal resources (and its autofocus readback's read
         // of GLOBALS) before this one's accesses.
         auto previous = makeInfo<VkMemoryBarrier>(VK_STRUCTURE_TYPE_MEMORY_BARRIER);
