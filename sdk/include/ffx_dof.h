@@ -7,6 +7,12 @@
  * integration ports by changing its backend set-up and resource wrapping only:
  * see ffx_dof_vk.h and ffx_dof_dx12.h for those.
  *
+ * Version 2.0.0
+ *   - Autofocus: FfxDofDispatchDescription::pAutofocus, ffxDofContextResetAutofocus,
+ *     ffxDofContextGetAutofocusDistance (docs/autofocus.md).
+ *   - Vulkan: FfxDofBackendDescriptionVK::pEnabledFeatures (the vkCreateDevice chain) replaces
+ *     shaderFloat16Enabled / storage16BitEnabled / subgroupSizeControlEnabled; views of engine
+ *     images are kept (ffxDofContextReleaseImageVK); FFX_DOF_VK_TIMESTAMP_COUNT is 7.
  * Version 1.0.0
  *   - First release: five compute passes, Vulkan backend, D3D12 backend, 16-bit and
  *     wave64 permutations, opaque heap-allocated context and backend handles.
@@ -21,7 +27,7 @@
 extern "C" {
 #endif
 
-#define FFX_DOF_VERSION_MAJOR 1
+#define FFX_DOF_VERSION_MAJOR 2
 #define FFX_DOF_VERSION_MINOR 0
 #define FFX_DOF_VERSION_PATCH 0
 

@@ -18,7 +18,9 @@ int ffx_dof_c99_checks(void) {
     if (ffxDofContextCreate(&context, &description) != FFX_DOF_ERROR_INVALID_POINTER) ++failures;
     if (context != NULL) ++failures;
     if (ffxDofContextDestroy(&context) != FFX_DOF_OK) ++failures;
-    if (ffxDofGetEffectVersion() != FFX_DOF_MAKE_VERSION(1, 0, 0)) ++failures;
+    if (ffxDofGetEffectVersion() !=
+        FFX_DOF_MAKE_VERSION(FFX_DOF_VERSION_MAJOR, FFX_DOF_VERSION_MINOR, FFX_DOF_VERSION_PATCH))
+        ++failures;
     {
         const float scale = ffxDofCalculateCocScale(0.0125f, -2.0f, 0.05f, 1000.0f, -1.0001f, -0.10001f, -1.0f);
         const float bias = ffxDofCalculateCocBias(0.0125f, -2.0f, 0.05f, 1000.0f, -1.0001f, -0.10001f, -1.0f);

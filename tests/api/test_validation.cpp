@@ -252,8 +252,8 @@ TEST_CASE("every error code has its own description") {
     CHECK(std::string(ffxDofGetErrorString(static_cast<FfxDofErrorCode>(-999))) == "unknown error code");
 }
 
-TEST_CASE("the version is 1.0.0 packed as FidelityFX packs it") {
-    CHECK(ffxDofGetEffectVersion() == ((1u << 22) | (0u << 12) | 0u));
+TEST_CASE("the version is 2.0.0 packed as FidelityFX packs it") {
+    CHECK(ffxDofGetEffectVersion() == ((2u << 22) | (0u << 12) | 0u));
 }
 
 namespace {

@@ -155,7 +155,7 @@ TEST_CASE("help and version", "[cli]") {
     CHECK_THAT(applyHelp.out, Catch::Contains("--focal-length") && Catch::Contains("--reverse-depth"));
     const ProgramResult version = runProgram("--version");
     CHECK(version.exitCode == 0);
-    CHECK_THAT(version.out, Catch::StartsWith("1."));
+    CHECK_THAT(version.out, Catch::StartsWith("2."));
 }
 
 TEST_CASE("input file errors", "[cli]") {
