@@ -3,6 +3,7 @@
 // sizes (rounding must be symmetric and cover every pixel, tile and half-resolution texel exactly once).
 #include "fake_backend.h"
 #include "ffx_dof_plan.h"
+#include "ffx_dof_readback_ring.h"
 
 #include <catch2/catch.hpp>
 
@@ -181,4 +182,30 @@ TEST_CASE("per-frame values are copied into the constants") {
     CHECK(p.constants.maxRings == 10);
     CHECK(p.constants.frameIndex == 7);
     CHECK(p.constants.outputFlags == 0);
+}
+
+TEST_CASE("the autofocus readback ring answers for the dispatches it keeps") {
+    AutofocusReadbackRing ring(2);  // maxFramesInFlight 2: 3 slots
+    REQUIRE(ring.slotCount() == 3);
+    float values[3] = {};
+    float distance = 0.0f;
+    CHECK(ring.read(0, values, &distance) == FFX_DOF_ERROR_INVALID_ARGUMENT);  // nothing recorded yet
+
+    values[ring.record(true)] = -2.0f;   // dispatch 0
+    values[ring.record(false)] = 99.0f;  // dispatch 1: no autofocus, its slot holds nothing
+    values[ring.record(true)] = -4.0f;   // dispatch 2
+    REQUIRE(ring.read(0, values, &distance) == FFX_DOF_OK);
+    CHECK(distance == 4.0f);  // positive, whatever the sign of view z
+    CHECK(ring.read(1, values, &distance) == FFX_DOF_ERROR_INVALID_ARGUMENT);
+    CHECK(std::string(ffxDofGetLastErrorMessage()).find("did not run autofocus") != std::string::npos);
+    REQUIRE(ring.read(2, values, &distance) == FFX_DOF_OK);
+    CHECK(distance == 2.0f);
+    CHECK(ring.read(3, values, &distance) == FFX_DOF_ERROR_INVALID_ARGUMENT);  // further than kept
+
+    // Dispatch 3 reuses dispatch 0's slot: dispatch 0 is no longer there.
+    values[ring.record(true)] = -8.0f;
+    REQUIRE(ring.read(0, values, &distance) == FFX_DOF_OK);
+    CHECK(distance == 8.0f);
+    REQUIRE(ring.read(1, values, &distance) == FFX_DOF_OK);
+    CHECK(distance == 4.0f);
 }

@@ -4,11 +4,10 @@
 #include "ffx_dof_dx12_backend.h"
 #include "ffx_dof_dx12_formats.h"
 #include "ffx_dof_dx12_state_tracker.h"
+#include "ffx_dof_readback_ring.h"
 
-#include <cmath>
 #include <cstdint>
 #include <new>
-#include <vector>
 
 namespace ffxdof::dx12 {
 namespace {
@@ -29,6 +28,20 @@ constexpr DXGI_FORMAT toDxgiFormat(InternalFormat format) {
             return DXGI_FORMAT_R8G8_UNORM;
     }
     return DXGI_FORMAT_UNKNOWN;
+}
+
+D3D12_RESOURCE_DESC bufferDescription(UINT64 bytes, D3D12_RESOURCE_FLAGS flags) {
+    D3D12_RESOURCE_DESC desc{};
+    desc.Dimension = D3D12_RESOURCE_DIMENSION_BUFFER;
+    desc.Width = bytes;
+    desc.Height = 1;
+    desc.DepthOrArraySize = 1;
+    desc.MipLevels = 1;
+    desc.Format = DXGI_FORMAT_UNKNOWN;
+    desc.SampleDesc.Count = 1;
+    desc.Layout = D3D12_TEXTURE_LAYOUT_ROW_MAJOR;
+    desc.Flags = flags;
+    return desc;
 }
 
 // GLOBALS (FFX_DOF_UAV_BUFFER_GLOBALS): RWStructuredBuffer<uint> in HLSL, so a structured UAV.
@@ -85,7 +98,8 @@ FfxDofErrorCode checkEngineImage(const FfxDofResource& image, ImageRole role, co
 
 class Context final : public BackendContext {
 public:
-    Context(const Backend& backend, const ContextPlan& plan) : backend_(backend), plan_(plan) {}
+    Context(const Backend& backend, const ContextPlan& plan)
+        : backend_(backend), plan_(plan), readbackRing_(backend.framesInFlight()) {}
 
     FfxDofErrorCode init();
     FfxDofErrorCode dispatch(const DispatchPlan& plan) override;
@@ -122,12 +136,11 @@ private:
     ComPtr<ID3D12PipelineState> pipelines_[kPassCount];
     InternalImage images_[kInternalImageCount];
     ComPtr<ID3D12Resource> globals_;
-    // The focus distance of the last maxFramesInFlight + 1 dispatches (ffxDofContextGetAutofocusDistance):
-    // a readback buffer, mapped for the context's life; slot = dispatch index % slots.
+    // The focus distances of the last autofocus dispatches (ffxDofContextGetAutofocusDistance): a
+    // readback buffer, mapped for the context's life, one float per slot of the ring.
+    AutofocusReadbackRing readbackRing_;
     ComPtr<ID3D12Resource> readback_;
     const float* readbackValues_ = nullptr;
-    std::vector<uint64_t> readbackDispatch_;  // per slot: 1 + the dispatch index that wrote it, 0: none
-    uint64_t dispatchCount_ = 0;
     ComPtr<ID3D12DescriptorHeap> heap_;
     D3D12_CPU_DESCRIPTOR_HANDLE heapCpuStart_{};
     D3D12_GPU_DESCRIPTOR_HANDLE heapGpuStart_{};
@@ -229,16 +242,8 @@ FfxDofErrorCode Context::createResources() {
 
     // A committed resource in a default heap starts zeroed (no D3D12_HEAP_FLAG_CREATE_NOT_ZEROED),
     // which is the "zero before the first dispatch" that GLOBALS needs.
-    D3D12_RESOURCE_DESC desc{};
-    desc.Dimension = D3D12_RESOURCE_DIMENSION_BUFFER;
-    desc.Width = kGlobalsElementBytes * kGlobalsElementCount;
-    desc.Height = 1;
-    desc.DepthOrArraySize = 1;
-    desc.MipLevels = 1;
-    desc.Format = DXGI_FORMAT_UNKNOWN;
-    desc.SampleDesc.Count = 1;
-    desc.Layout = D3D12_TEXTURE_LAYOUT_ROW_MAJOR;
-    desc.Flags = D3D12_RESOURCE_FLAG_ALLOW_UNORDERED_ACCESS;
+    const D3D12_RESOURCE_DESC desc =
+        bufferDescription(kGlobalsElementBytes * kGlobalsElementCount, D3D12_RESOURCE_FLAG_ALLOW_UNORDERED_ACCESS);
     const HRESULT hr = device->CreateCommittedResource(&heap, D3D12_HEAP_FLAG_NONE, &desc, D3D12_RESOURCE_STATE_COMMON,
                                                        nullptr, IID_PPV_ARGS(&globals_));
     if (FAILED(hr))
@@ -250,19 +255,10 @@ FfxDofErrorCode Context::createResources() {
 }
 
 FfxDofErrorCode Context::createReadback() {
-    const uint32_t slots = backend_.framesInFlight() + 1;
-    readbackDispatch_.assign(slots, 0);
+    const uint32_t slots = readbackRing_.slotCount();
     D3D12_HEAP_PROPERTIES heap{};
     heap.Type = D3D12_HEAP_TYPE_READBACK;
-    D3D12_RESOURCE_DESC desc{};
-    desc.Dimension = D3D12_RESOURCE_DIMENSION_BUFFER;
-    desc.Width = slots * sizeof(float);
-    desc.Height = 1;
-    desc.DepthOrArraySize = 1;
-    desc.MipLevels = 1;
-    desc.Format = DXGI_FORMAT_UNKNOWN;
-    desc.SampleDesc.Count = 1;
-    desc.Layout = D3D12_TEXTURE_LAYOUT_ROW_MAJOR;
+    const D3D12_RESOURCE_DESC desc = bufferDescription(slots * sizeof(float), D3D12_RESOURCE_FLAG_NONE);
     HRESULT hr = backend_.device()->CreateCommittedResource(
         &heap, D3D12_HEAP_FLAG_NONE, &desc, D3D12_RESOURCE_STATE_COPY_DEST, nullptr, IID_PPV_ARGS(&readback_));
     if (FAILED(hr))
@@ -296,19 +292,7 @@ void Context::recordFocusReadback(ID3D12GraphicsCommandList* list, uint32_t slot
 }
 
 FfxDofErrorCode Context::autofocusDistance(uint32_t dispatchesAgo, float* distance) const {
-    if (dispatchesAgo > backend_.framesInFlight())
-        return fail(FFX_DOF_ERROR_INVALID_ARGUMENT, "dispatchesAgo %u: only the last maxFramesInFlight (%u) are kept",
-                    dispatchesAgo, backend_.framesInFlight());
-    if (dispatchesAgo >= dispatchCount_)
-        return fail(FFX_DOF_ERROR_INVALID_ARGUMENT, "dispatchesAgo %u: the context has recorded %llu dispatches",
-                    dispatchesAgo, static_cast<unsigned long long>(dispatchCount_));
-    const uint64_t index = dispatchCount_ - 1 - dispatchesAgo;
-    const size_t slot = static_cast<size_t>(index % readbackDispatch_.size());
-    if (readbackDispatch_[slot] != index + 1)
-        return fail(FFX_DOF_ERROR_INVALID_ARGUMENT, "the dispatch %u before the latest did not run autofocus",
-                    dispatchesAgo);
-    *distance = std::fabs(readbackValues_[slot]);
-    return FFX_DOF_OK;
+    return readbackRing_.read(dispatchesAgo, readbackValues_, distance);
 }
 
 void Context::writeSrv(ID3D12Resource* resource, DXGI_FORMAT format, UINT mipLevels,
@@ -451,13 +435,9 @@ FfxDofErrorCode Context::dispatch(const DispatchPlan& plan) {
     }
     tracker.restore();
     tracker.flush(list);
-    const uint32_t readbackSlot = static_cast<uint32_t>(dispatchCount_ % readbackDispatch_.size());
-    readbackDispatch_[readbackSlot] = 0;
-    if (plan.runs[static_cast<uint32_t>(Pass::Autofocus)]) {
-        recordFocusReadback(list, readbackSlot);
-        readbackDispatch_[readbackSlot] = dispatchCount_ + 1;
-    }
-    ++dispatchCount_;
+    const bool ranAutofocus = plan.runs[static_cast<uint32_t>(Pass::Autofocus)];
+    const uint32_t readbackSlot = readbackRing_.record(ranAutofocus);
+    if (ranAutofocus) recordFocusReadback(list, readbackSlot);
     return FFX_DOF_OK;
 }
 

@@ -159,8 +159,7 @@ FfxDofErrorCode ContextVK::createGlobals() {
 FfxDofErrorCode ContextVK::createReadback() {
     const Functions& fn = backend_.fn;
     const VkDevice device = backend_.device;
-    const uint32_t slots = backend_.framesInFlight + 1;
-    readbackDispatch_.assign(slots, 0);
+    const uint32_t slots = readbackRing_.slotCount();
     auto bufferInfo = makeInfo<VkBufferCreateInfo>(VK_STRUCTURE_TYPE_BUFFER_CREATE_INFO);
     bufferInfo.size = slots * sizeof(float);
     bufferInfo.usage = VK_BUFFER_USAGE_TRANSFER_DST_BIT;

@@ -2,6 +2,7 @@
 // sets per frame in flight, the cache of engine-image views, and the recording of a dispatch.
 #pragma once
 
+#include "ffx_dof_readback_ring.h"
 #include "ffx_dof_vk_backend.h"
 #include "ffx_dof_vk_engine_images.h"
 
@@ -13,7 +14,7 @@ namespace ffxdof::vk {
 class ContextVK final : public BackendContext {
 public:
     ContextVK(BackendVK& backend, const ContextPlan& plan)
-        : backend_(backend), plan_(plan), formats_(backend), views_(backend) {}
+        : backend_(backend), plan_(plan), readbackRing_(backend.framesInFlight), formats_(backend), views_(backend) {}
     ~ContextVK() override;
 
     FfxDofErrorCode create();
@@ -56,7 +57,7 @@ private:
     void recordInternalBarrier(VkCommandBuffer commandBuffer) const;
     void recordEngineBarriers(VkCommandBuffer commandBuffer, const EngineImages& images, bool toEffect,
                               bool outputIsColor) const;
-    void recordFocusReadback(VkCommandBuffer commandBuffer);
+    void recordFocusReadback(VkCommandBuffer commandBuffer, uint32_t slot) const;
 
     BackendVK& backend_;
     const ContextPlan& plan_;
@@ -65,12 +66,12 @@ private:
     VkBuffer globals_ = VK_NULL_HANDLE;
     VkDeviceMemory globalsMemory_ = VK_NULL_HANDLE;
     FfxDofMemoryUsage memoryUsage_{};
-    // The focus distance of the last maxFramesInFlight + 1 dispatches, copied from GLOBALS for
-    // ffxDofContextGetAutofocusDistance: host-visible, mapped; slot = dispatch index % slots.
+    // The focus distances of the last autofocus dispatches, copied from GLOBALS for
+    // ffxDofContextGetAutofocusDistance: host-visible, mapped, one float per slot of the ring.
+    AutofocusReadbackRing readbackRing_;
     VkBuffer readback_ = VK_NULL_HANDLE;
     VkDeviceMemory readbackMemory_ = VK_NULL_HANDLE;
     const float* readbackValues_ = nullptr;
-    std::vector<uint64_t> readbackDispatch_;  // per slot: 1 + the dispatch index that wrote it, 0: none
 
     std::array<VkDescriptorSetLayout, kPassCount> setLayouts_{};
     std::array<VkPipelineLayout, kPassCount> pipelineLayouts_{};

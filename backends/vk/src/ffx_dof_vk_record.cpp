@@ -3,7 +3,6 @@
 #include "ffx_dof_vk_context.h"
 
 #include <algorithm>
-#include <cmath>
 
 namespace ffxdof::vk {
 namespace {
@@ -208,17 +207,14 @@ FfxDofErrorCode ContextVK::dispatch(const DispatchPlan& dispatch) {
         }
     }
     recordEngineBarriers(commandBuffer, images, false, dispatch.outputIsColor);
-    const uint32_t readbackSlot = uint32_t(dispatchCount_ % readbackDispatch_.size());
-    readbackDispatch_[readbackSlot] = 0;
-    if (dispatch.runs[uint32_t(Pass::Autofocus)]) {
-        recordFocusReadback(commandBuffer);
-        readbackDispatch_[readbackSlot] = dispatchCount_ + 1;
-    }
+    const bool ranAutofocus = dispatch.runs[uint32_t(Pass::Autofocus)];
+    const uint32_t readbackSlot = readbackRing_.record(ranAutofocus);
+    if (ranAutofocus) recordFocusReadback(commandBuffer, readbackSlot);
     ++dispatchCount_;
     return FFX_DOF_OK;
 }
 
-void ContextVK::recordFocusReadback(VkCommandBuffer commandBuffer) {
+void ContextVK::recordFocusReadback(VkCommandBuffer commandBuffer, uint32_t slot) const {
     // After every pass: the focus word is final once the autofocus pass ran, and the copy then
     // needs no barrier against the later passes' GLOBALS atomics.
     const Functions& fn = backend_.fn;
@@ -227,7 +223,6 @@ void ContextVK::recordFocusReadback(VkCommandBuffer commandBuffer) {
     written.dstAccessMask = VK_ACCESS_TRANSFER_READ_BIT;
     fn.vkCmdPipelineBarrier(commandBuffer, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT, 0, 1,
                             &written, 0, nullptr, 0, nullptr);
-    const uint32_t slot = uint32_t(dispatchCount_ % readbackDispatch_.size());
     const VkBufferCopy region{FFX_DOF_GLOBALS_FOCUS_DISTANCE * sizeof(uint32_t), slot * sizeof(float), sizeof(float)};
     fn.vkCmdCopyBuffer(commandBuffer, globals_, readback_, 1, &region);
     auto toHost = makeInfo<VkMemoryBarrier>(VK_STRUCTURE_TYPE_MEMORY_BARRIER);
@@ -238,22 +233,7 @@ void ContextVK::recordFocusReadback(VkCommandBuffer commandBuffer) {
 }
 
 FfxDofErrorCode ContextVK::autofocusDistance(uint32_t dispatchesAgo, float* distance) const {
-    if (dispatchesAgo > backend_.framesInFlight) {
-        return fail(FFX_DOF_ERROR_INVALID_ARGUMENT, "dispatchesAgo %u: only the last maxFramesInFlight (%u) are kept",
-                    dispatchesAgo, backend_.framesInFlight);
-    }
-    if (dispatchesAgo >= dispatchCount_) {
-        return fail(FFX_DOF_ERROR_INVALID_ARGUMENT, "dispatchesAgo %u: the context has recorded %llu dispatches",
-                    dispatchesAgo, static_cast<unsigned long long>(dispatchCount_));
-    }
-    const uint64_t index = dispatchCount_ - 1 - dispatchesAgo;
-    const size_t slot = size_t(index % readbackDispatch_.size());
-    if (readbackDispatch_[slot] != index + 1) {
-        return fail(FFX_DOF_ERROR_INVALID_ARGUMENT, "the dispatch %u before the latest did not run autofocus",
-                    dispatchesAgo);
-    }
-    *distance = std::fabs(readbackValues_[slot]);
-    return FFX_DOF_OK;
+    return readbackRing_.read(dispatchesAgo, readbackValues_, distance);
 }
 
 }  // namespace ffxdof::vk
