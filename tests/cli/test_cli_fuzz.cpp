@@ -104,11 +104,15 @@ TEST_CASE("fuzz: mutated EXR files and option values never crash, touch the outp
     const std::string colorBytes = readBytes(folder / "color.exr");
     const std::string depthBytes = readBytes(folder / "depth.exr");
 
-    const std::vector<std::string> numericOptions = {"--focus",   "--fstop",     "--focal-length", "--sensor-width",
-                                                     "--quality", "--coc-limit", "--device",       "--aperture-radius"};
+    const std::vector<std::string> numericOptions = {
+        "--focus",     "--fstop",  "--focal-length",    "--sensor-width", "--quality",
+        "--coc-limit", "--device", "--aperture-radius", "--autofocus",    "--focus-region"};
     const std::vector<std::string> values = {"",       "nan", "inf",    "-inf",        "1e300", "-1", "0",
                                              "1e-300", "abc", "3.5e38", "99999999999", "-0",    " 1", "1e-42",
                                              "0x10",   "2,3", "33",     "2.5",         "1e-3",  "1e5"};
+    // --autofocus takes a point X,Y: well-formed, malformed and out of range.
+    const std::vector<std::string> points = {"0.5,0.5",   "0,0",     "1,1",   "0.3,0.8", "",        "0.5",  "a,b",
+                                             "0.5,0.5,1", "nan,0.5", "2,0.5", "-0.1,1",  "1e300,0", ",0.5", "0.5, 0.5"};
 
     std::mt19937 random(20240613u);  // fixed: every run mutates the same way
     const auto pick = [&](size_t limit) { return std::uniform_int_distribution<size_t>(0, limit - 1)(random); };
@@ -123,7 +127,7 @@ TEST_CASE("fuzz: mutated EXR files and option values never crash, touch the outp
         std::string option, value;
         if (what >= 2) {
             option = numericOptions[pick(numericOptions.size())];
-            value = values[pick(values.size())];
+            value = option == "--autofocus" ? points[pick(points.size())] : values[pick(values.size())];
         }
         // Half the runs replace an existing output, which must then survive any failure byte for byte.
         const bool existingOutput = pick(2) == 0;
@@ -133,8 +137,12 @@ TEST_CASE("fuzz: mutated EXR files and option values never crash, touch the outp
         std::string arguments = "apply --color " + quote((folder / "c.exr").string()) + " --depth " +
                                 quote((folder / "d.exr").string()) + " --out " + quote((folder / "out.exr").string()) +
                                 " --sensor-width 4 --quality 3";
+        // Autofocus replaces --focus; a region goes with an autofocus point.
+        const bool autofocus = option == "--autofocus" || option == "--focus-region";
+        if (option == "--focus-region") arguments += " --autofocus 0.5,0.5";
         for (const auto& [name, standard] : {std::pair<std::string, std::string>{"--focus", "2"}, {"--fstop", "2"}}) {
-            if (option != name && !(option == "--aperture-radius" && name == "--fstop")) {
+            if (option != name && !(option == "--aperture-radius" && name == "--fstop") &&
+                !(autofocus && name == "--focus")) {
                 arguments += " " + name + " " + standard;
             }
         }
