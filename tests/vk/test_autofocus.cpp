@@ -191,6 +191,7 @@ TEST_CASE("a step change converges as the time constant says and a reset jumps",
     FfxDofAutofocus autofocus = autofocusAt(0.5f, 0.5f, 0.2f, camera);
     autofocus.timeConstant = 0.5f;
     autofocus.deltaTime = 0.1f;
+    // One dispatch, submitted and waited for; with autofocus, the distance it chose (0 without).
     const auto dispatchWith = [&](const vkrun::GpuImage& depth, const FfxDofAutofocus* focus) {
         FfxDofDispatchDescription d{};
         d.color = ffxDofGetResourceVK(color.image(), color.format(), kWidth, kHeight,
@@ -205,7 +206,7 @@ TEST_CASE("a step change converges as the time constant says and a reset jumps",
         device.endSubmitAndWait(commandBuffer);
         REQUIRE(code == FFX_DOF_OK);
         float distance = 0.0f;
-        REQUIRE(ffxDofContextGetAutofocusDistance(&context, 0, &distance) == FFX_DOF_OK);
+        if (focus) REQUIRE(ffxDofContextGetAutofocusDistance(&context, 0, &distance) == FFX_DOF_OK);
         return distance;
     };
 
@@ -229,16 +230,7 @@ TEST_CASE("a step change converges as the time constant says and a reset jumps",
     CHECK(previous > 2.5f);
     CHECK(ffxDofContextGetAutofocusDistance(&context, 3, &previous) == FFX_DOF_ERROR_INVALID_ARGUMENT);
     CHECK(ffxDofContextGetAutofocusDistance(&context, 0, nullptr) == FFX_DOF_ERROR_INVALID_POINTER);
-    FfxDofDispatchDescription manual{};
-    manual.color = ffxDofGetResourceVK(color.image(), color.format(), kWidth, kHeight,
-                                       VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, 0);
-    manual.depth = ffxDofGetResourceVK(nearDepth.image(), nearDepth.format(), kWidth, kHeight,
-                                       VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, 0);
-    manual.output = ffxDofGetResourceVK(output.image(), output.format(), kWidth, kHeight, VK_IMAGE_LAYOUT_GENERAL, 0);
-    VkCommandBuffer commandBuffer = device.beginCommands();
-    manual.commandList = ffxDofGetCommandListVK(commandBuffer);
-    REQUIRE(ffxDofContextDispatch(&context, &manual) == FFX_DOF_OK);
-    device.endSubmitAndWait(commandBuffer);
+    dispatchWith(nearDepth, nullptr);  // manual focus
     CHECK(ffxDofContextGetAutofocusDistance(&context, 0, &previous) == FFX_DOF_ERROR_INVALID_ARGUMENT);
     CHECK(std::string(ffxDofGetLastErrorMessage()).find("did not run autofocus") != std::string::npos);
     CHECK(ffxDofContextGetAutofocusDistance(&context, 1, &previous) == FFX_DOF_OK);
