@@ -138,6 +138,7 @@ struct FfxDofAnnulusBorder
     FfxFloat32 radius;      // in blocks
     FfxFloat32 spanCenter;  // origin.x in blocks, less half a block (ffxDofTexelSpan's centre - 0.5)
     FfxFloat32 rowOffset;   // half a block less origin.y, in blocks
+    FfxFloat32 widthScale;  // row width over height: the inverse anamorphic ratio
 };
 struct FfxDofAnnulus
 {
@@ -159,7 +160,8 @@ struct FfxDofAnnulusWalk
 // A border of `radius` around `origin` judged in blocks of `block` texels. The block figures are the
 // ones the coarse walk computes for itself (scaling by a power of two is exact), so the two walks
 // agree to the bit on every block.
-FFX_DOF_INLINE FfxDofAnnulusBorder ffxDofMakeAnnulusBorder(FfxFloat32x2 origin, FfxFloat32 radius, FfxFloat32 block)
+FFX_DOF_INLINE FfxDofAnnulusBorder ffxDofMakeAnnulusBorder(FfxFloat32x2 origin, FfxFloat32 radius, FfxFloat32 block,
+                                                           FfxFloat32 widthScale)
 {
     FfxDofAnnulusBorder border;
     border.block = block;
@@ -167,6 +169,7 @@ FFX_DOF_INLINE FfxDofAnnulusBorder ffxDofMakeAnnulusBorder(FfxFloat32x2 origin, 
     border.radius = radius * border.scale;
     border.spanCenter = origin.x * border.scale - 0.5f;
     border.rowOffset = 0.5f - origin.y * border.scale;
+    border.widthScale = widthScale;
     return border;
 }
 
@@ -176,19 +179,19 @@ FFX_DOF_INLINE FfxDofAnnulusBorder ffxDofMakeAnnulusBorder(FfxFloat32x2 origin, 
 FFX_DOF_INLINE FfxFloat32x2 ffxDofBorderSpan(FfxDofAnnulusBorder border, FfxFloat32 y)
 {
     FfxFloat32 dy = floor(y * border.scale) + border.rowOffset;
-    FfxFloat32 halfWidth = ffxDofKernelRowHalfWidth(border.radius, dy);
+    FfxFloat32 halfWidth = ffxDofKernelRowHalfWidth(border.radius, dy, border.widthScale);
     FfxFloat32 first = floor(border.spanCenter - halfWidth) + 1.0f;
     FfxFloat32 last = ceil(border.spanCenter + halfWidth) - 1.0f;
     return FfxFloat32x2(first * border.block, last * border.block + border.block - 1.0f);
 }
 
 FFX_DOF_INLINE FfxDofAnnulus ffxDofMakeAnnulus(FfxFloat32x2 origin, FfxFloat32 innerRadius, FfxFloat32 outerRadius,
-                                               FfxFloat32 innerBlock, FfxFloat32 outerBlock)
+                                               FfxFloat32 innerBlock, FfxFloat32 outerBlock, FfxFloat32 widthScale)
 {
     FfxDofAnnulus annulus;
     annulus.origin = origin;
-    annulus.inner = ffxDofMakeAnnulusBorder(origin, innerRadius, innerBlock);
-    annulus.outer = ffxDofMakeAnnulusBorder(origin, outerRadius, outerBlock);
+    annulus.inner = ffxDofMakeAnnulusBorder(origin, innerRadius, innerBlock, widthScale);
+    annulus.outer = ffxDofMakeAnnulusBorder(origin, outerRadius, outerBlock, widthScale);
     FfxFloat32x2 rows = ffxDofTexelSpan(origin.y * annulus.outer.scale, outerRadius * annulus.outer.scale);
     annulus.firstRow = rows.x * outerBlock;
     annulus.lastRow = rows.y * outerBlock + outerBlock - 1.0f;
@@ -293,10 +296,6 @@ FFX_DOF_INLINE FfxFloat32 ffxDofReach(FfxFloat32 absRadius, FfxFloat32 distance)
     return ffxDofSaturate(absRadius - distance + 0.5f);
 }
 
-// A sample spreads its energy over its disc: weight proportional to the inverse disc area,
-// normalized so that a radius of half a pixel or less weighs 4.
-FFX_DOF_INLINE FfxFloat32 ffxDofAreaWeight(FfxFloat32 absRadius) { return 1.0f / max(absRadius * absRadius, 0.25f); }
-
 // A weighted sum of far-field samples.
 struct FfxDofBucket
 {
@@ -338,7 +337,7 @@ FFX_DOF_INLINE FfxBoolean ffxDofComposeFarLayers(FfxDofBucket front, FfxDofBucke
         color = front.color / front.weight;
         return true;
     }
-    FfxFloat32 frontOpacity = ffxDofSaturate(front.weight * (1.0f / 3.14159265359f));
+    FfxFloat32 frontOpacity = ffxDofSaturate(front.weight * (1.0f / FFX_DOF_PI));
     FfxFloat32x3 frontColor = front.weight > 0.0f ? front.color / front.weight : FfxFloat32x3(0.0f, 0.0f, 0.0f);
     color = frontColor * frontOpacity + (back.color / back.weight) * (1.0f - frontOpacity);
     return true;
@@ -350,7 +349,7 @@ FFX_DOF_INLINE FfxBoolean ffxDofComposeFarLayers(FfxDofBucket front, FfxDofBucke
 // solid near region of the kernel's radius R sums to pi R^2 / R^2 = pi, opacity 1.
 FFX_DOF_INLINE FfxFloat32 ffxDofNearOpacity(FfxFloat32 nearWeight)
 {
-    return ffxDofSaturate(nearWeight * (1.0f / 3.14159265359f));
+    return ffxDofSaturate(nearWeight * (1.0f / FFX_DOF_PI));
 }
 
 struct FfxDofBlurResult
@@ -382,6 +381,7 @@ struct FfxDofKernel
     FfxUInt32 baseMip;
     FfxUInt32 rings;
     FfxBoolean centerIsNear;
+    FfxDofPixelAperture aperture;  // the bokeh shape this texel sees
 };
 
 // Which parts of the gather a tile class needs; literals at every call, so what a path leaves out
@@ -425,8 +425,8 @@ FFX_DOF_INLINE void ffxDofGatherRing(FFX_DOF_INOUT(FfxDofGather) gather, FfxDofK
     FfxFloat32 outerRadius = ffxDofRingInnerRadius(lastRing + 1u, spacing);
     FfxFloat32 innerBlock = FfxFloat32(1u << (innerBorderMip - mip));
     FfxFloat32 outerBlock = FfxFloat32(1u << (outerBorderMip - mip));
-    FfxDofAnnulus annulus =
-        ffxDofMakeAnnulus(kernel.origin * mipScale, innerRadius, outerRadius, innerBlock, outerBlock);
+    FfxDofAnnulus annulus = ffxDofMakeAnnulus(kernel.origin * mipScale, innerRadius, outerRadius, innerBlock,
+                                              outerBlock, 1.0f / kernel.aperture.anamorphicRatio);
     FfxDofAnnulusWalk walk = ffxDofAnnulusBegin(annulus);
     FFX_DOF_LOOP
     while (ffxDofAnnulusRowsLeft(annulus, walk))
@@ -443,13 +443,14 @@ FFX_DOF_INLINE void ffxDofGatherRing(FFX_DOF_INOUT(FfxDofGather) gather, FfxDofK
         // Reach is judged from the centre of the texel actually read (at the image border, the
         // clamped one).
         FfxFloat32x2 toTexel = sampleTexel - centerToCorner;
-        FfxFloat32 distance = sqrt(dot(toTexel, toTexel)) * texelSize;
+        FfxBoolean nearSample = coc >= FFX_DOF_NEAR_THRESHOLD;
+        FfxFloat32 distance = ffxDofApertureDistance(kernel.aperture, toTexel, nearSample) * texelSize;
         // Near and far samples weigh alike (reach times inverse area).
         FfxFloat32 absCoc = abs(coc);
         FfxFloat32 reach = ffxDofReach(absCoc, distance);
         reach *= valid;
-        FfxFloat32 weight = reach * ffxDofAreaWeight(absCoc) * sampleWeight;
-        FfxFloat32 farShare = coc >= FFX_DOF_NEAR_THRESHOLD ? 0.0f : valid;
+        FfxFloat32 weight = reach * ffxDofApertureAreaWeight(kernel.aperture, absCoc) * sampleWeight;
+        FfxFloat32 farShare = nearSample ? 0.0f : valid;
         if (!parts.nearField)
             farShare = valid;
         if (!parts.farField)
@@ -546,7 +547,8 @@ FFX_DOF_INLINE FfxDofBlurResult ffxDofFinishGather(FfxDofGather gather, FfxDofKe
         result.alpha.x = ffxDofNearOpacity(gather.nearWeight);
     }
     // The hole fill is background to the near texel it fills.
-    FfxFloat32 fillWeight = kernel.centerIsNear ? ffxDofAreaWeight(abs(kernel.centerCoc)) : 0.0f;
+    FfxFloat32 fillWeight =
+        kernel.centerIsNear ? ffxDofApertureAreaWeight(kernel.aperture, abs(kernel.centerCoc)) : 0.0f;
     FfxDofBucket back = gather.farBack;
     back.color += gather.fillSum * fillWeight;
     back.weight += gather.fillCount * fillWeight;
@@ -612,8 +614,9 @@ FFX_DOF_INLINE FfxDofBlurResult ffxDofBlurTexel(FfxUInt32x2 texel, FfxFloat32x4 
 
     kernel.centerIsNear = kernel.centerCoc >= FFX_DOF_NEAR_THRESHOLD;
     kernel.spacing = kernelRadius / FfxFloat32(kernel.rings);
-    kernel.baseMip = FfxUInt32(ffxDofMipForSpacing(kernel.spacing));
+    kernel.baseMip = FfxUInt32(ffxDofMipForSpacing(kernel.spacing * ffxDofApertureRingSpacingScale(constants)));
     kernel.center = FfxFloat32x2(texel) + FfxFloat32x2(0.5f, 0.5f);
+    kernel.aperture = ffxDofMakeAperture(constants, kernel.center, FfxFloat32x2(constants.halfSize));
     kernel.origin = kernel.center + ffxDofKernelJitter(texel, constants.frameIndex);
 
     FfxDofGather gather;

@@ -10,6 +10,7 @@
 #include "ffx_dof_portability.h"
 #include "ffx_dof_constants.h"
 #include "ffx_dof_resources.h"
+#include "ffx_dof_aperture.h"
 
 // ---- Options (every one can be overridden with -D; the permutation axes are listed in
 // ffx_dof_permutations.json) --------------------------------------------------------------------
@@ -165,17 +166,6 @@ FFX_DOF_INLINE FfxFloat32 ffxDofMedian9(FfxFloat32 p0, FfxFloat32 p1, FfxFloat32
     ffxDofSort2(p4, p2);
     p4 = max(p6, p4);
     return min(p4, p2);
-}
-
-// ---- Kernel shape: the only function that knows it is circular ---------------------------------
-
-// Half the width of the kernel's row `dy` from its centre, for a kernel of `radius` (same units): a
-// texel is in the kernel when its centre lies less than this far from the centre horizontally.
-// The blur's ring walk (ffxDofBorderSpan) asks it for every row, so another bokeh shape replaces this
-// function (the row of a convex polygon is one interval too).
-FFX_DOF_INLINE FfxFloat32 ffxDofKernelRowHalfWidth(FfxFloat32 radius, FfxFloat32 dy)
-{
-    return sqrt(max(radius * radius - dy * dy, 0.0f));
 }
 
 // ---- Output encoding (the callback headers' output accessors) ---------------------------------------

@@ -14,13 +14,15 @@ struct FfxDofConstants
 {
     FfxFloat32 cocScale;  // radius (half-res px) = depth * cocScale + cocBias
     FfxFloat32 cocBias;
-    FfxFloat32 cocLimit;         // largest |radius|, half-res px (cocLimitFactor * height / 2)
-    FfxUInt32 maxRings;          // quality: upper bound on kernel rings
-    FfxUInt32x2 fullSize;        // input/output size, px
-    FfxUInt32x2 halfSize;        // size of MIP 0 of the half-resolution images: ceil(fullSize / 2)
-    FfxUInt32x2 tileCount;       // tiles of FFX_DOF_TILE_SIZE x FFX_DOF_TILE_SIZE half-res px
-    FfxFloat32x2 halfTexelSize;  // 1 / halfSize
-    FfxFloat32x2 fullTexelSize;  // 1 / fullSize
+    FfxFloat32 cocLimit;    // largest |radius|, half-res px (cocLimitFactor * height / 2)
+    FfxUInt32 maxRings;     // quality: upper bound on kernel rings
+    FfxUInt32x2 fullSize;   // input/output size, px
+    FfxUInt32x2 halfSize;   // size of MIP 0 of the half-resolution images: ceil(fullSize / 2)
+    FfxUInt32x2 tileCount;  // tiles of FFX_DOF_TILE_SIZE x FFX_DOF_TILE_SIZE half-res px
+    // Aperture shape (ffx_dof_aperture.h); a circle: bladeCount 0, anamorphicRatio 1, catEye 0.
+    FfxFloat32x2 bladeNormal;    // the first blade side's normal (y up) over the blades' inradius
+    FfxUInt32 bladeCount;        // 0: round (no blades), else 3..16
+    FfxFloat32 anamorphicRatio;  // disc height over width
     FfxUInt32 frameIndex;        // increments every dispatch; seeds the kernel jitter
     FfxUInt32 outputFlags;       // FFX_DOF_OUTPUT_FLAG_* bits
     // Autofocus (ffx_dof_autofocus.h); ignored unless focusFlags has FFX_DOF_FOCUS_FLAG_AUTO.
@@ -30,10 +32,12 @@ struct FfxDofConstants
     FfxFloat32 focusInvZBias;        // p33 / p34
     FfxFloat32 focusLensFactor;      // aperture * focalLength * conversion (sensor units -> half-res px)
     FfxFloat32 focusFocalLength;
-    FfxFloat32 focusMinDistance;  // nearest focus, signed like view z in front of the camera
-    FfxFloat32 focusMaxDistance;  // farthest focus, likewise
-    FfxFloat32 focusBlend;        // 1 - exp(-deltaTime / timeConstant): the share of the new distance
-    FfxUInt32 focusFlags;         // FFX_DOF_FOCUS_FLAG_* bits
+    FfxFloat32 focusMinDistance;   // nearest focus, signed like view z in front of the camera
+    FfxFloat32 focusMaxDistance;   // farthest focus, likewise
+    FfxFloat32 focusBlend;         // 1 - exp(-deltaTime / timeConstant): the share of the new distance
+    FfxUInt32 focusFlags;          // FFX_DOF_FOCUS_FLAG_* bits
+    FfxFloat32 catEye;             // optical vignetting: 0 off, 1 the strongest
+    FfxFloat32 apertureAreaScale;  // pi / area of the unit shape (before cat's eye) * anamorphicRatio
 };
 
 // Bits of FfxDofConstants::outputFlags.
@@ -44,18 +48,21 @@ struct FfxDofConstants
 #define FFX_DOF_FOCUS_FLAG_RESET 2u  // autofocus ignores the previous distance (a camera cut)
 
 #if defined(FFX_CPU)
-static_assert(sizeof(FfxDofConstants) == 112, "FfxDofConstants layout changed: update the offset checks");
+static_assert(sizeof(FfxDofConstants) == 120, "FfxDofConstants layout changed: update the offset checks");
 static_assert(offsetof(FfxDofConstants, fullSize) == 16, "FfxDofConstants::fullSize offset");
 static_assert(offsetof(FfxDofConstants, halfSize) == 24, "FfxDofConstants::halfSize offset");
 static_assert(offsetof(FfxDofConstants, tileCount) == 32, "FfxDofConstants::tileCount offset");
-static_assert(offsetof(FfxDofConstants, halfTexelSize) == 40, "FfxDofConstants::halfTexelSize offset");
-static_assert(offsetof(FfxDofConstants, fullTexelSize) == 48, "FfxDofConstants::fullTexelSize offset");
+static_assert(offsetof(FfxDofConstants, bladeNormal) == 40, "FfxDofConstants::bladeNormal offset");
+static_assert(offsetof(FfxDofConstants, bladeCount) == 48, "FfxDofConstants::bladeCount offset");
+static_assert(offsetof(FfxDofConstants, anamorphicRatio) == 52, "FfxDofConstants::anamorphicRatio offset");
 static_assert(offsetof(FfxDofConstants, frameIndex) == 56, "FfxDofConstants::frameIndex offset");
 static_assert(offsetof(FfxDofConstants, outputFlags) == 60, "FfxDofConstants::outputFlags offset");
 static_assert(offsetof(FfxDofConstants, focusRegionCenter) == 64, "FfxDofConstants::focusRegionCenter offset");
 static_assert(offsetof(FfxDofConstants, focusRegionSize) == 72, "FfxDofConstants::focusRegionSize offset");
 static_assert(offsetof(FfxDofConstants, focusInvZScale) == 80, "FfxDofConstants::focusInvZScale offset");
 static_assert(offsetof(FfxDofConstants, focusFlags) == 108, "FfxDofConstants::focusFlags offset");
+static_assert(offsetof(FfxDofConstants, catEye) == 112, "FfxDofConstants::catEye offset");
+static_assert(offsetof(FfxDofConstants, apertureAreaScale) == 116, "FfxDofConstants::apertureAreaScale offset");
 #endif
 
 #endif  // FFX_DOF_CONSTANTS_H

@@ -71,7 +71,9 @@ FFX_DOF_INLINE void ffxDofTileWindow(FfxInt32x2 center, FfxInt32 range, FfxUInt3
 }
 
 // The dilated (far, near) range of `centerTile` given the radius every tile spreads.
-FFX_DOF_INLINE FfxFloat32x2 ffxDofDilateTile(FfxUInt32x2 centerTile, FfxUInt32x2 tileCount, FfxFloat32 globalMaxRadius)
+// `extent` (ffxDofApertureExtent): how far a disc reaches over its radius.
+FFX_DOF_INLINE FfxFloat32x2 ffxDofDilateTile(FfxUInt32x2 centerTile, FfxUInt32x2 tileCount, FfxFloat32 globalMaxRadius,
+                                             FfxFloat32 extent)
 {
     FfxFloat32x2 own = ffxDofLoadTile(centerTile);
     FfxFloat32 farCoc = own.x;
@@ -79,7 +81,7 @@ FFX_DOF_INLINE FfxFloat32x2 ffxDofDilateTile(FfxUInt32x2 centerTile, FfxUInt32x2
     FfxInt32x2 center = FfxInt32x2(centerTile);
     FfxInt32x2 first;
     FfxInt32x2 last;
-    ffxDofTileWindow(center, ffxDofDilateTileRange(globalMaxRadius), tileCount, first, last);
+    ffxDofTileWindow(center, ffxDofDilateTileRange(globalMaxRadius * extent), tileCount, first, last);
     FFX_DOF_LOOP
     for (FfxInt32 y = first.y; y <= last.y; ++y)
     {
@@ -88,9 +90,9 @@ FFX_DOF_INLINE FfxFloat32x2 ffxDofDilateTile(FfxUInt32x2 centerTile, FfxUInt32x2
         {
             FfxFloat32x2 tile = ffxDofLoadTile(FfxUInt32x2(FfxUInt32(x), FfxUInt32(y)));
             FfxFloat32 distance = ffxDofTileGapDistance(FfxInt32x2(x, y) - center);
-            if (ffxDofTileReaches(-tile.x, distance))
+            if (ffxDofTileReaches(-tile.x * extent, distance))
                 farCoc = min(farCoc, tile.x);
-            if (ffxDofTileReaches(tile.y, distance))
+            if (ffxDofTileReaches(tile.y * extent, distance))
                 nearCoc = max(nearCoc, tile.y);
         }
     }
@@ -130,8 +132,11 @@ FFX_DOF_INLINE void ffxDofDilate(FfxUInt32x2 groupId, FfxUInt32 localIndex)
     FfxUInt32x2 tile = groupId * FfxUInt32(FFX_DOF_DILATE_GROUP_EXTENT) + ffxDofLocalCoord(localIndex);
     if (tile.x >= constants.tileCount.x || tile.y >= constants.tileCount.y)
         return;
-    FfxFloat32x2 farNear = ffxDofDilateTile(tile, constants.tileCount, ffxDofLoadGlobalMaxRadius());
-    FfxFloat32 footprint = ffxDofKernelFootprintRadius(ffxDofTileKernelRadius(farNear), constants.maxRings);
+    // A shaped disc reaches at most its extent times its radius in any direction: the dilation and the
+    // footprint take that, a circle of the shape's largest extent.
+    FfxFloat32 extent = ffxDofApertureExtent(constants);
+    FfxFloat32x2 farNear = ffxDofDilateTile(tile, constants.tileCount, ffxDofLoadGlobalMaxRadius(), extent);
+    FfxFloat32 footprint = ffxDofKernelFootprintRadius(ffxDofTileKernelRadius(farNear) * extent, constants.maxRings);
     ffxDofStoreDilatedTile(tile, FfxFloat32x4(farNear, ffxDofFootprintRange(tile, constants.tileCount, footprint)));
 }
 

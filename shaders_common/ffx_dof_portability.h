@@ -208,6 +208,7 @@ typedef glm::vec4 FfxFloat16x4;
 
 // The shader built-ins the shared code calls unqualified.
 using glm::abs;
+using glm::acos;
 using glm::ceil;
 using glm::clamp;
 using glm::cos;

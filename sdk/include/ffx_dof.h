@@ -7,6 +7,9 @@
  * integration ports by changing its backend set-up and resource wrapping only:
  * see ffx_dof_vk.h and ffx_dof_dx12.h for those.
  *
+ * Version 2.1.0
+ *   - Aperture shapes: FfxDofDispatchDescription::pAperture (blades, rotation, roundness, anamorphic
+ *     ratio, cat's eye; docs/aperture.md). The dispatch description grew by one pointer: rebuild.
  * Version 2.0.0
  *   - Autofocus: FfxDofDispatchDescription::pAutofocus, ffxDofContextResetAutofocus,
  *     ffxDofContextGetAutofocusDistance (docs/autofocus.md).
@@ -28,7 +31,7 @@ extern "C" {
 #endif
 
 #define FFX_DOF_VERSION_MAJOR 2
-#define FFX_DOF_VERSION_MINOR 0
+#define FFX_DOF_VERSION_MINOR 1
 #define FFX_DOF_VERSION_PATCH 0
 
 /** Packs a version as FidelityFX does: major in bits 22..31, minor in 12..21, patch in 0..11. */
@@ -37,6 +40,11 @@ extern "C" {
 
 /** Highest accepted FfxDofContextDescription::quality (number of kernel sample rings). */
 #define FFX_DOF_MAX_QUALITY 32u
+
+/** Accepted ranges of FfxDofAperture's fields. */
+#define FFX_DOF_MAX_APERTURE_BLADES 16u
+#define FFX_DOF_MIN_ANAMORPHIC_RATIO 0.5f
+#define FFX_DOF_MAX_ANAMORPHIC_RATIO 2.0f
 
 /** Largest accepted width or height of the input and output images, in pixels. */
 #define FFX_DOF_MAX_RESOLUTION 16384u
@@ -143,6 +151,27 @@ typedef struct FfxDofAutofocus {
     float deltaTime;
 } FfxDofAutofocus;
 
+/** The shape of the aperture, and so of every bokeh disc (not in FidelityFX DoF 1.1, which renders
+ *  circles). The conventions follow Blender's camera: see docs/aperture.md. All zero but
+ *  anamorphicRatio = 1 is the circle, exactly as with pAperture = NULL. Zero-initialise, then set every
+ *  field. */
+typedef struct FfxDofAperture {
+    /** Number of aperture blades: 0 = round, or 3..16 (a polygon). */
+    uint32_t bladeCount;
+    /** Rotation of the blades, radians, counter-clockwise on screen: 0 puts flat sides left and right
+     *  (and, for an odd count, a flat side on the right). Any finite value. */
+    float bladeRotation;
+    /** 0 = straight blades (a regular polygon) .. 1 = a circle; between, the corners are rounded. */
+    float roundness;
+    /** Disc height over width, 0.5..2 (anamorphic lenses: 1.33 to 2). Above 1 the height stays the
+     *  CoC diameter and the width narrows; below 1 the disc widens. 1 = round. */
+    float anamorphicRatio;
+    /** Optical vignetting, 0..1: toward the frame's edges discs are clipped by a second disc into cat's
+     *  eyes (at 1, a frame corner keeps the lens-shaped intersection of two discs one radius apart).
+     *  0 = off. */
+    float catEye;
+} FfxDofAperture;
+
 /** Per-frame parameters. */
 typedef struct FfxDofDispatchDescription {
     /** The engine's command buffer, recording; the effect appends to it and never submits it. */
@@ -166,6 +195,9 @@ typedef struct FfxDofDispatchDescription {
     /** NULL: manual focus (cocScale / cocBias). Otherwise autofocus decides the focus on the GPU and
      *  cocScale / cocBias are ignored. Read during the call only. */
     const FfxDofAutofocus* pAutofocus;
+    /** NULL: a round aperture. Otherwise the aperture's shape for this dispatch (it may change every
+     *  frame at no cost). Read during the call only. */
+    const FfxDofAperture* pAperture;
 } FfxDofDispatchDescription;
 
 /** Internal GPU memory of a context. */

@@ -168,6 +168,10 @@ extern "C" FfxDofErrorCode ffxDofContextDispatch(FfxDofContext* pContext,
                     "impossible lenses: |focus| <= focalLength)",
                     static_cast<double>(desc.cocScale), static_cast<double>(desc.cocBias));
 
+    if (desc.pAperture != nullptr) {
+        if (const FfxDofErrorCode status = checkAperture(*desc.pAperture); status != FFX_DOF_OK) return status;
+    }
+
     try {
         const DispatchPlan dispatch = planDispatch(context->plan, desc, context->frameIndex, context->resetAutofocus);
         const FfxDofErrorCode status = context->impl->dispatch(dispatch);

@@ -4,6 +4,8 @@
 
 #include "ffx_dof_backend.h"
 
+#include "ffx_dof_aperture.h"
+
 #include <cmath>
 #include <cstring>
 #include <string>
@@ -134,9 +136,9 @@ FfxDofConstants contextConstants(const ContextConfig& config) {
     c.fullSize = {width, height};
     c.halfSize = {halfWidth, halfHeight};
     c.tileCount = {divideRoundingUp(halfWidth, FFX_DOF_TILE_SIZE), divideRoundingUp(halfHeight, FFX_DOF_TILE_SIZE)};
-    c.halfTexelSize = {1.0f / static_cast<float>(halfWidth), 1.0f / static_cast<float>(halfHeight)};
-    c.fullTexelSize = {1.0f / static_cast<float>(width), 1.0f / static_cast<float>(height)};
     c.outputFlags = 0;  // the backend adds FFX_DOF_OUTPUT_FLAG_ENCODE_SRGB where it writes through a UNORM view
+    const FfxDofAperture round{0, 0.0f, 0.0f, 1.0f, 0.0f};
+    setApertureConstants(round, &c);
     return c;
 }
 
@@ -234,6 +236,52 @@ FfxDofErrorCode checkAutofocus(const FfxDofAutofocus& a) {
     return FFX_DOF_OK;
 }
 
+FfxDofErrorCode checkAperture(const FfxDofAperture& a) {
+    const struct {
+        const char* name;
+        float value;
+    } fields[] = {{"bladeRotation", a.bladeRotation},
+                  {"roundness", a.roundness},
+                  {"anamorphicRatio", a.anamorphicRatio},
+                  {"catEye", a.catEye}};
+    for (const auto& field : fields) {
+        if (!std::isfinite(field.value))
+            return fail(FFX_DOF_ERROR_INVALID_ARGUMENT, "pAperture->%s is %g; it must be finite", field.name,
+                        double(field.value));
+    }
+    if (a.bladeCount != 0 && (a.bladeCount < 3 || a.bladeCount > FFX_DOF_MAX_APERTURE_BLADES))
+        return fail(FFX_DOF_ERROR_INVALID_ARGUMENT, "pAperture->bladeCount is %u; it must be 0 (round) or 3..%u",
+                    a.bladeCount, FFX_DOF_MAX_APERTURE_BLADES);
+    if (a.roundness < 0.0f || a.roundness > 1.0f)
+        return fail(FFX_DOF_ERROR_INVALID_ARGUMENT, "pAperture->roundness is %g; it must be in 0..1",
+                    double(a.roundness));
+    if (a.anamorphicRatio < FFX_DOF_MIN_ANAMORPHIC_RATIO || a.anamorphicRatio > FFX_DOF_MAX_ANAMORPHIC_RATIO)
+        return fail(FFX_DOF_ERROR_INVALID_ARGUMENT, "pAperture->anamorphicRatio is %g; it must be in %g..%g",
+                    double(a.anamorphicRatio), double(FFX_DOF_MIN_ANAMORPHIC_RATIO),
+                    double(FFX_DOF_MAX_ANAMORPHIC_RATIO));
+    if (a.catEye < 0.0f || a.catEye > 1.0f)
+        return fail(FFX_DOF_ERROR_INVALID_ARGUMENT, "pAperture->catEye is %g; it must be in 0..1", double(a.catEye));
+    return FFX_DOF_OK;
+}
+
+void setApertureConstants(const FfxDofAperture& a, FfxDofConstants* c) {
+    // Fully round blades are the circle: the blade loop is skipped rather than run to no effect.
+    const bool blades = a.bladeCount >= 3 && a.roundness < 1.0f;
+    float shapeArea = FFX_DOF_PI;
+    c->bladeCount = 0;
+    c->bladeNormal = {0.0f, 0.0f};
+    if (blades) {
+        const float inradius = ffxDofBladeInradius(a.bladeCount, a.roundness);
+        c->bladeCount = a.bladeCount;
+        c->bladeNormal = {std::cos(a.bladeRotation) / inradius, std::sin(a.bladeRotation) / inradius};
+        shapeArea = ffxDofBladeShapeArea(a.bladeCount, inradius);
+    }
+    c->anamorphicRatio = a.anamorphicRatio;
+    // The round disc's scale is the ratio itself, exactly (1 by default: the weights are unchanged).
+    c->apertureAreaScale = (blades ? FFX_DOF_PI / shapeArea : 1.0f) * a.anamorphicRatio;
+    c->catEye = a.catEye;
+}
+
 DispatchPlan planDispatch(const ContextPlan& plan, const FfxDofDispatchDescription& dispatch, uint32_t frameIndex,
                           bool resetAutofocus) {
     DispatchPlan out;
@@ -247,6 +295,7 @@ DispatchPlan planDispatch(const ContextPlan& plan, const FfxDofDispatchDescripti
     out.constants.cocBias = dispatch.cocBias;
     out.constants.frameIndex = frameIndex;
     for (uint32_t p = 0; p < kPassCount; ++p) out.runs[p] = Pass(p) != Pass::Autofocus;
+    if (dispatch.pAperture) setApertureConstants(*dispatch.pAperture, &out.constants);
     if (const FfxDofAutofocus* a = dispatch.pAutofocus) {
         out.runs[uint32_t(Pass::Autofocus)] = true;
         FfxDofConstants& c = out.constants;

@@ -101,6 +101,12 @@ struct DispatchPlan {
 // Checks an autofocus description; FFX_DOF_ERROR_INVALID_ARGUMENT naming the field otherwise.
 FfxDofErrorCode checkAutofocus(const FfxDofAutofocus& autofocus);
 
+// Checks an aperture description; FFX_DOF_ERROR_INVALID_ARGUMENT naming the field otherwise.
+FfxDofErrorCode checkAperture(const FfxDofAperture& aperture);
+// The aperture's constants (ffx_dof_aperture.h) for a checked description; the round aperture's
+// are contextConstants' defaults.
+void setApertureConstants(const FfxDofAperture& aperture, FfxDofConstants* constants);
+
 // The per-frame values added to the context's constants. resetAutofocus: autofocus ignores its
 // previous distance (ffxDofContextResetAutofocus).
 DispatchPlan planDispatch(const ContextPlan& plan, const FfxDofDispatchDescription& dispatch, uint32_t frameIndex,

@@ -32,7 +32,7 @@ struct Fixture {
     FfxDofContext context = nullptr;
     int commandListStorage = 0;
     FfxDofDispatchDescription dispatch{
-        &commandListStorage, image(kColor), image(kDepth), image(kOutput), -2.0f, 1.0f, nullptr};
+        &commandListStorage, image(kColor), image(kDepth), image(kOutput), -2.0f, 1.0f, nullptr, nullptr};
 
     FfxDofErrorCode create() { return ffxDofContextCreate(&context, &description); }
 };
@@ -252,8 +252,8 @@ TEST_CASE("every error code has its own description") {
     CHECK(std::string(ffxDofGetErrorString(static_cast<FfxDofErrorCode>(-999))) == "unknown error code");
 }
 
-TEST_CASE("the version is 2.0.0 packed as FidelityFX packs it") {
-    CHECK(ffxDofGetEffectVersion() == ((2u << 22) | (0u << 12) | 0u));
+TEST_CASE("the version is 2.1.0 packed as FidelityFX packs it") {
+    CHECK(ffxDofGetEffectVersion() == ((2u << 22) | (1u << 12) | 0u));
 }
 
 namespace {

@@ -97,8 +97,9 @@ TEST_CASE("push constants are laid out like FfxDofConstants", "[passes][reflecti
         {"fullSize", offsetof(FfxDofConstants, fullSize)},
         {"halfSize", offsetof(FfxDofConstants, halfSize)},
         {"tileCount", offsetof(FfxDofConstants, tileCount)},
-        {"halfTexelSize", offsetof(FfxDofConstants, halfTexelSize)},
-        {"fullTexelSize", offsetof(FfxDofConstants, fullTexelSize)},
+        {"bladeNormal", offsetof(FfxDofConstants, bladeNormal)},
+        {"bladeCount", offsetof(FfxDofConstants, bladeCount)},
+        {"anamorphicRatio", offsetof(FfxDofConstants, anamorphicRatio)},
         {"frameIndex", offsetof(FfxDofConstants, frameIndex)},
         {"outputFlags", offsetof(FfxDofConstants, outputFlags)},
         {"focusRegionCenter", offsetof(FfxDofConstants, focusRegionCenter)},
@@ -111,6 +112,8 @@ TEST_CASE("push constants are laid out like FfxDofConstants", "[passes][reflecti
         {"focusMaxDistance", offsetof(FfxDofConstants, focusMaxDistance)},
         {"focusBlend", offsetof(FfxDofConstants, focusBlend)},
         {"focusFlags", offsetof(FfxDofConstants, focusFlags)},
+        {"catEye", offsetof(FfxDofConstants, catEye)},
+        {"apertureAreaScale", offsetof(FfxDofConstants, apertureAreaScale)},
     };
     for (const char* language : {"glsl", "hlsl"}) {
         const nlohmann::json json = permutationsJson();

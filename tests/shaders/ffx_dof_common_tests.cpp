@@ -145,7 +145,7 @@ namespace {
 // The texels a walk of the annulus visits, in order; fails on a runaway walk.
 std::vector<std::pair<int, int>> walkAnnulus(FfxFloat32x2 origin, float innerRadius, float outerRadius,
                                              float innerBlock = 1.0f, float outerBlock = 1.0f) {
-    const FfxDofAnnulus annulus = ffxDofMakeAnnulus(origin, innerRadius, outerRadius, innerBlock, outerBlock);
+    const FfxDofAnnulus annulus = ffxDofMakeAnnulus(origin, innerRadius, outerRadius, innerBlock, outerBlock, 1.0f);
     std::vector<std::pair<int, int>> texels;
     int steps = 0;
     for (FfxDofAnnulusWalk walk = ffxDofAnnulusBegin(annulus); ffxDofAnnulusRowsLeft(annulus, walk);
@@ -193,13 +193,14 @@ TEST_CASE("Walks at two MIPs sharing a border judged by the coarse texels read e
     }
 }
 
-TEST_CASE("Kernel row half-width is the circle's", "[kernel]") {
-    CHECK(ffxDofKernelRowHalfWidth(5.0f, 0.0f) == 5.0f);
-    CHECK(ffxDofKernelRowHalfWidth(5.0f, 3.0f) == Approx(4.0f));
-    CHECK(ffxDofKernelRowHalfWidth(5.0f, -4.0f) == Approx(3.0f));
-    CHECK(ffxDofKernelRowHalfWidth(5.0f, 5.0f) == 0.0f);
-    CHECK(ffxDofKernelRowHalfWidth(5.0f, 7.0f) == 0.0f);  // outside: no row, not NaN
-    CHECK(ffxDofKernelRowHalfWidth(0.0f, 0.0f) == 0.0f);
+TEST_CASE("Kernel row half-width is the circle's or the anamorphic ellipse's", "[kernel]") {
+    CHECK(ffxDofKernelRowHalfWidth(5.0f, 0.0f, 1.0f) == 5.0f);
+    CHECK(ffxDofKernelRowHalfWidth(5.0f, 3.0f, 1.0f) == Approx(4.0f));
+    CHECK(ffxDofKernelRowHalfWidth(5.0f, -4.0f, 1.0f) == Approx(3.0f));
+    CHECK(ffxDofKernelRowHalfWidth(5.0f, 5.0f, 1.0f) == 0.0f);
+    CHECK(ffxDofKernelRowHalfWidth(5.0f, 7.0f, 1.0f) == 0.0f);  // outside: no row, not NaN
+    CHECK(ffxDofKernelRowHalfWidth(0.0f, 0.0f, 1.0f) == 0.0f);
+    CHECK(ffxDofKernelRowHalfWidth(5.0f, 3.0f, 0.5f) == Approx(2.0f));  // ratio 2: half as wide
 }
 
 TEST_CASE("Texel span: the texels whose centres lie strictly within the half-width", "[kernel]") {
@@ -392,8 +393,10 @@ TEST_CASE("Reach and area weight", "[gather]") {
     CHECK(ffxDofReach(5.0f, 3.0f) == 1.0f);
     CHECK(ffxDofReach(5.0f, 5.0f) == 0.5f);
     CHECK(ffxDofReach(5.0f, 5.5f) == 0.0f);
-    CHECK(ffxDofAreaWeight(2.0f) == Approx(0.25f));
-    CHECK(ffxDofAreaWeight(0.1f) == Approx(4.0f));
+    FfxDofPixelAperture round{};
+    round.areaScale = 1.0f;
+    CHECK(ffxDofApertureAreaWeight(round, 2.0f) == Approx(0.25f));
+    CHECK(ffxDofApertureAreaWeight(round, 0.1f) == Approx(4.0f));
 }
 
 TEST_CASE("Far layers: a texel's own surface and nearer samples in front, farther ones behind", "[gather]") {
@@ -452,7 +455,7 @@ TEST_CASE("Near opacity of a uniform near field of the kernel radius is 1", "[ga
             for (const auto& [x, y] : walkAnnulus(origin / texel, ffxDofRingInnerRadius(ring, spacing) / texel,
                                                   ffxDofRingInnerRadius(ring + 1, spacing) / texel)) {
                 const float distance = float(centreDistance(center / texel, x, y)) * texel;
-                weight += ffxDofReach(radius, distance) * ffxDofAreaWeight(radius) * texel * texel;
+                weight += ffxDofReach(radius, distance) / (radius * radius) * texel * texel;
             }
         }
         INFO("radius " << radius << ", MIP " << mip << ", weight / pi " << weight / kPi);

@@ -6,6 +6,7 @@
 #include "ffx_dof_dilate.h"
 #include "ffx_dof_blur.h"
 #include "ffx_dof_composite.h"
+#include "ffx_dof_plan.h"
 
 #include <algorithm>
 #include <cmath>
@@ -158,8 +159,7 @@ std::vector<glm::vec4> runPipeline(const Scene& scene, const Settings& settings,
     k.fullSize = FfxUInt32x2(scene.width, scene.height);
     k.halfSize = FfxUInt32x2(ceilDiv(scene.width, 2), ceilDiv(scene.height, 2));
     k.tileCount = FfxUInt32x2(ceilDiv(k.halfSize.x, FFX_DOF_TILE_SIZE), ceilDiv(k.halfSize.y, FFX_DOF_TILE_SIZE));
-    k.halfTexelSize = 1.0f / FfxFloat32x2(k.halfSize);
-    k.fullTexelSize = 1.0f / FfxFloat32x2(k.fullSize);
+    ffxdof::setApertureConstants(settings.aperture, &k);
     k.frameIndex = settings.frameIndex;
     k.outputFlags = 0;
     for (uint32_t mip = 0; mip < FFX_DOF_OPTION_MAX_MIP; ++mip) {

@@ -2,6 +2,8 @@
 // backed by std::vector images, and each workgroup runs as 64 threads meeting at a real barrier.
 #pragma once
 
+#include "ffx_dof.h"
+
 #include <glm/glm.hpp>
 
 #include <cstdint>
@@ -25,6 +27,8 @@ struct Settings {
     // Runs every blur tile on the mixed path instead of its class's (ffxDofClassifyTile): the
     // reference the cheaper paths are compared with.
     bool forceMixedBlurPath = false;
+    // The aperture, as FfxDofDispatchDescription::pAperture gives it (the SDK sets the constants).
+    FfxDofAperture aperture{0, 0.0f, 0.0f, 1.0f, 0.0f};
 };
 
 struct Layers {

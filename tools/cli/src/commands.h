@@ -12,6 +12,16 @@
 
 namespace ffxdof::cli {
 
+// The aperture options (docs/aperture.md): --blades, --blade-rotation, --roundness, --anamorphic,
+// --cat-eye. The defaults are the round aperture.
+struct ApertureOptions {
+    uint32_t blades = 0;  // 0 = round, 3..16
+    double bladeRotationDegrees = 0.0;
+    double roundness = 0.0;        // 0..1
+    double anamorphicRatio = 1.0;  // 0.5..2
+    double catEye = 0.0;           // 0..1
+};
+
 // Effect settings shared by apply, demo and bench.
 struct EffectOptions {
     uint32_t quality = 10;   // FfxDofContextDescription::quality, 1..FFX_DOF_MAX_QUALITY
@@ -22,7 +32,11 @@ struct EffectOptions {
     bool noRingMerge = false;  // FFX_DOF_DISABLE_RING_MERGE
     int device = -1;           // Vulkan physical device index; -1 = the first
     bool validate = false;     // Khronos validation layer on; any message fails the command
+    ApertureOptions aperture;
 };
+
+// The dispatch's aperture (FfxDofDispatchDescription::pAperture) for checked options.
+FfxDofAperture toDofAperture(const ApertureOptions& aperture);
 
 // Throws CliError(InvalidValue) for a quality or CoC limit the effect does not accept.
 void checkEffectOptions(const EffectOptions& options);

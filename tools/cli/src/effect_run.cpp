@@ -50,6 +50,7 @@ vkrun::RunSettings makeRunSettings(const EffectOptions& effect, const CocParamet
                             (effect.noRingMerge ? uint32_t(FFX_DOF_DISABLE_RING_MERGE) : 0u);
     settings.cocScale = coc.cocScale;
     settings.cocBias = coc.cocBias;
+    settings.aperture = toDofAperture(effect.aperture);
     if (autofocus != nullptr) {
         settings.useAutofocus = true;
         settings.autofocus = *autofocus;

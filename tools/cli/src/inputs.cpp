@@ -151,10 +151,41 @@ void checkEffectOptions(const EffectOptions& options) {
         message << "--coc-limit must be a finite number, 0 or more (at most 3.4e38), got " << options.cocLimit;
         throw CliError(ExitCode::InvalidValue, message.str());
     }
+    const ApertureOptions& a = options.aperture;
+    if (a.blades != 0 && (a.blades < 3 || a.blades > FFX_DOF_MAX_APERTURE_BLADES)) {
+        throw CliError(ExitCode::InvalidValue, "--blades must be 0 (round) or 3 to " +
+                                                   std::to_string(FFX_DOF_MAX_APERTURE_BLADES) + ", got " +
+                                                   std::to_string(a.blades));
+    }
+    const struct {
+        const char* option;
+        double value, lowest, highest;
+    } ranges[] = {{"--blade-rotation", a.bladeRotationDegrees, -1e6, 1e6},
+                  {"--roundness", a.roundness, 0.0, 1.0},
+                  {"--anamorphic", a.anamorphicRatio, FFX_DOF_MIN_ANAMORPHIC_RATIO, FFX_DOF_MAX_ANAMORPHIC_RATIO},
+                  {"--cat-eye", a.catEye, 0.0, 1.0}};
+    for (const auto& range : ranges) {
+        if (!std::isfinite(range.value) || range.value < range.lowest || range.value > range.highest) {
+            std::ostringstream message;
+            message << range.option << " must be " << range.lowest << " to " << range.highest << ", got "
+                    << range.value;
+            throw CliError(ExitCode::InvalidValue, message.str());
+        }
+    }
     if (options.device < -1) {
         throw CliError(ExitCode::InvalidValue,
                        "--device must be a device index, 0 or more, got " + std::to_string(options.device));
     }
+}
+
+FfxDofAperture toDofAperture(const ApertureOptions& aperture) {
+    FfxDofAperture result{};
+    result.bladeCount = aperture.blades;
+    result.bladeRotation = float(aperture.bladeRotationDegrees * (3.14159265358979323846 / 180.0));
+    result.roundness = float(aperture.roundness);
+    result.anamorphicRatio = float(aperture.anamorphicRatio);
+    result.catEye = float(aperture.catEye);
+    return result;
 }
 
 }  // namespace ffxdof::cli

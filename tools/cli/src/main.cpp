@@ -94,6 +94,19 @@ CLI::Option* addEffectOptions(CLI::App& command, EffectOptions& effect, bool off
             },
             "Vulkan physical device index (default: the first)")
         ->check(kInteger);
+    ApertureOptions& aperture = effect.aperture;
+    command.add_option("--blades", aperture.blades, "Aperture blades: 0 = round (default), 3 to 16")->check(kUnsigned);
+    command
+        .add_option("--blade-rotation", aperture.bladeRotationDegrees,
+                    "Rotation of the blades, degrees counter-clockwise (0: flat sides left and right)")
+        ->check(kNumber);
+    command.add_option("--roundness", aperture.roundness, "0 = straight blades to 1 = round")->check(kNumber);
+    command
+        .add_option("--anamorphic", aperture.anamorphicRatio,
+                    "Bokeh height over width, 0.5 to 2 (1.5: 1.5 times taller than wide)")
+        ->check(kNumber);
+    command.add_option("--cat-eye", aperture.catEye, "Optical vignetting toward the frame's edges, 0 (off) to 1")
+        ->check(kNumber);
     command.add_flag("--validate", effect.validate,
                      "Run with the Khronos validation layer (synchronization included); any message is an error");
     return cocLimit;

@@ -147,6 +147,8 @@ struct RunSettings {
     // it chose comes back in RunResult::autofocusDistance.
     bool useAutofocus = false;
     FfxDofAutofocus autofocus{};
+    // FfxDofDispatchDescription::pAperture (the default is the round aperture, passed as NULL).
+    FfxDofAperture aperture{0, 0.0f, 0.0f, 1.0f, 0.0f};
 
     // The output is the color image itself (needs FFX_DOF_OUTPUT_PRE_INIT, added automatically).
     bool inPlace = false;

@@ -52,4 +52,12 @@ private:
     uint32_t width_, height_;
 };
 
+// The dispatch's pAperture: NULL for the round aperture, so that the default runs the path engines
+// that never heard of apertures take.
+inline const FfxDofAperture* apertureOrNull(const RunSettings& settings) {
+    const FfxDofAperture& a = settings.aperture;
+    const bool round = a.bladeCount == 0 && a.anamorphicRatio == 1.0f && a.catEye == 0.0f;
+    return round ? nullptr : &settings.aperture;
+}
+
 }  // namespace ffxdof::vkrun

@@ -311,6 +311,7 @@ RunResult runEffect(Device& device, const HostImage& color, const HostImage& dep
     dispatch.cocScale = settings.cocScale;
     dispatch.cocBias = settings.cocBias;
     dispatch.pAutofocus = settings.useAutofocus ? &settings.autofocus : nullptr;
+    dispatch.pAperture = apertureOrNull(settings);
 
     for (uint32_t run = 0; run < settings.repeat; ++run) {
         const uint32_t first = run * (kEffectQueries + kCopyQueries);

@@ -110,6 +110,7 @@ HostImage EffectSession::run(const HostImage& color, const HostImage& depth, con
     dispatch.cocScale = settings.cocScale;
     dispatch.cocBias = settings.cocBias;
     dispatch.pAutofocus = settings.useAutofocus ? &settings.autofocus : nullptr;
+    dispatch.pAperture = apertureOrNull(settings);
     VkCommandBuffer commandBuffer = s.device.beginCommands();
     dispatch.commandList = ffxDofGetCommandListVK(commandBuffer);
     const FfxDofErrorCode dispatched = ffxDofContextDispatch(&context.handle, &dispatch);

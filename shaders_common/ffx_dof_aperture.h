@@ -1,0 +1,170 @@
+// The aperture: the one place that knows the shape of a bokeh disc (issue 18). Unit-tested on the CPU
+// (tests/shaders/ffx_dof_aperture_tests.cpp); the host computes the per-dispatch constants with the
+// same functions (sdk/src/ffx_dof_plan.cpp).
+//
+// The unit shape S lives in aperture space u (x right, y up, radius 1 = the CoC radius):
+//   - the unit circle, |u| <= 1;
+//   - with N >= 3 blades, also every side n_k . u <= a of a regular N-gon, n_k at the blade rotation
+//     plus 2 pi k / N, a the blades' inradius: the polygon inscribed in the circle (a = cos(pi / N),
+//     roundness 0) up to the circle itself (a = 1); between them the corners are arcs of the circle;
+//   - with cat's eye (optical vignetting), also |u - o| <= 1: a second disc whose centre o grows
+//     toward the frame's edge (o = catEye * position, the position relative to the frame's centre,
+//     y up, 1 at a corner), so discs become lens-shaped toward the corners.
+// On screen, a far-field point (behind the focus plane) spreads over S with u.x divided by the
+// anamorphic ratio (above 1: taller than wide); a near-field point over the same shape turned 180
+// degrees, as through a thin lens (the reference renderer samples exactly this aperture).
+//
+// Every shape is convex and contains the origin, so it is the unit ball of its gauge
+// ffxDofApertureDistance: a sample of radius r reaches a pixel whose offset has gauge g < r. The
+// gauge of the intersection is the largest of the parts' gauges, each homogeneous of degree 1, so it
+// is measured in any unit the offset is in (half-res px, MIP texels).
+#ifndef FFX_DOF_APERTURE_H
+#define FFX_DOF_APERTURE_H
+
+#include "ffx_dof_portability.h"
+#include "ffx_dof_constants.h"
+
+#define FFX_DOF_PI 3.14159265359f
+// The cat's-eye disc's centre is kept this far inside the circle's rim: at the rim the gauge of the
+// clipping disc divides by 0.
+#define FFX_DOF_CAT_EYE_MIN_SLACK 0.001f
+
+// ---- Areas (host and shader) ------------------------------------------------------------------------
+
+// Inradius of the blades for a roundness (0: straight blades, 1: the circle).
+FFX_DOF_INLINE FfxFloat32 ffxDofBladeInradius(FfxUInt32 blades, FfxFloat32 roundness)
+{
+    FfxFloat32 polygon = cos(FFX_DOF_PI / FfxFloat32(max(blades, 3u)));
+    return polygon + (1.0f - polygon) * clamp(roundness, 0.0f, 1.0f);
+}
+
+// Area of the unit circle less the N segments the sides at `inradius` cut off (they do not overlap
+// while inradius >= cos(pi / N)): pi for no blades.
+FFX_DOF_INLINE FfxFloat32 ffxDofBladeShapeArea(FfxUInt32 blades, FfxFloat32 inradius)
+{
+    if (blades < 3u)
+        return FFX_DOF_PI;
+    FfxFloat32 a = clamp(inradius, 0.0f, 1.0f);
+    FfxFloat32 segment = acos(a) - a * sqrt(max(1.0f - a * a, 0.0f));
+    return FFX_DOF_PI - FfxFloat32(blades) * segment;
+}
+
+// Area of the intersection of two unit discs whose centres are `d` apart (0 <= d <= 2).
+FFX_DOF_INLINE FfxFloat32 ffxDofUnitLensArea(FfxFloat32 d)
+{
+    FfxFloat32 h = clamp(d, 0.0f, 2.0f) * 0.5f;
+    return 2.0f * (acos(h) - h * sqrt(max(1.0f - h * h, 0.0f)));
+}
+
+// ---- The per-pixel aperture -------------------------------------------------------------------------
+
+struct FfxDofPixelAperture
+{
+    FfxFloat32 anamorphicRatio;    // u.x = screen x * ratio
+    FfxFloat32x2 bladeNormal;      // the first side's normal over the inradius
+    FfxFloat32x2 bladeStep;        // (cos, sin) of the angle between the sides walked
+    FfxUInt32 bladeSidesWalked;    // N / 2 for even N (a side and its opposite at once), N for odd N, 0: circle
+    FfxFloat32 bladeOppositeSide;  // 1 for even N: the opposite side's gauge is -n_k . u
+    FfxFloat32x2 clipCenter;       // the cat's-eye disc's centre
+    FfxFloat32 clipSlack;          // 1 - |clipCenter|^2
+    FfxUInt32 clipDiscs;           // 1 with cat's eye, 0 without (a loop count: see ffxDofApertureDistance)
+    FfxFloat32 areaScale;          // pi / the pixel-space area of the shape of radius 1
+};
+
+// Position of a pixel relative to the frame's centre, y up, 1 at a corner (the cat's eye's measure).
+FFX_DOF_INLINE FfxFloat32x2 ffxDofFramePosition(FfxFloat32x2 pixel, FfxFloat32x2 frameSize)
+{
+    FfxFloat32 halfDiagonal = 0.5f * sqrt(dot(frameSize, frameSize));
+    return FfxFloat32x2(pixel.x - 0.5f * frameSize.x, 0.5f * frameSize.y - pixel.y) / halfDiagonal;
+}
+
+// The aperture seen by the pixel at `pixel` (half-res px) of a frame of `frameSize` half-res px.
+FFX_DOF_INLINE FfxDofPixelAperture ffxDofMakeAperture(FfxDofConstants constants, FfxFloat32x2 pixel,
+                                                      FfxFloat32x2 frameSize)
+{
+    FfxDofPixelAperture aperture;
+    aperture.anamorphicRatio = constants.anamorphicRatio;
+    aperture.bladeNormal = constants.bladeNormal;
+    FfxUInt32 blades = constants.bladeCount;
+    FfxBoolean even = (blades & 1u) == 0u;
+    aperture.bladeSidesWalked = even ? blades / 2u : blades;
+    aperture.bladeOppositeSide = even ? 1.0f : 0.0f;
+    FfxFloat32 stepAngle = 2.0f * FFX_DOF_PI / FfxFloat32(max(blades, 1u));
+    aperture.bladeStep = FfxFloat32x2(cos(stepAngle), sin(stepAngle));
+    aperture.clipCenter = constants.catEye * ffxDofFramePosition(pixel, frameSize);
+    FfxFloat32 offset2 = dot(aperture.clipCenter, aperture.clipCenter);
+    aperture.clipSlack = max(1.0f - offset2, FFX_DOF_CAT_EYE_MIN_SLACK);
+    aperture.clipDiscs = constants.catEye > 0.0f ? 1u : 0u;
+    // The clipped part of a polygon is taken as the clipped part of the circle (exact for round
+    // apertures; for blades, within a few percent of the exact area).
+    aperture.areaScale = constants.apertureAreaScale;
+    if (aperture.clipDiscs != 0u)
+        aperture.areaScale *= FFX_DOF_PI / ffxDofUnitLensArea(sqrt(offset2));
+    return aperture;
+}
+
+// Gauge of the offset from a pixel to a sample (y down, any unit): the radius a sample needs to
+// reach the pixel. `nearSample`: the sample is in the near field, whose disc is the shape turned 180
+// degrees. For the round aperture this is the offset's length, computed as it always was. The blades
+// and the cat's-eye disc are loops whose count is 0 when they are off: devices that run both sides of
+// a uniform branch (lavapipe) still skip a loop no lane enters, so the circle pays nothing for them.
+FFX_DOF_INLINE FfxFloat32 ffxDofApertureDistance(FfxDofPixelAperture aperture, FfxFloat32x2 sampleOffset,
+                                                 FfxBoolean nearSample)
+{
+    // A far sample at offset d reaches the pixel at -d: u is -d, y flipped up, x stretched.
+    FfxFloat32 side = nearSample ? 1.0f : -1.0f;
+    FfxFloat32x2 u = FfxFloat32x2(sampleOffset.x * (side * aperture.anamorphicRatio), sampleOffset.y * -side);
+    FfxFloat32 length2 = dot(u, u);
+    FfxFloat32 gauge = sqrt(length2);
+    FfxFloat32x2 normal = aperture.bladeNormal;
+    FFX_DOF_LOOP
+    for (FfxUInt32 walked = 0u; walked < aperture.bladeSidesWalked; ++walked)
+    {
+        FfxFloat32 reach = dot(normal, u);
+        gauge = max(gauge, max(reach, -reach * aperture.bladeOppositeSide));
+        normal = FfxFloat32x2(normal.x * aperture.bladeStep.x - normal.y * aperture.bladeStep.y,
+                              normal.x * aperture.bladeStep.y + normal.y * aperture.bladeStep.x);
+    }
+    FFX_DOF_LOOP
+    for (FfxUInt32 disc = 0u; disc < aperture.clipDiscs; ++disc)
+    {
+        // The t with |u / t - c| = 1: the smaller root of a quadratic, written without cancellation.
+        FfxFloat32 along = dot(u, aperture.clipCenter);
+        gauge = max(gauge, (sqrt(along * along + length2 * aperture.clipSlack) - along) / aperture.clipSlack);
+    }
+    return gauge;
+}
+
+// A sample spreads its energy over its disc: weight proportional to the inverse disc area, normalized
+// so that a round disc of radius r weighs 1 / r^2 (at most 4: radii below half a pixel weigh as half
+// a pixel), and every shape's disc sums to pi like the circle's.
+FFX_DOF_INLINE FfxFloat32 ffxDofApertureAreaWeight(FfxDofPixelAperture aperture, FfxFloat32 absRadius)
+{
+    return aperture.areaScale / max(absRadius * absRadius, 0.25f);
+}
+
+// ---- The shape's extent, for the kernel walk and the tile passes -------------------------------------
+
+// The walk reads the ellipse |u| < radius that holds every shape: half the width of its row `dy` from
+// the centre (same units), `widthScale` the inverse anamorphic ratio (1 for round discs). A convex
+// polygon's rows are one interval too, but the round row keeps the walk's cost at one square root and
+// reads at most the corners a polygon leaves out (docs/aperture.md).
+FFX_DOF_INLINE FfxFloat32 ffxDofKernelRowHalfWidth(FfxFloat32 radius, FfxFloat32 dy, FfxFloat32 widthScale)
+{
+    return sqrt(max(radius * radius - dy * dy, 0.0f)) * widthScale;
+}
+
+// The largest distance, over the radius, at which a disc reaches: the tile passes multiply radii by it.
+FFX_DOF_INLINE FfxFloat32 ffxDofApertureExtent(FfxDofConstants constants)
+{
+    return max(1.0f, 1.0f / constants.anamorphicRatio);
+}
+
+// The smallest pixel distance, over the radius, between rings: the MIP the blur reads is chosen by it,
+// so that a disc narrowed by the anamorphic ratio is not read coarser than its width allows.
+FFX_DOF_INLINE FfxFloat32 ffxDofApertureRingSpacingScale(FfxDofConstants constants)
+{
+    return min(1.0f, 1.0f / constants.anamorphicRatio);
+}
+
+#endif  // FFX_DOF_APERTURE_H
