@@ -17,6 +17,10 @@
 //     A f |F - Z| / (Z (F - f))   sensor units,   times width / sensorWidth for pixels,
 // the thin-lens formula of ffx_dof.h (tested in tests/reference).
 //
+// Aperture shape: the lens points are A (ux / s, uy) for the points u of a unit shape S (blades,
+// roundness, cat's eye; see ApertureShape); every pixel averages over its own shaped aperture, so a
+// shape changes the bokeh's outline but not the brightness of a uniform scene.
+//
 // Depth outputs: linear view depth Z in metres; device z of a D3D-style [0, 1] projection
 // (clipZ = proj33 Z + proj34, clipW = proj43 Z = Z, device = clipZ / clipW), standard (near -> 0,
 // far -> 1) and reversed (near -> 1, far -> 0). Pixels whose ray hits nothing get Z = far.
@@ -45,6 +49,66 @@ struct ProjectionTerms {
     double viewDepth(double deviceDepth) const { return proj34 / (proj43 * deviceDepth - proj33); }
 };
 
+// The aperture's shape, in unit aperture space u = (ux, uy): x right, y up (view space of the lens
+// plane). For a sensor position p the unit shape S(p) is the intersection of
+//   - the unit disc |u| <= 1;
+//   - with N = bladeCount >= 3 blades, the half-planes dot(n_k, u) <= a for k = 0..N-1, with
+//     n_k = (cos(t + 2 pi k / N), sin(t + 2 pi k / N)), t = bladeRotationDegrees in radians and
+//     a = cos(pi / N) + roundness (1 - cos(pi / N)): the regular N-gon inscribed in the unit circle
+//     (roundness 0) bulging out to the circle (roundness 1). At rotation 0 a flat side faces +x;
+//     positive rotations turn counter-clockwise;
+//   - with catEye > 0, the disc |u - o| <= 1, o = catEye q, where q is the sensor position relative to
+//     the frame centre, y up, over half the frame diagonal (|q| = 1 at the corners): the optical
+//     vignetting that pinches off-axis bokeh into cat's eyes.
+// The lens point (view space, metres) of u is A (ux / s, uy), A = apertureRadius, s = anamorphicRatio
+// (so Camera::cocRadiusPixels is the blur's vertical radius; horizontally it is divided by s).
+// A point far behind the focus plane images to S squeezed horizontally by 1 / s (y up on screen); a
+// point in front of it to the same shape turned by 180 degrees. The defaults are the round aperture.
+struct ApertureShape {
+    uint32_t bladeCount = 0;            // 0: round; otherwise 3..16
+    double bladeRotationDegrees = 0.0;  // finite; counter-clockwise with y up
+    double roundness = 0.0;             // 0..1: 0 straight blades, 1 the circle
+    double anamorphicRatio = 1.0;       // s, 0.5..2: s > 1 makes the aperture s times taller than wide
+    double catEye = 0.0;                // 0..1: 0 off, 1 the strongest optical vignetting
+
+    // Throws std::invalid_argument naming the first field (aperture.<name>) that is out of range.
+    void validate() const;
+};
+
+// The geometry of an ApertureShape's unit shape S, the one definition that the renderer and the tests
+// use (side normals precomputed, so the inside test is cheap enough per lens sample).
+class UnitAperture {
+public:
+    explicit UnitAperture(const ApertureShape& shape);  // validates the shape
+
+    const ApertureShape& shape() const { return shape_; }
+    // True when S is the unit disc at every sensor position (no blades or fully round ones, no cat's
+    // eye); the anamorphic ratio does not enter S.
+    bool isDisc() const;
+    // o = catEye q for the continuous pixel position (px, py) (x right, y down, as pixel centres are
+    // x + 0.5, y + 0.5) of a width x height frame.
+    glm::dvec2 catEyeCenter(double px, double py, uint32_t width, uint32_t height) const;
+    // Whether point lies in radius * S for the cat's-eye centre o. Radius 1 tests u itself; the
+    // renderer tests a lens point L as (s Lx, Ly) with radius A, which keeps the round aperture's test
+    // bit for bit the one from before shapes.
+    bool contains(glm::dvec2 point, glm::dvec2 catEyeCenter = glm::dvec2(0.0), double radius = 1.0) const;
+    // The row of S at height uy: the interval [left, right] of ux, S being convex. False (and the
+    // outputs unspecified) when the row misses S.
+    bool rowInterval(double uy, glm::dvec2 catEyeCenter, double& left, double& right) const;
+    // The area of S: exact without a cat's-eye offset (o = 0), otherwise the integral of the row
+    // lengths (relative error well below 1e-4). The lens area is A^2 area(S) / s.
+    double area(glm::dvec2 catEyeCenter = glm::dvec2(0.0)) const;
+    // The lens point A (ux / s, uy) of u.
+    glm::dvec2 lensPoint(glm::dvec2 u, double apertureRadius) const {
+        return {apertureRadius * u.x / shape_.anamorphicRatio, apertureRadius * u.y};
+    }
+
+private:
+    ApertureShape shape_;
+    std::vector<glm::dvec2> normals_;  // the blades' side normals n_k
+    double inradius_ = 1.0;            // a
+};
+
 struct Camera {
     uint32_t width = 0;   // pixels
     uint32_t height = 0;  // pixels
@@ -57,6 +121,7 @@ struct Camera {
     double apertureRadius = 0.0;  // A, metres; focalLength / (2 fstop)
     double nearPlane = 0.1;       // metres, for the device depth
     double farPlane = 1000.0;     // metres
+    ApertureShape aperture;       // the default is the round aperture
 
     double fstop() const { return apertureRadius > 0.0 ? focalLength / (2.0 * apertureRadius) : 0.0; }
     void setFstop(double fstop) { apertureRadius = focalLength / (2.0 * fstop); }
@@ -73,11 +138,13 @@ struct Camera {
     ProjectionTerms projection() const;          // standard: near -> 0, far -> 1
     ProjectionTerms reversedProjection() const;  // reversed: near -> 1, far -> 0
 
-    // Throws std::invalid_argument naming the first field that is out of range.
+    // Throws std::invalid_argument naming the first field that is out of range (aperture included).
     void validate() const;
 };
 
-// camera.json: every field above, the derived fstop, imageDistance, verticalFovDegrees,
+// camera.json: every field above (the shape as an "aperture" object: bladeCount,
+// bladeRotationDegrees, roundness, anamorphicRatio, catEye; optional when reading, absent fields
+// take the defaults), the derived fstop, imageDistance, verticalFovDegrees,
 // pixelsPerSensorUnit and both projections ("projection", "projectionReversed": proj33, proj34,
 // proj43). cameraFromJson reads the fields of Camera (the derived ones are ignored) and validates.
 nlohmann::json cameraToJson(const Camera& camera);

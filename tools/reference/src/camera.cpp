@@ -4,10 +4,12 @@
 #include <nlohmann/json.hpp>
 
 #include <cmath>
+#include <cstdint>
 #include <filesystem>
 #include <fstream>
 #include <ostream>
 #include <stdexcept>
+#include <string>
 
 namespace ffxdof::ref {
 namespace {
@@ -24,6 +26,48 @@ glm::dvec3 vectorFromJson(const nlohmann::json& json, const char* key) {
 
 nlohmann::json projectionToJson(const ProjectionTerms& terms) {
     return {{"proj33", terms.proj33}, {"proj34", terms.proj34}, {"proj43", terms.proj43}};
+}
+
+nlohmann::json apertureToJson(const ApertureShape& shape) {
+    return {{"bladeCount", shape.bladeCount},
+            {"bladeRotationDegrees", shape.bladeRotationDegrees},
+            {"roundness", shape.roundness},
+            {"anamorphicRatio", shape.anamorphicRatio},
+            {"catEye", shape.catEye}};
+}
+
+// Absent object or fields: the defaults (camera.json files from before shapes are round apertures).
+// Present ones must have the right type; the ranges are checked by validate().
+ApertureShape apertureFromJson(const nlohmann::json& camera) {
+    ApertureShape shape;
+    const auto found = camera.find("aperture");
+    if (found == camera.end()) return shape;
+    const nlohmann::json& json = *found;
+    if (!json.is_object()) throw std::invalid_argument("camera JSON: aperture must be an object");
+    const auto readNumber = [&](const char* key, double& value) {
+        const auto field = json.find(key);
+        if (field == json.end()) return;
+        if (!field->is_number()) {
+            throw std::invalid_argument(std::string("camera JSON: aperture.") + key + " must be a number");
+        }
+        value = field->get<double>();
+    };
+    if (const auto blades = json.find("bladeCount"); blades != json.end()) {
+        if (!blades->is_number_integer()) {
+            throw std::invalid_argument("camera JSON: aperture.bladeCount must be an integer (0 or 3 to 16)");
+        }
+        const int64_t count = blades->get<int64_t>();
+        if (count < 0 || count > 16) {
+            throw std::invalid_argument("aperture.bladeCount must be 0 (round) or 3 to 16, got " +
+                                        std::to_string(count));
+        }
+        shape.bladeCount = uint32_t(count);
+    }
+    readNumber("bladeRotationDegrees", shape.bladeRotationDegrees);
+    readNumber("roundness", shape.roundness);
+    readNumber("anamorphicRatio", shape.anamorphicRatio);
+    readNumber("catEye", shape.catEye);
+    return shape;
 }
 
 }  // namespace
@@ -67,6 +111,7 @@ void Camera::validate() const {
     if (!positiveFinite(nearPlane) || !std::isfinite(farPlane) || farPlane <= nearPlane) {
         throw std::invalid_argument("near and far planes must satisfy 0 < near < far");
     }
+    aperture.validate();
     const glm::dvec3 forward = target - position;
     if (!(glm::length(forward) > 0.0)) throw std::invalid_argument("camera target equals its position");
     if (!(glm::length(glm::cross(forward, up)) > 1e-9 * glm::length(forward) * glm::length(up))) {
@@ -88,6 +133,7 @@ nlohmann::json cameraToJson(const Camera& camera) {
         {"fstop", camera.fstop()},
         {"near", camera.nearPlane},
         {"far", camera.farPlane},
+        {"aperture", apertureToJson(camera.aperture)},
         {"imageDistance", camera.imageDistance()},
         {"verticalFovDegrees", camera.verticalFovRadians() * 180.0 / M_PI},
         {"pixelsPerSensorUnit", camera.pixelsPerSensorUnit()},
@@ -116,6 +162,7 @@ Camera cameraFromJson(const nlohmann::json& json) {
     } catch (const nlohmann::json::exception& error) {
         throw std::invalid_argument(std::string("camera JSON: ") + error.what());
     }
+    camera.aperture = apertureFromJson(json);
     camera.validate();
     return camera;
 }
