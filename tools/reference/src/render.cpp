@@ -3,10 +3,12 @@
 #include <glm/geometric.hpp>
 
 #include <algorithm>
+#include <array>
 #include <atomic>
 #include <cmath>
 #include <functional>
 #include <limits>
+#include <optional>
 #include <stdexcept>
 #include <thread>
 
@@ -181,6 +183,27 @@ glm::dvec2 concentricDisc(double u, double v) {
     return {radius * std::cos(angle), radius * std::sin(angle)};
 }
 
+// The weights of a pixel's lens samples in one estimate (all N samples, or the first N/2 for the
+// convergence figure) under a shaped aperture. Sample i sits at sub-pixel position i mod 16; the samples
+// of a position average those that land in the aperture (weight count / accepted), so every position
+// keeps its share count / N of the pixel and in focus the anti-aliasing stays exactly the pinhole
+// image's, whatever the shape. A position where none lands falls back to the lens centre for all its
+// samples (weight 1; u = 0 is in S as |o| <= catEye <= 1): its pinhole ray. For the round aperture every
+// weight is exactly 1, so the sums are bit for bit those of the renderer before shapes.
+struct LensWeights {
+    static constexpr uint32_t kPositions = kPixelGrid * kPixelGrid;
+    std::array<uint32_t, kPositions> count{}, accepted{};
+
+    void add(uint32_t i, bool inside) {
+        ++count[i % kPositions];
+        if (inside) ++accepted[i % kPositions];
+    }
+    bool includes(uint32_t i, bool inside) const { return inside || accepted[i % kPositions] == 0; }
+    double weight(uint32_t i, bool inside) const {
+        return inside ? double(count[i % kPositions]) / accepted[i % kPositions] : 1.0;
+    }
+};
+
 // ---- camera geometry ----------------------------------------------------------------------------
 
 struct CameraFrame {
@@ -307,11 +330,22 @@ ThinLensImage renderThinLens(const Scene& scene, const Camera& camera, const Ren
     checkInputs(scene, camera);
     if (settings.lensSamples == 0) throw std::invalid_argument("lensSamples must be at least 1");
     const CameraFrame frame(camera);
+    const UnitAperture shape(camera.aperture);
+    const bool roundAperture = shape.isDisc();
     const uint32_t sampleCount = settings.lensSamples;
     const uint32_t halfCount = sampleCount / 2;
     const double aperture = camera.apertureRadius;
+    const double squeeze = camera.aperture.anamorphicRatio;
+    // The lens region A (ux / s, uy) lies between these radii around the lens centre.
+    const double apertureInner = aperture * std::min(1.0, 1.0 / squeeze);
+    const double apertureOuter = aperture * std::max(1.0, 1.0 / squeeze);
     const double focus = camera.focusDistance;
     const double focusPixelPitch = focus * (camera.sensorWidth / camera.width) / frame.imageDistance;
+    // Footprint area / lens area = pi r^2 / (A^2 area(S) / s) = (r / A)^2 * (pi s / area(S)), the last
+    // factor exactly 1 for the round aperture. With a cat's eye area(S) depends on the pixel.
+    const auto discOverShapeArea = [&](glm::dvec2 catEyeCenter) { return kPi * squeeze / shape.area(catEyeCenter); };
+    const std::optional<double> fixedDiscOverShapeArea =
+        camera.aperture.catEye > 0.0 ? std::nullopt : std::optional<double>(discOverShapeArea(glm::dvec2(0.0)));
 
     std::vector<EmitterView> emitters;
     for (const Primitive& primitive : scene.primitives) {
@@ -331,6 +365,49 @@ ThinLensImage renderThinLens(const Scene& scene, const Camera& camera, const Ren
     ThinLensImage result{io::ImageRGBA(camera.width, camera.height), 0.0};
     std::vector<double> squaredChangePerRow(camera.height, 0.0);
     forEachRow(camera.height, settings.threads, [&](uint32_t y) {
+        // Sample i of a pass: its lens point, and whether it lies in the shaped aperture at its own
+        // sensor position (which moves the cat's eye). The concentric map's points are in the unit disc
+        // by construction, so the round aperture tests nothing (a rounding at the rim must not drop a
+        // sample). Outside, the lens point is the centre, the fallback of LensWeights.
+        struct LensSample {
+            glm::dvec3 pinhole;
+            glm::dvec2 lens;
+            bool inside;
+        };
+        const auto lensSample = [&](uint32_t x, uint32_t i, const double rotation[2]) {
+            const SamplePoint s = samplePoint(i, rotation);
+            const double px = x + s.pixelX, py = y + s.pixelY;
+            const glm::dvec2 u = concentricDisc(s.lensU, s.lensV);
+            const bool inside =
+                roundAperture || shape.contains(u, shape.catEyeCenter(px, py, camera.width, camera.height));
+            return LensSample{frame.pinholeDirection(px, py), inside ? shape.lensPoint(u, aperture) : glm::dvec2(0.0),
+                              inside};
+        };
+        struct PassWeights {
+            LensWeights all, half;  // the estimate from all N samples, from the first N/2
+        };
+        const auto passWeights = [&](uint32_t x, const double rotation[2]) {
+            PassWeights weights;
+            for (uint32_t i = 0; i < sampleCount; ++i) {
+                const bool inside = roundAperture || lensSample(x, i, rotation).inside;
+                weights.all.add(i, inside);
+                if (i < halfCount) weights.half.add(i, inside);
+            }
+            return weights;
+        };
+        // Calls use(sample, allWeight, halfWeight) for the samples of a pass that enter either estimate
+        // (weight 0: not in that one).
+        const auto forEachLensSample = [&](uint32_t x, const double rotation[2], const PassWeights& weights,
+                                           const auto& use) {
+            for (uint32_t i = 0; i < sampleCount; ++i) {
+                const LensSample s = lensSample(x, i, rotation);
+                const double allWeight = weights.all.includes(i, s.inside) ? weights.all.weight(i, s.inside) : 0.0;
+                const double halfWeight =
+                    i < halfCount && weights.half.includes(i, s.inside) ? weights.half.weight(i, s.inside) : 0.0;
+                if (allWeight != 0.0 || halfWeight != 0.0) use(s, allWeight, halfWeight);
+            }
+        };
+
         for (uint32_t x = 0; x < camera.width; ++x) {
             double rotation[2], emitterRotation[2];
             for (uint32_t d = 0; d < 2; ++d) {
@@ -338,46 +415,61 @@ ThinLensImage renderThinLens(const Scene& scene, const Camera& camera, const Ren
                 emitterRotation[d] = hashUnit(x, y, settings.seed, 2 + d);
             }
             glm::dvec3 sumHalf(0.0), sum(0.0);
-            for (uint32_t i = 0; i < sampleCount; ++i) {
-                const SamplePoint s = samplePoint(i, rotation);
-                const glm::dvec3 pinhole = frame.pinholeDirection(x + s.pixelX, y + s.pixelY);
-                const glm::dvec2 lens = aperture * concentricDisc(s.lensU, s.lensV);
-                const glm::dvec3 radiance =
-                    lensSampleRadiance(scene, traceRay(scene, frame.lensRay(pinhole, lens.x, lens.y)));
-                sum += radiance;
-                if (i < halfCount) sumHalf += radiance;
-            }
+            forEachLensSample(
+                x, rotation, passWeights(x, rotation), [&](const LensSample& s, double allWeight, double halfWeight) {
+                    const glm::dvec3 radiance =
+                        lensSampleRadiance(scene, traceRay(scene, frame.lensRay(s.pinhole, s.lens.x, s.lens.y)));
+                    if (allWeight != 0.0) sum += allWeight * radiance;
+                    if (halfWeight != 0.0) sumHalf += halfWeight * radiance;
+                });
             // Emission: sample the lens points whose ray can reach each emitter (its footprint), or the
-            // whole aperture when the footprint is larger. Weight = sampled area / aperture area.
+            // whole aperture when the footprint is larger. Footprint weight = sampled area / lens area;
+            // the whole aperture is weighted like the pass above.
+            std::optional<PassWeights> emitterWeights;
+            std::optional<double> pixelDiscOverShapeArea = fixedDiscOverShapeArea;
             const glm::dvec3 centerPinhole = frame.pinholeDirection(x + 0.5, y + 0.5);
             for (const EmitterView& emitter : emitters) {
                 const double z = emitter.center.z;
-                const bool sampleFootprint = emitter.footprintRadius < aperture;
+                const bool sampleFootprint = emitter.footprintRadius < apertureInner;
                 if (std::isfinite(emitter.footprintMotion)) {
                     const glm::dvec2 footprintCenter =
                         (glm::dvec2(emitter.center) * focus - glm::dvec2(centerPinhole) * focus * z) / (focus - z);
                     const double margin = 0.7072 * focusPixelPitch * emitter.footprintMotion;
-                    if (glm::length(footprintCenter) > emitter.footprintRadius + aperture + margin) continue;
+                    if (glm::length(footprintCenter) > emitter.footprintRadius + apertureOuter + margin) continue;
                 }
-                for (uint32_t i = 0; i < sampleCount; ++i) {
-                    const SamplePoint s = samplePoint(i, emitterRotation);
-                    const glm::dvec3 pinhole = frame.pinholeDirection(x + s.pixelX, y + s.pixelY);
-                    glm::dvec2 lens;
-                    double weight = 1.0;
-                    if (sampleFootprint) {
+                if (sampleFootprint) {
+                    if (!pixelDiscOverShapeArea) {
+                        // The cat's eye barely changes across a pixel: its area at the centre will do.
+                        pixelDiscOverShapeArea =
+                            discOverShapeArea(shape.catEyeCenter(x + 0.5, y + 0.5, camera.width, camera.height));
+                    }
+                    const double weight = (emitter.footprintRadius * emitter.footprintRadius) / (aperture * aperture) *
+                                          *pixelDiscOverShapeArea;
+                    for (uint32_t i = 0; i < sampleCount; ++i) {
+                        const SamplePoint s = samplePoint(i, emitterRotation);
+                        const double px = x + s.pixelX, py = y + s.pixelY;
+                        const glm::dvec3 pinhole = frame.pinholeDirection(px, py);
                         const glm::dvec2 footprintCenter =
                             (glm::dvec2(emitter.center) * focus - glm::dvec2(pinhole) * focus * z) / (focus - z);
-                        lens = footprintCenter + emitter.footprintRadius * concentricDisc(s.lensU, s.lensV);
-                        if (glm::dot(lens, lens) > aperture * aperture) continue;
-                        weight = (emitter.footprintRadius * emitter.footprintRadius) / (aperture * aperture);
-                    } else {
-                        lens = aperture * concentricDisc(s.lensU, s.lensV);
+                        const glm::dvec2 lens =
+                            footprintCenter + emitter.footprintRadius * concentricDisc(s.lensU, s.lensV);
+                        const glm::dvec2 catEye = shape.catEyeCenter(px, py, camera.width, camera.height);
+                        if (!shape.contains({lens.x * squeeze, lens.y}, catEye, aperture)) continue;
+                        const Hit hit = traceRay(scene, frame.lensRay(pinhole, lens.x, lens.y));
+                        if (hit.primitive != emitter.primitive) continue;
+                        const glm::dvec3 radiance = weight * emitter.radiance;
+                        sum += radiance;
+                        if (i < halfCount) sumHalf += radiance;
                     }
-                    const Hit hit = traceRay(scene, frame.lensRay(pinhole, lens.x, lens.y));
-                    if (hit.primitive != emitter.primitive) continue;
-                    const glm::dvec3 radiance = weight * emitter.radiance;
-                    sum += radiance;
-                    if (i < halfCount) sumHalf += radiance;
+                } else {
+                    if (!emitterWeights) emitterWeights = passWeights(x, emitterRotation);
+                    forEachLensSample(x, emitterRotation, *emitterWeights,
+                                      [&](const LensSample& s, double allWeight, double halfWeight) {
+                                          const Hit hit = traceRay(scene, frame.lensRay(s.pinhole, s.lens.x, s.lens.y));
+                                          if (hit.primitive != emitter.primitive) return;
+                                          if (allWeight != 0.0) sum += allWeight * emitter.radiance;
+                                          if (halfWeight != 0.0) sumHalf += halfWeight * emitter.radiance;
+                                      });
                 }
             }
             sum /= double(sampleCount);
