@@ -1,5 +1,5 @@
-# Runs ffx-dof-reference on a small scene and checks that every documented output exists, and that a
-# bad scene name fails with a non-zero exit code and names the scenes.
+# Runs ffx-dof-reference on a small scene and checks that every documented output exists, that a
+# bad scene name fails with a non-zero exit code and names the scenes, and the aperture shape options.
 file(REMOVE_RECURSE ${OUT})
 execute_process(COMMAND ${REFERENCE} --scene fence --width 24 --height 16 --lens-samples 4 --out ${OUT}
                 RESULT_VARIABLE result OUTPUT_VARIABLE output ERROR_VARIABLE errors)
@@ -18,3 +18,26 @@ execute_process(COMMAND ${REFERENCE} --scene no-such-scene --out ${OUT} RESULT_V
 if(result EQUAL 0 OR NOT errors MATCHES "near-object")
   message(FATAL_ERROR "an unknown scene was not rejected with the list of scenes: ${result} ${errors}")
 endif()
+# The aperture shape options reach camera.json; a bad value exits 1 with one line naming the option.
+execute_process(COMMAND ${REFERENCE} --scene point --width 16 --height 12 --lens-samples 4 --blades 6 --blade-rotation 15
+                        --roundness 0.25 --anamorphic 1.5 --cat-eye 0.5 --out ${OUT}/shaped
+                RESULT_VARIABLE result OUTPUT_VARIABLE output ERROR_VARIABLE errors)
+if(NOT result EQUAL 0)
+  message(FATAL_ERROR "ffx-dof-reference with an aperture shape failed (${result}): ${output}${errors}")
+endif()
+file(READ ${OUT}/shaped/camera.json camera)
+string(JSON blades GET "${camera}" aperture bladeCount)
+string(JSON squeeze GET "${camera}" aperture anamorphicRatio)
+string(JSON catEye GET "${camera}" aperture catEye)
+if(NOT blades EQUAL 6 OR NOT squeeze EQUAL 1.5 OR NOT catEye EQUAL 0.5)
+  message(FATAL_ERROR "camera.json does not carry the aperture shape: ${camera}")
+endif()
+foreach(bad "--blades;2" "--blades;17" "--roundness;1.5" "--anamorphic;0.4" "--cat-eye;-0.1" "--blade-rotation;inf")
+  execute_process(COMMAND ${REFERENCE} --scene point --width 8 --height 8 ${bad} --out ${OUT}/bad
+                  RESULT_VARIABLE result OUTPUT_VARIABLE output ERROR_VARIABLE errors)
+  list(GET bad 0 option)
+  string(STRIP "${errors}" errors)
+  if(NOT result EQUAL 1 OR NOT errors MATCHES "${option}" OR errors MATCHES "\n")
+    message(FATAL_ERROR "${bad}: expected exit 1 and one line naming ${option}, got ${result}: ${errors}")
+  endif()
+endforeach()

@@ -10,6 +10,7 @@
 #include <filesystem>
 #include <optional>
 #include <stdexcept>
+#include <string>
 
 namespace {
 
@@ -18,6 +19,8 @@ enum ExitCode { kOk = 0, kBadArguments = 1, kFileError = 2, kFailure = 3 };
 struct CameraOverrides {
     std::optional<double> focus, fstop, apertureRadius, focalLengthMm, sensorWidthMm, fovDegrees, nearPlane, farPlane;
     std::vector<double> position, lookAt;
+    std::optional<uint32_t> blades;
+    std::optional<double> bladeRotationDegrees, roundness, anamorphicRatio, catEye;
 };
 
 void applyOverrides(ffxdof::ref::Camera& camera, const CameraOverrides& o) {
@@ -34,6 +37,11 @@ void applyOverrides(ffxdof::ref::Camera& camera, const CameraOverrides& o) {
     if (o.apertureRadius) camera.apertureRadius = *o.apertureRadius;
     if (o.nearPlane) camera.nearPlane = *o.nearPlane;
     if (o.farPlane) camera.farPlane = *o.farPlane;
+    if (o.blades) camera.aperture.bladeCount = *o.blades;
+    if (o.bladeRotationDegrees) camera.aperture.bladeRotationDegrees = *o.bladeRotationDegrees;
+    if (o.roundness) camera.aperture.roundness = *o.roundness;
+    if (o.anamorphicRatio) camera.aperture.anamorphicRatio = *o.anamorphicRatio;
+    if (o.catEye) camera.aperture.catEye = *o.catEye;
     camera.validate();
 }
 
@@ -68,6 +76,44 @@ int main(int argc, char** argv) {
     app.add_option("--far", overrides.farPlane, "far plane of the device depth, metres");
     app.add_option("--position", overrides.position, "camera position x y z, metres")->expected(3);
     app.add_option("--look-at", overrides.lookAt, "point the camera looks at, x y z")->expected(3);
+    const CLI::Validator bladeCount(
+        [](std::string& value) {
+            const std::string message = "must be 0 (round) or 3 to 16";
+            try {
+                size_t end = 0;
+                const long count = std::stol(value, &end);
+                return end == value.size() && (count == 0 || (count >= 3 && count <= 16)) ? std::string() : message;
+            } catch (const std::exception&) {
+                return message;
+            }
+        },
+        "0 or 3..16");
+    const CLI::Validator finite(
+        [](std::string& value) {
+            try {
+                size_t end = 0;
+                const double number = std::stod(value, &end);
+                return end == value.size() && std::isfinite(number) ? std::string() : std::string("must be finite");
+            } catch (const std::exception&) {
+                return std::string("must be a number");
+            }
+        },
+        "FINITE");
+    app.add_option("--blades", overrides.blades, "aperture blades: 0 round (default), 3 to 16 a polygon")
+        ->check(bladeCount);
+    app.add_option("--blade-rotation", overrides.bladeRotationDegrees,
+                   "blade rotation, degrees, counter-clockwise (0: a flat side facing right)")
+        ->check(finite);
+    app.add_option("--roundness", overrides.roundness, "blade roundness: 0 straight blades to 1 a circle")
+        ->check(CLI::Range(0.0, 1.0));
+    app.add_option("--anamorphic", overrides.anamorphicRatio,
+                   "anamorphic squeeze s: the aperture is s times taller than wide")
+        ->check(CLI::Range(0.5, 2.0));
+    app.add_option("--cat-eye", overrides.catEye, "cat's-eye vignetting strength: 0 off to 1")
+        ->check(CLI::Range(0.0, 1.0));
+    // One line per bad argument, like the other errors below.
+    app.failure_message(
+        [](const CLI::App*, const CLI::Error& error) { return "error: " + std::string(error.what()) + "\n"; });
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& error) {
