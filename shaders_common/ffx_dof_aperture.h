@@ -78,6 +78,46 @@ FFX_DOF_INLINE FfxFloat32x2 ffxDofFramePosition(FfxFloat32x2 pixel, FfxFloat32x2
     return FfxFloat32x2(pixel.x - 0.5f * frameSize.x, 0.5f * frameSize.y - pixel.y) / halfDiagonal;
 }
 
+// Rows the area of a bladed cat's eye is integrated over (ffxDofBladedCatEyeArea): 0.1% at most.
+#define FFX_DOF_CAT_EYE_AREA_ROWS 48u
+
+// Area of the shape of `blades` blades clipped by the cat's-eye disc, integrated over rows (each row of
+// a convex shape is one interval: the circle's, the disc's and every side's bounds intersected). No
+// closed form: the blades cut the disc's rim anywhere. Costs what a few dozen samples cost, once per
+// texel, and only where blades and cat's eye meet.
+FFX_DOF_INLINE FfxFloat32 ffxDofBladedCatEyeArea(FfxDofPixelAperture aperture, FfxUInt32 blades, FfxUInt32 rows)
+{
+    FfxFloat32 area = 0.0f;
+    FfxFloat32 rowHeight = 2.0f / FfxFloat32(max(rows, 1u));
+    FFX_DOF_LOOP
+    for (FfxUInt32 row = 0u; row < rows; ++row)
+    {
+        FfxFloat32 y = (FfxFloat32(row) + 0.5f) * rowHeight - 1.0f;
+        FfxFloat32 circleHalf = sqrt(max(1.0f - y * y, 0.0f));
+        FfxFloat32 clipY = y - aperture.clipCenter.y;
+        FfxFloat32 clipHalf = sqrt(max(1.0f - clipY * clipY, 0.0f));
+        FfxFloat32 first = max(-circleHalf, aperture.clipCenter.x - clipHalf);
+        FfxFloat32 last = clipY * clipY < 1.0f ? min(circleHalf, aperture.clipCenter.x + clipHalf) : first;
+        FfxFloat32x2 normal = aperture.bladeNormal;
+        FFX_DOF_LOOP
+        for (FfxUInt32 side = 0u; side < blades; ++side)
+        {
+            // normal . (x, y) <= 1, bounding x from the side the normal points to.
+            FfxFloat32 bound = 1.0f - normal.y * y;
+            if (abs(normal.x) < 1e-6f)
+                last = bound < 0.0f ? first : last;
+            else if (normal.x > 0.0f)
+                last = min(last, bound / normal.x);
+            else
+                first = max(first, bound / normal.x);
+            normal = FfxFloat32x2(normal.x * aperture.bladeStep.x - normal.y * aperture.bladeStep.y,
+                                  normal.x * aperture.bladeStep.y + normal.y * aperture.bladeStep.x);
+        }
+        area += max(last - first, 0.0f) * rowHeight;
+    }
+    return area;
+}
+
 // The aperture seen by the pixel at `pixel` (half-res px) of a frame of `frameSize` half-res px.
 FFX_DOF_INLINE FfxDofPixelAperture ffxDofMakeAperture(FfxDofConstants constants, FfxFloat32x2 pixel,
                                                       FfxFloat32x2 frameSize)
@@ -95,11 +135,15 @@ FFX_DOF_INLINE FfxDofPixelAperture ffxDofMakeAperture(FfxDofConstants constants,
     FfxFloat32 offset2 = dot(aperture.clipCenter, aperture.clipCenter);
     aperture.clipSlack = max(1.0f - offset2, FFX_DOF_CAT_EYE_MIN_SLACK);
     aperture.clipDiscs = constants.catEye > 0.0f ? 1u : 0u;
-    // The clipped part of a polygon is taken as the clipped part of the circle (exact for round
-    // apertures; for blades, within a few percent of the exact area).
     aperture.areaScale = constants.apertureAreaScale;
-    if (aperture.clipDiscs != 0u)
+    // The cat's eye changes the area per pixel: exactly for round discs (two discs' lens), by rows
+    // with blades.
+    if (aperture.clipDiscs != 0u && blades == 0u)
         aperture.areaScale *= FFX_DOF_PI / ffxDofUnitLensArea(sqrt(offset2));
+    FfxUInt32 areaRows = aperture.clipDiscs != 0u && blades != 0u ? FFX_DOF_CAT_EYE_AREA_ROWS : 0u;
+    FfxFloat32 bladedArea = ffxDofBladedCatEyeArea(aperture, blades, areaRows);
+    if (areaRows != 0u)
+        aperture.areaScale = FFX_DOF_PI * constants.anamorphicRatio / max(bladedArea, 1e-3f);
     return aperture;
 }
 

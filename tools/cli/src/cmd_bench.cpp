@@ -8,8 +8,10 @@
 
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
+#include <vector>
 #include <ctime>
 #include <optional>
 #include <string>
@@ -29,6 +31,43 @@ std::string utcDate() {
     char text[32];
     std::strftime(text, sizeof(text), "%Y-%m-%d", std::gmtime(&now));
     return text;
+}
+
+double median(std::vector<double> values) {
+    std::sort(values.begin(), values.end());
+    const size_t n = values.size();
+    return n == 0 ? 0.0 : (n % 2 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]));
+}
+
+double blurAndCompositeMs(const vkrun::RunResult& result) {
+    double sum = 0.0;
+    for (uint32_t pass = 0; pass < vkrun::kPassCount; ++pass) {
+        const std::string name = vkrun::passName(pass);
+        if (name == "blur" || name == "composite") sum += result.passMilliseconds[pass];
+    }
+    return sum;
+}
+
+// The given aperture against the round one: `repeat` pairs of single dispatches, in turn.
+struct ApertureCost {
+    double shapedMs = 0.0;  // median blur + composite
+    double roundMs = 0.0;
+    double ratio = 0.0;  // median over pairs of shaped / round
+};
+ApertureCost measureAgainstRound(vkrun::Device& device, const vkrun::HostImage& color, const vkrun::HostImage& depth,
+                                 vkrun::RunSettings settings, uint32_t repeat) {
+    settings.repeat = 1;
+    settings.measureCopyPass = false;
+    settings.hostRecordCalls = 0;
+    vkrun::RunSettings round = settings;
+    round.aperture = FfxDofAperture{0, 0.0f, 0.0f, 1.0f, 0.0f};
+    std::vector<double> shaped, circle, ratios;
+    for (uint32_t i = 0; i < repeat; ++i) {
+        shaped.push_back(blurAndCompositeMs(runEffectOrThrow(device, color, depth, settings)));
+        circle.push_back(blurAndCompositeMs(runEffectOrThrow(device, color, depth, round)));
+        ratios.push_back(shaped.back() / circle.back());
+    }
+    return {median(shaped), median(circle), median(ratios)};
 }
 
 }  // namespace
@@ -74,6 +113,13 @@ void runBench(const BenchOptions& options) {
     const vkrun::RunResult result = runEffectOrThrow(
         *device, toHostImage(pinhole.color), toHostImage(options.width, options.height, depth.deviceDepth), settings);
 
+    std::optional<ApertureCost> apertureCost;
+    if (options.againstRound) {
+        apertureCost = measureAgainstRound(*device, toHostImage(pinhole.color),
+                                           toHostImage(options.width, options.height, depth.deviceDepth), settings,
+                                           options.repeat);
+    }
+
     const double ratio = result.totalMilliseconds / result.copyPassMilliseconds;
     double autofocusMilliseconds = 0.0;
     for (uint32_t pass = 0; pass < vkrun::kPassCount; ++pass) {
@@ -114,6 +160,11 @@ void runBench(const BenchOptions& options) {
             json["autofocusDistance"] = result.autofocusDistance;
             json["autofocusShare"] = autofocusShare;  // passMs.autofocus / totalMs
         }
+        if (apertureCost) {
+            json["againstRound"] = {{"blurCompositeMs", apertureCost->shapedMs},
+                                    {"roundBlurCompositeMs", apertureCost->roundMs},
+                                    {"ratio", apertureCost->ratio}};
+        }
         std::printf("%s\n", json.dump(2).c_str());
         return;
     }
@@ -133,6 +184,11 @@ void runBench(const BenchOptions& options) {
                 static_cast<unsigned long long>(result.aliasableMemoryBytes));
     std::printf("  %-24s %10.1f us (median of %u ffxDofContextDispatch calls)\n", "host record",
                 result.hostRecordMicroseconds, kHostRecordCalls);
+    if (apertureCost) {
+        std::printf("  %-24s %10.3f (blur + composite %.1f ms against %.1f ms round; median of %u pairs in turn)\n",
+                    "aperture / round", apertureCost->ratio, apertureCost->shapedMs, apertureCost->roundMs,
+                    options.repeat);
+    }
     if (options.autofocus) {
         std::printf("  %-24s %10.3g %% of the total (%.3f of %.3f ms); %s (autofocus at %g,%g, region %g)\n",
                     "autofocus share", 100.0 * autofocusShare, autofocusMilliseconds, result.totalMilliseconds,

@@ -95,6 +95,9 @@ struct BenchOptions {
     bool float32 = false;  // 32-bit shaders even where the device has 16-bit float and storage
     EffectOptions effect;
     std::optional<AutofocusRegion> autofocus;  // --autofocus: the autofocus pass runs (and is timed)
+    // --against-round: the aperture options' cost against the round aperture, measured in turn in one
+    // process (lavapipe's speed differs from process to process by up to 2x).
+    bool againstRound = false;
 };
 void runBench(const BenchOptions& options);
 

@@ -304,6 +304,9 @@ int run(int argc, char** argv) {
     benchCommand->add_flag("--json", bench.json, "Print one JSON object instead of a table");
     benchCommand->add_flag("--float32", bench.float32,
                            "Run the 32-bit shader permutations even where the device supports 16-bit ones");
+    benchCommand->add_flag("--against-round", bench.againstRound,
+                           "Also time the round aperture in the same process, run for run in turn with the given "
+                           "one, and print the ratio of their blur + composite times");
     AutofocusArguments benchAutofocus;
     addAutofocusOptions(*benchCommand, benchAutofocus);
     addEffectOptions(*benchCommand, bench.effect);
