@@ -69,6 +69,7 @@ struct FfxDofPixelAperture
     FfxFloat32 clipSlack;          // 1 - |clipCenter|^2
     FfxUInt32 clipDiscs;           // 1 with cat's eye, 0 without (a loop count: see ffxDofApertureDistance)
     FfxFloat32 areaScale;          // pi / the pixel-space area of the shape of radius 1
+    FfxFloat32 inscribedRadius;    // of the largest circle |u| < r inside the shape: 1 for round discs
 };
 
 // Position of a pixel relative to the frame's centre, y up, 1 at a corner (the cat's eye's measure).
@@ -136,6 +137,9 @@ FFX_DOF_INLINE FfxDofPixelAperture ffxDofMakeAperture(FfxDofConstants constants,
     aperture.clipSlack = max(1.0f - offset2, FFX_DOF_CAT_EYE_MIN_SLACK);
     aperture.clipDiscs = constants.catEye > 0.0f ? 1u : 0u;
     aperture.areaScale = constants.apertureAreaScale;
+    FfxFloat32 bladeInradius = blades != 0u ? 1.0f / length(constants.bladeNormal) : 1.0f;
+    FfxFloat32 clipInradius = aperture.clipDiscs != 0u ? 1.0f - sqrt(offset2) : 1.0f;
+    aperture.inscribedRadius = min(bladeInradius, clipInradius);
     // The cat's eye changes the area per pixel: exactly for round discs (two discs' lens), by rows
     // with blades.
     if (aperture.clipDiscs != 0u && blades == 0u)

@@ -53,6 +53,10 @@ void runDemo(const DemoOptions& options) {
     } catch (const std::invalid_argument& error) {
         throw CliError(ExitCode::InvalidValue, std::string("--scene: ") + error.what());
     }
+    // The truth is rendered through the aperture the effect is given (docs/aperture.md).
+    const ApertureOptions& aperture = options.effect.aperture;
+    setup.camera.aperture = ref::ApertureShape{aperture.blades, aperture.bladeRotationDegrees, aperture.roundness,
+                                               aperture.anamorphicRatio, aperture.catEye};
     namespace fs = std::filesystem;
     const fs::path directory(options.outputDirectory);
     std::error_code error;
