@@ -498,15 +498,16 @@ FFX_DOF_INLINE void ffxDofGatherInnerRings(FFX_DOF_INOUT(FfxDofGather) gather, F
 {
     FfxUInt32 mergeLog = FfxUInt32(FFX_DOF_RING_MERGE_LOG);
     FfxUInt32 groupSize = 1u << mergeLog;
-    FfxUInt32 groupCount = (kernel.rings - 1u + groupSize - 1u) / groupSize;
-    // The rim of a bladed or cat's-eye disc lies inside the walk's circle: groups beyond the circle
-    // inscribed in the shape hold rim and are never merged, since a coarse texel's centre, up to a
-    // texel away from the light it holds, would move the rim (a triangle's tip came apart). Round
-    // discs: none (their rim lies in the outermost ring).
-    FfxUInt32 rimGroups = min(
-        FfxUInt32(ceil(FfxFloat32(kernel.rings) * (1.0f - kernel.aperture.inscribedRadius) / FfxFloat32(groupSize))),
-        groupCount);
-    FfxFloat32 mergedGroups = mergeAmount * FfxFloat32(groupCount - rimGroups);
+    // The rim of a bladed or cat's-eye disc lies inside the walk's circle, down to the circle inscribed in
+    // the shape. Rings reaching beyond that circle hold rim: they are walked one by one at the kernel's
+    // MIP, never merged, since a coarse texel's centre, up to a texel away from the light it holds, would
+    // move the rim (a triangle's tip came apart). Rings 1 .. mergeableRings form the groups. Round discs:
+    // every ring (their rim lies in the outermost one).
+    FfxUInt32 mergeableRings =
+        min(kernel.rings - 1u,
+            FfxUInt32(max(floor(kernel.aperture.inscribedRadius * FfxFloat32(kernel.rings) - 0.5f), 0.0f)));
+    FfxUInt32 groupCount = (mergeableRings + groupSize - 1u) / groupSize;
+    FfxFloat32 mergedGroups = mergeAmount * FfxFloat32(groupCount);
     FfxUInt32 coarseMip = min(kernel.baseMip + mergeLog, FfxUInt32(FFX_DOF_OPTION_MAX_MIP - 1));
     // The border with the outermost ring is judged at the coarse MIP wherever merging may happen
     // (ffxDofGatherKernel judges it so on the outermost ring's side).
@@ -518,10 +519,11 @@ FFX_DOF_INLINE void ffxDofGatherInnerRings(FFX_DOF_INOUT(FfxDofGather) gather, F
     while (top >= 0)
     {
         FfxUInt32 topRing = FfxUInt32(top);
-        // Ring 0 (the centre sample) is a group of its own, never merged.
-        FfxUInt32 first = topRing == 0u ? 0u : (topRing + 1u > groupSize ? topRing + 1u - groupSize : 1u);
-        FfxFloat32 merged =
-            topRing == 0u || group < rimGroups ? 0.0f : ffxDofSaturate(mergedGroups - FfxFloat32(group - rimGroups));
+        FfxBoolean rimRing = topRing > mergeableRings;
+        // Ring 0 (the centre sample) is a group of its own, never merged; so is each rim ring.
+        FfxUInt32 first =
+            topRing == 0u || rimRing ? topRing : (topRing + 1u > groupSize ? topRing + 1u - groupSize : 1u);
+        FfxFloat32 merged = topRing == 0u || rimRing ? 0.0f : ffxDofSaturate(mergedGroups - FfxFloat32(group));
         FfxUInt32 mergedWalks = merged > 0.0f ? 1u : 0u;
         FfxUInt32 walks = mergedWalks + (merged < 1.0f ? topRing - first + 1u : 0u);
         FfxBoolean mergedWalk = walk < mergedWalks;
@@ -529,10 +531,10 @@ FFX_DOF_INLINE void ffxDofGatherInnerRings(FFX_DOF_INOUT(FfxDofGather) gather, F
         FfxUInt32 mip = mergedWalk ? coarseMip : kernel.baseMip;
         FfxFloat32 presence = mergedWalk ? merged : 1.0f - merged;
         // A group with a merged part judges both its borders at the coarse MIP, in every walk of it; so
-        // does a rim group (never merged) over a merged one.
-        FfxBoolean nextMerged =
-            first > 1u && group + 1u >= rimGroups && mergedGroups - FfxFloat32(group + 1u - rimGroups) > 0.0f;
-        FfxBoolean innerBorderCoarse = merged > 0.0f || nextMerged;
+        // does the last rim ring over a merged group.
+        FfxBoolean mergedBelow =
+            rimRing && first == mergeableRings + 1u && mergeableRings > 0u && mergedGroups > FfxFloat32(group);
+        FfxBoolean innerBorderCoarse = merged > 0.0f || mergedBelow;
         FfxUInt32 firstWalked = mergedWalk ? first : ring;
         FfxUInt32 innerBorderMip = firstWalked == first && innerBorderCoarse ? coarseMip : mip;
         FfxUInt32 outerBorderMip = ring == topRing && outerBorderCoarse ? coarseMip : mip;
@@ -542,7 +544,7 @@ FFX_DOF_INLINE void ffxDofGatherInnerRings(FFX_DOF_INOUT(FfxDofGather) gather, F
         if (walk == walks)
         {
             top = FfxInt32(first) - 1;
-            ++group;
+            group += rimRing ? 0u : 1u;
             walk = 0u;
             outerBorderCoarse = innerBorderCoarse;
         }
