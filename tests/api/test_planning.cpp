@@ -7,6 +7,8 @@
 
 #include <catch2/catch.hpp>
 
+#include <cmath>
+#include <cstring>
 #include <string>
 
 using namespace ffxdof;
@@ -210,4 +212,35 @@ TEST_CASE("the autofocus readback ring answers for the dispatches it keeps") {
     CHECK(distance == 8.0f);
     REQUIRE(ring.read(1, values, &distance) == FFX_DOF_OK);
     CHECK(distance == 4.0f);
+}
+
+TEST_CASE("the aperture's constants: the round one is the default, shapes set theirs") {
+    const Planned round = plan(64, 64);
+    FfxDofDispatchDescription dispatch{};
+    dispatch.cocScale = -3.0f;
+    dispatch.cocBias = 2.0f;
+    const FfxDofAperture explicitRound{0, 1.0f, 0.5f, 1.0f, 0.0f};
+    dispatch.pAperture = &explicitRound;
+    const DispatchPlan same = planDispatch(round.context, dispatch, 7);
+    CHECK(std::memcmp(&same.constants, &round.dispatch.constants, sizeof(FfxDofConstants)) == 0);
+
+    // A hexagon turned 30 degrees, half round, 1.5 times taller than wide, with cat's eye.
+    const float rotation = 0.5235988f;
+    const FfxDofAperture hexagon{6, rotation, 0.5f, 1.5f, 0.25f};
+    dispatch.pAperture = &hexagon;
+    const FfxDofConstants c = planDispatch(round.context, dispatch, 7).constants;
+    const double polygonInradius = std::cos(3.14159265358979 / 6.0);
+    const double inradius = polygonInradius + 0.5 * (1.0 - polygonInradius);
+    CHECK(c.bladeCount == 6u);
+    CHECK(c.bladeNormal.x == Approx(std::cos(rotation) / inradius));
+    CHECK(c.bladeNormal.y == Approx(std::sin(rotation) / inradius));
+    CHECK(c.anamorphicRatio == 1.5f);
+    CHECK(c.catEye == 0.25f);
+    // pi over the shape's area (the circle less six segments beyond the sides), times the ratio.
+    const double segment = std::acos(inradius) - inradius * std::sqrt(1.0 - inradius * inradius);
+    CHECK(c.apertureAreaScale == Approx(3.14159265358979 / (3.14159265358979 - 6.0 * segment) * 1.5));
+    // Fully round blades are the circle: no blade loop.
+    const FfxDofAperture roundBlades{6, rotation, 1.0f, 1.0f, 0.0f};
+    dispatch.pAperture = &roundBlades;
+    CHECK(planDispatch(round.context, dispatch, 7).constants.bladeCount == 0u);
 }

@@ -347,3 +347,33 @@ TEST_CASE_METHOD(Fixture, "each invalid autofocus field is refused by name") {
     CHECK(ffxDofContextGetAutofocusDistance(&context, 0, nullptr) == FFX_DOF_ERROR_INVALID_POINTER);
     CHECK(ffxDofContextGetAutofocusDistance(&context, 0, &distance) == FFX_DOF_ERROR_INVALID_ARGUMENT);
 }
+
+TEST_CASE_METHOD(Fixture, "each invalid aperture field is refused by name") {
+    REQUIRE(create() == FFX_DOF_OK);
+    const float nan = std::numeric_limits<float>::quiet_NaN();
+    const struct {
+        const char* field;
+        FfxDofAperture aperture;
+    } cases[] = {
+        {"bladeCount", {1, 0.0f, 0.0f, 1.0f, 0.0f}},        {"bladeCount", {2, 0.0f, 0.0f, 1.0f, 0.0f}},
+        {"bladeCount", {17, 0.0f, 0.0f, 1.0f, 0.0f}},       {"bladeRotation", {6, nan, 0.0f, 1.0f, 0.0f}},
+        {"bladeRotation", {6, INFINITY, 0.0f, 1.0f, 0.0f}}, {"roundness", {6, 0.0f, -0.1f, 1.0f, 0.0f}},
+        {"roundness", {6, 0.0f, 1.5f, 1.0f, 0.0f}},         {"anamorphicRatio", {0, 0.0f, 0.0f, 0.49f, 0.0f}},
+        {"anamorphicRatio", {0, 0.0f, 0.0f, 2.01f, 0.0f}},  {"anamorphicRatio", {0, 0.0f, 0.0f, 0.0f, 0.0f}},
+        {"catEye", {0, 0.0f, 0.0f, 1.0f, -0.5f}},           {"catEye", {0, 0.0f, 0.0f, 1.0f, nan}},
+    };
+    for (const auto& c : cases) {
+        dispatch.pAperture = &c.aperture;
+        INFO(c.field);
+        CHECK(ffxDofContextDispatch(&context, &dispatch) == FFX_DOF_ERROR_INVALID_ARGUMENT);
+        CHECK(lastError().find(c.field) != std::string::npos);
+    }
+    CHECK(backend->dispatches.empty());
+    // The limits themselves are accepted.
+    for (const FfxDofAperture& aperture :
+         {FfxDofAperture{3, -7.0f, 0.0f, 0.5f, 0.0f}, FfxDofAperture{16, 100.0f, 1.0f, 2.0f, 1.0f},
+          FfxDofAperture{0, 0.0f, 0.0f, 1.0f, 0.0f}}) {
+        dispatch.pAperture = &aperture;
+        CHECK(ffxDofContextDispatch(&context, &dispatch) == FFX_DOF_OK);
+    }
+}

@@ -105,8 +105,9 @@ TEST_CASE("fuzz: mutated EXR files and option values never crash, touch the outp
     const std::string depthBytes = readBytes(folder / "depth.exr");
 
     const std::vector<std::string> numericOptions = {
-        "--focus",     "--fstop",  "--focal-length",    "--sensor-width", "--quality",
-        "--coc-limit", "--device", "--aperture-radius", "--autofocus",    "--focus-region"};
+        "--focus",     "--fstop",          "--focal-length",    "--sensor-width", "--quality",
+        "--coc-limit", "--device",         "--aperture-radius", "--autofocus",    "--focus-region",
+        "--blades",    "--blade-rotation", "--roundness",       "--anamorphic",   "--cat-eye"};
     const std::vector<std::string> values = {"",       "nan", "inf",    "-inf",        "1e300", "-1", "0",
                                              "1e-300", "abc", "3.5e38", "99999999999", "-0",    " 1", "1e-42",
                                              "0x10",   "2,3", "33",     "2.5",         "1e-3",  "1e5"};

@@ -671,3 +671,60 @@ TEST_CASE("apply: colour far beyond half's range is blurred, finite, kept in ene
     CHECK(kept == Approx(keptOrdinary).epsilon(0.01));
     CHECK(std::abs(kept - 1.0) < 0.05);  // the blur's own loss at the band's edge, as at 1000
 }
+
+TEST_CASE("aperture options: malformed numbers exit 1 and out-of-range values exit 3 naming the option", "[cli]") {
+    TempFolder folder;
+    writeScene(folder);
+    for (const char* option : {"--blades", "--blade-rotation", "--roundness", "--anamorphic", "--cat-eye"}) {
+        for (const char* text : {"", "1.5x", "abc"}) {
+            CAPTURE(option, text);
+            requireError(runProgram(applyArguments(folder) + " " + option + " " + quote(text)), 1, option);
+        }
+    }
+    const std::pair<const char*, const char*> outOfRange[] = {
+        {"--blades", "2"},       {"--blades", "17"},      {"--blade-rotation", "inf"},
+        {"--roundness", "1.5"},  {"--roundness", "-0.1"}, {"--anamorphic", "0.4"},
+        {"--anamorphic", "2.5"}, {"--cat-eye", "1.1"},    {"--cat-eye", "nan"}};
+    for (const auto& [option, value] : outOfRange) {
+        CAPTURE(option, value);
+        requireError(runProgram(applyArguments(folder, {{option, value}})), 3, option);
+    }
+    CHECK(!fs::exists(folder / "out.exr"));
+}
+
+TEST_CASE("apply: the aperture options reach the effect", "[vulkan]") {
+    TempFolder folder;
+    writeScene(folder);
+    REQUIRE(runProgram(applyArguments(folder)).exitCode == 0);
+    const ImageRGBA round = ffxdof::io::readExrColor(folder / "out.exr");
+    // The round aperture given explicitly is the default, bit for bit.
+    const ProgramResult explicitRound = runProgram(applyArguments(
+        folder, {{"--blades", "0"}, {"--anamorphic", "1"}, {"--cat-eye", "0"}, {"--out", folder / "round.exr"}}));
+    INFO(explicitRound.err);
+    REQUIRE(explicitRound.exitCode == 0);
+    CHECK(ffxdof::io::readExrColor(folder / "round.exr").pixels == round.pixels);
+    for (const Options& shape : {Options{{"--blades", "6"}, {"--blade-rotation", "15"}},
+                                 Options{{"--anamorphic", "1.5"}}, Options{{"--cat-eye", "1"}}}) {
+        Options overrides = shape;
+        overrides["--out"] = folder / "shaped.exr";
+        const ProgramResult shaped = runProgram(applyArguments(folder, overrides));
+        INFO(shaped.err);
+        REQUIRE(shaped.exitCode == 0);
+        const ImageRGBA image = ffxdof::io::readExrColor(folder / "shaped.exr");
+        CHECK(image.pixels != round.pixels);
+        CHECK(std::all_of(image.pixels.begin(), image.pixels.end(), [](float v) { return std::isfinite(v); }));
+    }
+}
+
+TEST_CASE("bench --against-round times an aperture against the round one", "[vulkan]") {
+    const ProgramResult bench =
+        runProgram("bench --width 80 --height 48 --repeat 2 --json --blades 6 --against-round --validate");
+    INFO(bench.err);
+    REQUIRE(bench.exitCode == 0);
+    const nlohmann::json json = nlohmann::json::parse(bench.out);
+    REQUIRE(json.contains("againstRound"));
+    const nlohmann::json& cost = json.at("againstRound");
+    CHECK(cost.at("blurCompositeMs").get<double>() > 0.0);
+    CHECK(cost.at("roundBlurCompositeMs").get<double>() > 0.0);
+    CHECK(cost.at("ratio").get<double>() > 0.0);
+}

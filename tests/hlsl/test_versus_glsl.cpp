@@ -53,7 +53,8 @@ double maxRelativeDifference(const io::ImageRGBA& reference, const io::ImageRGBA
     return largest;
 }
 
-vkrun::HostImage runEffect(const EffectInput& input, const Permutation& permutation, bool useHlsl) {
+vkrun::HostImage runEffect(const EffectInput& input, const Permutation& permutation, bool useHlsl,
+                           const FfxDofAperture& aperture = FfxDofAperture{0, 0.0f, 0.0f, 1.0f, 0.0f}) {
     vkrun::Device& device = validatedDevice();
     vkrun::RunSettings settings;
     settings.colorFormat = VK_FORMAT_R32G32B32A32_SFLOAT;
@@ -68,6 +69,7 @@ vkrun::HostImage runEffect(const EffectInput& input, const Permutation& permutat
     settings.forceFloat32 = !permutation.half;
     settings.useHlsl = useHlsl;
     settings.disableWave64 = true;  // lavapipe has 8-wide subgroups; wave64 is never selected there
+    settings.aperture = aperture;
     const vkrun::RunResult result = vkrun::runEffect(device, input.color, input.depth, settings);
     requireNoValidationMessages(device,
                                 std::string(useHlsl ? "HLSL " : "GLSL ") + input.name + " " + describe(permutation));
@@ -119,6 +121,27 @@ TEST_CASE("HLSL matches GLSL in every permutation on near-object 96x64", "[vulka
 
 TEST_CASE("HLSL matches GLSL in every permutation on far-highlights 67x41", "[vulkan][hlsl]") {
     compareEveryPermutation("far-highlights", 67, 41);
+}
+
+// The aperture's constants reach both languages' shaders alike (docs/aperture.md): odd blades (whose
+// near and far discs differ), rounded blades with an anamorphic squeeze, and the cat's eye.
+TEST_CASE("HLSL matches GLSL with aperture shapes on far-highlights 67x41", "[vulkan][hlsl][aperture]") {
+    const SceneInputs inputs = makeSceneInputs("far-highlights", 67, 41);
+    const FfxDofAperture apertures[] = {
+        {5, 0.35f, 0.0f, 1.0f, 0.0f}, {6, 0.0f, 0.4f, 1.5f, 0.0f}, {0, 0.0f, 0.0f, 1.0f, 1.0f}};
+    for (const FfxDofAperture& aperture : apertures) {
+        for (const bool half : {false, true}) {
+            const Permutation permutation{half, false, true, false};
+            CAPTURE(aperture.bladeCount, aperture.anamorphicRatio, aperture.catEye, describe(permutation));
+            const io::ImageRGBA glsl = toImage(runEffect(inputs.standard, permutation, false, aperture));
+            const io::ImageRGBA hlsl = toImage(runEffect(inputs.standard, permutation, true, aperture));
+            const io::ImageRGBA round = toImage(runEffect(inputs.standard, permutation, false));
+            CHECK(metrics::psnr(glsl, hlsl) >= kMinPsnrDb);
+            CHECK(metrics::maxAbsDifference(glsl, hlsl) <= kMaxAbsDifference);
+            CHECK(maxRelativeDifference(glsl, hlsl) <= kMaxRelativeDifference);
+            CHECK(glsl.pixels != round.pixels);  // the aperture reached the shaders
+        }
+    }
 }
 
 // The in-place composite is deterministic. With FFX_DOF_OPTION_OUTPUT_PRE_INIT the output is the colour
