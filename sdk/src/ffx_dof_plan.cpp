@@ -122,6 +122,23 @@ FfxDofErrorCode planPass(const ContextPlan& context, Pass pass, const shaders::P
     return FFX_DOF_OK;
 }
 
+// A float field of a description, named for the error message.
+struct NamedField {
+    const char* name;
+    float value;
+};
+
+// FFX_DOF_ERROR_INVALID_ARGUMENT naming the first field of `owner` that is not finite.
+template <size_t N>
+FfxDofErrorCode requireFinite(const char* owner, const NamedField (&fields)[N]) {
+    for (const NamedField& field : fields) {
+        if (!std::isfinite(field.value))
+            return fail(FFX_DOF_ERROR_INVALID_ARGUMENT, "%s->%s is %g; it must be finite", owner, field.name,
+                        double(field.value));
+    }
+    return FFX_DOF_OK;
+}
+
 }  // namespace
 
 FfxDofConstants contextConstants(const ContextConfig& config) {
@@ -186,28 +203,21 @@ FfxDofErrorCode buildContextPlan(const ContextConfig& config, const BackendCapab
 }
 
 FfxDofErrorCode checkAutofocus(const FfxDofAutofocus& a) {
-    const struct {
-        const char* name;
-        float value;
-    } fields[] = {{"regionCenter[0]", a.regionCenter[0]},
-                  {"regionCenter[1]", a.regionCenter[1]},
-                  {"regionSize[0]", a.regionSize[0]},
-                  {"regionSize[1]", a.regionSize[1]},
-                  {"aperture", a.aperture},
-                  {"focalLength", a.focalLength},
-                  {"conversion", a.conversion},
-                  {"proj33", a.proj33},
-                  {"proj34", a.proj34},
-                  {"proj43", a.proj43},
-                  {"minFocusDistance", a.minFocusDistance},
-                  {"maxFocusDistance", a.maxFocusDistance},
-                  {"timeConstant", a.timeConstant},
-                  {"deltaTime", a.deltaTime}};
-    for (const auto& field : fields) {
-        if (!std::isfinite(field.value))
-            return fail(FFX_DOF_ERROR_INVALID_ARGUMENT, "pAutofocus->%s is %g; it must be finite", field.name,
-                        double(field.value));
-    }
+    const NamedField fields[] = {{"regionCenter[0]", a.regionCenter[0]},
+                                 {"regionCenter[1]", a.regionCenter[1]},
+                                 {"regionSize[0]", a.regionSize[0]},
+                                 {"regionSize[1]", a.regionSize[1]},
+                                 {"aperture", a.aperture},
+                                 {"focalLength", a.focalLength},
+                                 {"conversion", a.conversion},
+                                 {"proj33", a.proj33},
+                                 {"proj34", a.proj34},
+                                 {"proj43", a.proj43},
+                                 {"minFocusDistance", a.minFocusDistance},
+                                 {"maxFocusDistance", a.maxFocusDistance},
+                                 {"timeConstant", a.timeConstant},
+                                 {"deltaTime", a.deltaTime}};
+    if (const FfxDofErrorCode status = requireFinite("pAutofocus", fields); status != FFX_DOF_OK) return status;
     for (int i = 0; i < 2; ++i) {
         if (a.regionCenter[i] < 0.0f || a.regionCenter[i] > 1.0f)
             return fail(FFX_DOF_ERROR_INVALID_ARGUMENT, "pAutofocus->regionCenter[%d] is %g; it must be in 0..1", i,
@@ -237,18 +247,11 @@ FfxDofErrorCode checkAutofocus(const FfxDofAutofocus& a) {
 }
 
 FfxDofErrorCode checkAperture(const FfxDofAperture& a) {
-    const struct {
-        const char* name;
-        float value;
-    } fields[] = {{"bladeRotation", a.bladeRotation},
-                  {"roundness", a.roundness},
-                  {"anamorphicRatio", a.anamorphicRatio},
-                  {"catEye", a.catEye}};
-    for (const auto& field : fields) {
-        if (!std::isfinite(field.value))
-            return fail(FFX_DOF_ERROR_INVALID_ARGUMENT, "pAperture->%s is %g; it must be finite", field.name,
-                        double(field.value));
-    }
+    const NamedField fields[] = {{"bladeRotation", a.bladeRotation},
+                                 {"roundness", a.roundness},
+                                 {"anamorphicRatio", a.anamorphicRatio},
+                                 {"catEye", a.catEye}};
+    if (const FfxDofErrorCode status = requireFinite("pAperture", fields); status != FFX_DOF_OK) return status;
     if (a.bladeCount != 0 && (a.bladeCount < 3 || a.bladeCount > FFX_DOF_MAX_APERTURE_BLADES))
         return fail(FFX_DOF_ERROR_INVALID_ARGUMENT, "pAperture->bladeCount is %u; it must be 0 (round) or 3..%u",
                     a.bladeCount, FFX_DOF_MAX_APERTURE_BLADES);
