@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 namespace ffxdof::quality {
 
@@ -29,9 +30,16 @@ const std::vector<SceneGate>& sceneGates() {
     return gates;
 }
 
-SceneRender renderScene(const std::string& scene, uint32_t width, uint32_t height, uint32_t lensSamples) {
+SceneRender renderScene(const std::string& scene, uint32_t width, uint32_t height, uint32_t lensSamples,
+                        const ref::ApertureShape& aperture) {
+    ref::SceneSetup setup = ref::makeScene(scene, width, height);
+    setup.camera.aperture = aperture;
+    return renderSetup(std::move(setup), lensSamples);
+}
+
+SceneRender renderSetup(ref::SceneSetup setup, uint32_t lensSamples) {
     SceneRender render;
-    render.setup = ref::makeScene(scene, width, height);
+    render.setup = std::move(setup);
     ref::RenderSettings settings;
     settings.lensSamples = lensSamples;
     render.pinhole = ref::renderPinhole(render.setup.scene, render.setup.camera, settings);
@@ -40,6 +48,17 @@ SceneRender renderScene(const std::string& scene, uint32_t width, uint32_t heigh
     render.convergenceRms = truth.convergenceRms;
     render.radius = metrics::cocRadiusMap(render.setup.camera, render.pinhole.depth);
     return render;
+}
+
+FfxDofAperture effectAperture(const ref::ApertureShape& shape) {
+    constexpr double kRadiansPerDegree = 3.14159265358979323846 / 180.0;
+    FfxDofAperture aperture{};
+    aperture.bladeCount = shape.bladeCount;
+    aperture.bladeRotation = float(shape.bladeRotationDegrees * kRadiansPerDegree);
+    aperture.roundness = float(shape.roundness);
+    aperture.anamorphicRatio = float(shape.anamorphicRatio);
+    aperture.catEye = float(shape.catEye);
+    return aperture;
 }
 
 io::ImageRGBA circularGatherBaseline(const io::ImageRGBA& color, const io::ImageR& radiusPixels) {
@@ -118,6 +137,7 @@ GateResult runGate(vkrun::Device& device, const SceneRender& render, bool inPlac
     settings.cocScale = result.cocScale;
     settings.cocBias = result.cocBias;
     settings.inPlace = inPlace;
+    settings.aperture = effectAperture(camera.aperture);
     const vkrun::RunResult run = vkrun::runEffect(device, color, depth, settings);
     result.ours = io::ImageRGBA(w, h);
     result.ours.pixels = run.output.pixels;

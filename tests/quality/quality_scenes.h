@@ -34,8 +34,15 @@ struct SceneRender {
     double convergenceRms = 0.0;
     io::ImageR radius;  // signed CoC radius, full-resolution pixels (positive near)
 };
+// A built-in scene rendered through the given aperture (default: round).
 SceneRender renderScene(const std::string& scene, uint32_t width = kWidth, uint32_t height = kHeight,
-                        uint32_t lensSamples = kLensSamples);
+                        uint32_t lensSamples = kLensSamples, const ref::ApertureShape& aperture = {});
+// Any scene setup (its camera's aperture included), e.g. one built by the test itself.
+SceneRender renderSetup(ref::SceneSetup setup, uint32_t lensSamples = kLensSamples);
+
+// The effect's description of the reference camera's aperture: the same fields, the rotation in
+// radians (degrees in ref::ApertureShape). The one conversion between the two.
+FfxDofAperture effectAperture(const ref::ApertureShape& shape);
 
 // A plain circular gather: every pixel averages the input over a disc of its own CoC radius, with no
 // regard for depth order (sharp foreground bleeds into blurred background: the halo to beat).
@@ -58,7 +65,8 @@ struct GateResult {
     bool haloGate() const { return !(effect.haloBand.psnr < gather.haloBand.psnr); }  // NaN (empty) passes
 };
 // Runs ffx-dof on the scene's pinhole colour and standard device depth, with cocScale/cocBias from
-// ffxDofCalculateCocScale/Bias and a cocLimitFactor that covers the scene's largest radius.
+// ffxDofCalculateCocScale/Bias, a cocLimitFactor that covers the scene's largest radius and the
+// aperture of the render's camera (effectAperture).
 // inPlace: the output is the color image itself (FFX_DOF_OPTION_OUTPUT_PRE_INIT).
 GateResult runGate(vkrun::Device& device, const SceneRender& render, bool inPlace = false);
 
