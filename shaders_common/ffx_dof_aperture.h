@@ -70,6 +70,7 @@ struct FfxDofPixelAperture
     FfxUInt32 clipDiscs;           // 1 with cat's eye, 0 without (a loop count: see ffxDofApertureDistance)
     FfxFloat32 areaScale;          // pi / the pixel-space area of the shape of radius 1
     FfxFloat32 inscribedRadius;    // of the largest circle |u| < r inside the shape: 1 for round discs
+    FfxUInt32 shapedPasses;        // 0 for the round aperture, 1 for any other
 };
 
 // Position of a pixel relative to the frame's centre, y up, 1 at a corner (the cat's eye's measure).
@@ -136,6 +137,8 @@ FFX_DOF_INLINE FfxDofPixelAperture ffxDofMakeAperture(FfxDofConstants constants,
     FfxFloat32 offset2 = dot(aperture.clipCenter, aperture.clipCenter);
     aperture.clipSlack = max(1.0f - offset2, FFX_DOF_CAT_EYE_MIN_SLACK);
     aperture.clipDiscs = constants.catEye > 0.0f ? 1u : 0u;
+    FfxBoolean round = blades == 0u && aperture.clipDiscs == 0u && constants.anamorphicRatio == 1.0f;
+    aperture.shapedPasses = round ? 0u : 1u;
     aperture.areaScale = constants.apertureAreaScale;
     FfxFloat32 bladeInradius = blades != 0u ? 1.0f / length(constants.bladeNormal) : 1.0f;
     FfxFloat32 clipInradius = aperture.clipDiscs != 0u ? 1.0f - sqrt(offset2) : 1.0f;
@@ -151,13 +154,10 @@ FFX_DOF_INLINE FfxDofPixelAperture ffxDofMakeAperture(FfxDofConstants constants,
     return aperture;
 }
 
-// Gauge of the offset from a pixel to a sample (y down, any unit): the radius a sample needs to
-// reach the pixel. `nearSample`: the sample is in the near field, whose disc is the shape turned 180
-// degrees. For the round aperture this is the offset's length, computed as it always was. The blades
-// and the cat's-eye disc are loops whose count is 0 when they are off: devices that run both sides of
-// a uniform branch (lavapipe) still skip a loop no lane enters, so the circle pays nothing for them.
-FFX_DOF_INLINE FfxFloat32 ffxDofApertureDistance(FfxDofPixelAperture aperture, FfxFloat32x2 sampleOffset,
-                                                 FfxBoolean nearSample)
+// The gauge of a shaped aperture (ffxDofApertureDistance). The blades and the cat's-eye disc are loops
+// whose count is 0 when they are off.
+FFX_DOF_INLINE FfxFloat32 ffxDofShapedApertureDistance(FfxDofPixelAperture aperture, FfxFloat32x2 sampleOffset,
+                                                       FfxBoolean nearSample)
 {
     // A far sample at offset d reaches the pixel at -d: u is -d, y flipped up, x stretched.
     FfxFloat32 side = nearSample ? 1.0f : -1.0f;
@@ -180,6 +180,21 @@ FFX_DOF_INLINE FfxFloat32 ffxDofApertureDistance(FfxDofPixelAperture aperture, F
         FfxFloat32 along = dot(u, aperture.clipCenter);
         gauge = max(gauge, (sqrt(along * along + length2 * aperture.clipSlack) - along) / aperture.clipSlack);
     }
+    return gauge;
+}
+
+// Gauge of the offset from a pixel to a sample (y down, any unit): the radius a sample needs to
+// reach the pixel. `nearSample`: the sample is in the near field, whose disc is the shape turned 180
+// degrees. For the round aperture this is the offset's length, computed as it always was; a shape is
+// a loop of one pass, none for the circle: devices that run both sides of a uniform branch (lavapipe)
+// still skip a loop no lane enters, so the circle pays one test per sample for the shapes.
+FFX_DOF_INLINE FfxFloat32 ffxDofApertureDistance(FfxDofPixelAperture aperture, FfxFloat32x2 sampleOffset,
+                                                 FfxBoolean nearSample)
+{
+    FfxFloat32 gauge = sqrt(dot(sampleOffset, sampleOffset));
+    FFX_DOF_LOOP
+    for (FfxUInt32 pass = 0u; pass < aperture.shapedPasses; ++pass)
+        gauge = ffxDofShapedApertureDistance(aperture, sampleOffset, nearSample);
     return gauge;
 }
 
