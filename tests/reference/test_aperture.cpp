@@ -1,5 +1,6 @@
 // The reference renderer's aperture shapes (issue 18): the unit shape S (blades, roundness, cat's eye),
 // its area, its orientation on screen, the anamorphic squeeze, energy conservation, camera.json.
+#include "emitter_scene.h"
 #include "ffx_dof_reference.h"
 
 #include <glm/geometric.hpp>
@@ -12,6 +13,7 @@
 #include <limits>
 
 using namespace ffxdof;
+using ffxdof::reftest::emitterScene;
 
 namespace {
 
@@ -38,23 +40,6 @@ double gridArea(const ref::UnitAperture& aperture, glm::dvec2 catEyeCenter) {
         }
     }
     return inside * step * step;
-}
-
-// One small bright emitter on black at view depth z seen at pixel (px, py) of a size x size frame, the
-// camera at the origin looking down +Z and focused at `focus`.
-ref::SceneSetup emitterScene(uint32_t size, double focus, double z, double aperture, double px, double py,
-                             double imageRadiusPixels = 0.4) {
-    ref::SceneSetup setup;
-    ref::Camera& camera = setup.camera;
-    camera.width = camera.height = size;
-    camera.focalLength = 0.05;
-    camera.sensorWidth = 0.036;
-    camera.focusDistance = focus;
-    camera.apertureRadius = aperture;
-    const double metresPerPixel = z / (camera.pixelsPerSensorUnit() * camera.imageDistance());
-    const glm::dvec3 center{(px - 0.5 * size) * metresPerPixel, (0.5 * size - py) * metresPerPixel, z};
-    setup.scene.addEmitter(center, imageRadiusPixels * metresPerPixel, {1.0f, 1.0f, 1.0f}, 100.0f);
-    return setup;
 }
 
 // The pixels brighter than half the image's median lit level: the bokeh's outline.

@@ -1,4 +1,5 @@
 #include "ffx_dof_metrics.h"
+#include "emitter_scene.h"
 #include "ffx_dof_reference.h"
 
 #include <nlohmann/json.hpp>
@@ -11,20 +12,10 @@ using namespace ffxdof;
 
 namespace {
 
-// One small bright emitter on black at view depth z, the camera focused at `focus`, with the given
-// aperture radius.
+// One small bright emitter (pinhole image radius 0.4 px: a point for the purpose of the test) on
+// black at view depth z in the frame's centre, the camera focused at `focus`.
 ref::SceneSetup pointScene(uint32_t size, double focus, double z, double aperture) {
-    ref::SceneSetup setup;
-    ref::Camera& camera = setup.camera;
-    camera.width = camera.height = size;
-    camera.focalLength = 0.05;
-    camera.sensorWidth = 0.036;
-    camera.focusDistance = focus;
-    camera.apertureRadius = aperture;
-    // Pinhole image radius 0.4 px: a point for the purpose of the test.
-    const double radius = 0.4 / camera.pixelsPerSensorUnit() * z / camera.imageDistance();
-    setup.scene.addEmitter({0.0, 0.0, z}, radius, {1.0f, 1.0f, 1.0f}, 100.0f);
-    return setup;
+    return reftest::emitterScene(size, focus, z, aperture, 0.5 * size, 0.5 * size);
 }
 
 }  // namespace
