@@ -70,8 +70,31 @@ struct FfxDofPixelAperture
     FfxUInt32 clipDiscs;           // 1 with cat's eye, 0 without (a loop count: see ffxDofApertureDistance)
     FfxFloat32 areaScale;          // pi / the pixel-space area of the shape of radius 1
     FfxFloat32 inscribedRadius;    // of the largest circle |u| < r inside the shape: 1 for round discs
-    FfxUInt32 shapedPasses;        // 0 for the round aperture, 1 for any other
 };
+
+// Whether the dispatch's aperture is anything but round. The blur has a path for each (uniform per
+// dispatch), so that round discs run exactly the circle's code.
+FFX_DOF_INLINE FfxBoolean ffxDofApertureIsShaped(FfxDofConstants constants)
+{
+    return constants.bladeCount != 0u || constants.catEye > 0.0f || constants.anamorphicRatio != 1.0f;
+}
+
+// The round aperture, as the shaped path would see it (for the round path, which never reads it).
+FFX_DOF_INLINE FfxDofPixelAperture ffxDofRoundAperture()
+{
+    FfxDofPixelAperture aperture;
+    aperture.anamorphicRatio = 1.0f;
+    aperture.bladeNormal = FfxFloat32x2(0.0f, 0.0f);
+    aperture.bladeStep = FfxFloat32x2(1.0f, 0.0f);
+    aperture.bladeSidesWalked = 0u;
+    aperture.bladeOppositeSide = 0.0f;
+    aperture.clipCenter = FfxFloat32x2(0.0f, 0.0f);
+    aperture.clipSlack = 1.0f;
+    aperture.clipDiscs = 0u;
+    aperture.areaScale = 1.0f;
+    aperture.inscribedRadius = 1.0f;
+    return aperture;
+}
 
 // Position of a pixel relative to the frame's centre, y up, 1 at a corner (the cat's eye's measure).
 FFX_DOF_INLINE FfxFloat32x2 ffxDofFramePosition(FfxFloat32x2 pixel, FfxFloat32x2 frameSize)
@@ -137,8 +160,6 @@ FFX_DOF_INLINE FfxDofPixelAperture ffxDofMakeAperture(FfxDofConstants constants,
     FfxFloat32 offset2 = dot(aperture.clipCenter, aperture.clipCenter);
     aperture.clipSlack = max(1.0f - offset2, FFX_DOF_CAT_EYE_MIN_SLACK);
     aperture.clipDiscs = constants.catEye > 0.0f ? 1u : 0u;
-    FfxBoolean round = blades == 0u && aperture.clipDiscs == 0u && constants.anamorphicRatio == 1.0f;
-    aperture.shapedPasses = round ? 0u : 1u;
     aperture.areaScale = constants.apertureAreaScale;
     FfxFloat32 bladeInradius = blades != 0u ? 1.0f / length(constants.bladeNormal) : 1.0f;
     FfxFloat32 clipInradius = aperture.clipDiscs != 0u ? 1.0f - sqrt(offset2) : 1.0f;
@@ -154,10 +175,12 @@ FFX_DOF_INLINE FfxDofPixelAperture ffxDofMakeAperture(FfxDofConstants constants,
     return aperture;
 }
 
-// The gauge of a shaped aperture (ffxDofApertureDistance). The blades and the cat's-eye disc are loops
+// Gauge of the offset from a pixel to a sample (y down, any unit): the radius a sample needs to
+// reach the pixel. `nearSample`: the sample is in the near field, whose disc is the shape turned 180
+// degrees. For the round aperture, the offset's length. The blades and the cat's-eye disc are loops
 // whose count is 0 when they are off.
-FFX_DOF_INLINE FfxFloat32 ffxDofShapedApertureDistance(FfxDofPixelAperture aperture, FfxFloat32x2 sampleOffset,
-                                                       FfxBoolean nearSample)
+FFX_DOF_INLINE FfxFloat32 ffxDofApertureDistance(FfxDofPixelAperture aperture, FfxFloat32x2 sampleOffset,
+                                                 FfxBoolean nearSample)
 {
     // A far sample at offset d reaches the pixel at -d: u is -d, y flipped up, x stretched.
     FfxFloat32 side = nearSample ? 1.0f : -1.0f;
@@ -183,27 +206,17 @@ FFX_DOF_INLINE FfxFloat32 ffxDofShapedApertureDistance(FfxDofPixelAperture apert
     return gauge;
 }
 
-// Gauge of the offset from a pixel to a sample (y down, any unit): the radius a sample needs to
-// reach the pixel. `nearSample`: the sample is in the near field, whose disc is the shape turned 180
-// degrees. For the round aperture this is the offset's length, computed as it always was; a shape is
-// a loop of one pass, none for the circle: devices that run both sides of a uniform branch (lavapipe)
-// still skip a loop no lane enters, so the circle pays one test per sample for the shapes.
-FFX_DOF_INLINE FfxFloat32 ffxDofApertureDistance(FfxDofPixelAperture aperture, FfxFloat32x2 sampleOffset,
-                                                 FfxBoolean nearSample)
-{
-    FfxFloat32 gauge = sqrt(dot(sampleOffset, sampleOffset));
-    FFX_DOF_LOOP
-    for (FfxUInt32 pass = 0u; pass < aperture.shapedPasses; ++pass)
-        gauge = ffxDofShapedApertureDistance(aperture, sampleOffset, nearSample);
-    return gauge;
-}
-
 // A sample spreads its energy over its disc: weight proportional to the inverse disc area, normalized
 // so that a round disc of radius r weighs 1 / r^2 (at most 4: radii below half a pixel weigh as half
 // a pixel), and every shape's disc sums to pi like the circle's.
 FFX_DOF_INLINE FfxFloat32 ffxDofApertureAreaWeight(FfxDofPixelAperture aperture, FfxFloat32 absRadius)
 {
     return aperture.areaScale / max(absRadius * absRadius, 0.25f);
+}
+// The same for the round aperture (areaScale 1), as the circle's path computes it.
+FFX_DOF_INLINE FfxFloat32 ffxDofRoundAreaWeight(FfxFloat32 absRadius)
+{
+    return 1.0f / max(absRadius * absRadius, 0.25f);
 }
 
 // ---- The shape's extent, for the kernel walk and the tile passes -------------------------------------

@@ -391,6 +391,7 @@ struct FfxDofGatherParts
     FfxBoolean nearField;     // near sums (scatter-as-gather near layer)
     FfxBoolean farField;      // far buckets
     FfxBoolean equalWeights;  // every radius read is the texel's own: no CoC reads
+    FfxBoolean shaped;        // the aperture is not round (ffx_dof_aperture.h); round discs run the circle's code
 };
 
 // Gathers rings firstRing..lastRing from MIP `mip`: every texel of that MIP whose centre lies in
@@ -426,7 +427,7 @@ FFX_DOF_INLINE void ffxDofGatherRing(FFX_DOF_INOUT(FfxDofGather) gather, FfxDofK
     FfxFloat32 innerBlock = FfxFloat32(1u << (innerBorderMip - mip));
     FfxFloat32 outerBlock = FfxFloat32(1u << (outerBorderMip - mip));
     FfxDofAnnulus annulus = ffxDofMakeAnnulus(kernel.origin * mipScale, innerRadius, outerRadius, innerBlock,
-                                              outerBlock, 1.0f / kernel.aperture.anamorphicRatio);
+                                              outerBlock, parts.shaped ? 1.0f / kernel.aperture.anamorphicRatio : 1.0f);
     FfxDofAnnulusWalk walk = ffxDofAnnulusBegin(annulus);
     FFX_DOF_LOOP
     while (ffxDofAnnulusRowsLeft(annulus, walk))
@@ -444,12 +445,17 @@ FFX_DOF_INLINE void ffxDofGatherRing(FFX_DOF_INOUT(FfxDofGather) gather, FfxDofK
         // clamped one).
         FfxFloat32x2 toTexel = sampleTexel - centerToCorner;
         FfxBoolean nearSample = coc >= FFX_DOF_NEAR_THRESHOLD;
-        FfxFloat32 distance = ffxDofApertureDistance(kernel.aperture, toTexel, nearSample) * texelSize;
+        FfxFloat32 gauge = sqrt(dot(toTexel, toTexel));
+        if (parts.shaped)
+            gauge = ffxDofApertureDistance(kernel.aperture, toTexel, nearSample);
+        FfxFloat32 distance = gauge * texelSize;
         // Near and far samples weigh alike (reach times inverse area).
         FfxFloat32 absCoc = abs(coc);
         FfxFloat32 reach = ffxDofReach(absCoc, distance);
         reach *= valid;
-        FfxFloat32 weight = reach * ffxDofApertureAreaWeight(kernel.aperture, absCoc) * sampleWeight;
+        FfxFloat32 areaWeight =
+            parts.shaped ? ffxDofApertureAreaWeight(kernel.aperture, absCoc) : ffxDofRoundAreaWeight(absCoc);
+        FfxFloat32 weight = reach * areaWeight * sampleWeight;
         FfxFloat32 farShare = nearSample ? 0.0f : valid;
         if (!parts.nearField)
             farShare = valid;
@@ -503,9 +509,11 @@ FFX_DOF_INLINE void ffxDofGatherInnerRings(FFX_DOF_INOUT(FfxDofGather) gather, F
     // MIP, never merged, since a coarse texel's centre, up to a texel away from the light it holds, would
     // move the rim (a triangle's tip came apart). Rings 1 .. mergeableRings form the groups. Round discs:
     // every ring (their rim lies in the outermost one).
-    FfxUInt32 mergeableRings =
-        min(kernel.rings - 1u,
-            FfxUInt32(max(floor(kernel.aperture.inscribedRadius * FfxFloat32(kernel.rings) - 0.5f), 0.0f)));
+    FfxUInt32 mergeableRings = kernel.rings - 1u;
+    if (parts.shaped)
+        mergeableRings =
+            min(mergeableRings,
+                FfxUInt32(max(floor(kernel.aperture.inscribedRadius * FfxFloat32(kernel.rings) - 0.5f), 0.0f)));
     FfxUInt32 groupCount = (mergeableRings + groupSize - 1u) / groupSize;
     FfxFloat32 mergedGroups = mergeAmount * FfxFloat32(groupCount);
     FfxUInt32 coarseMip = min(kernel.baseMip + mergeLog, FfxUInt32(FFX_DOF_OPTION_MAX_MIP - 1));
@@ -552,7 +560,9 @@ FFX_DOF_INLINE void ffxDofGatherInnerRings(FFX_DOF_INOUT(FfxDofGather) gather, F
 }
 
 // The layers of one texel from its finished gather; `result` holds the defaults (texel itself).
-FFX_DOF_INLINE FfxDofBlurResult ffxDofFinishGather(FfxDofGather gather, FfxDofKernel kernel, FfxDofBlurResult result)
+// `fillAreaWeight`: the area weight of the texel's own radius (the hole fill's samples weigh it).
+FFX_DOF_INLINE FfxDofBlurResult ffxDofFinishGather(FfxDofGather gather, FfxDofKernel kernel, FfxFloat32 fillAreaWeight,
+                                                   FfxDofBlurResult result)
 {
     if (gather.nearWeight > 0.0f)
     {
@@ -560,8 +570,7 @@ FFX_DOF_INLINE FfxDofBlurResult ffxDofFinishGather(FfxDofGather gather, FfxDofKe
         result.alpha.x = ffxDofNearOpacity(gather.nearWeight);
     }
     // The hole fill is background to the near texel it fills.
-    FfxFloat32 fillWeight =
-        kernel.centerIsNear ? ffxDofApertureAreaWeight(kernel.aperture, abs(kernel.centerCoc)) : 0.0f;
+    FfxFloat32 fillWeight = kernel.centerIsNear ? fillAreaWeight : 0.0f;
     FfxDofBucket back = gather.farBack;
     back.color += gather.fillSum * fillWeight;
     back.weight += gather.fillCount * fillWeight;
@@ -598,13 +607,32 @@ FFX_DOF_INLINE void ffxDofGatherKernel(FFX_DOF_INOUT(FfxDofGather) gather, FfxDo
 }
 
 FFX_DOF_INLINE FfxDofGatherParts ffxDofMakeGatherParts(FfxBoolean nearField, FfxBoolean farField,
-                                                       FfxBoolean equalWeights)
+                                                       FfxBoolean equalWeights, FfxBoolean shaped)
 {
     FfxDofGatherParts parts;
     parts.nearField = nearField;
     parts.farField = farField;
     parts.equalWeights = equalWeights;
+    parts.shaped = shaped;
     return parts;
+}
+
+// Gathers the kernel on the path of its tile class (`shaped`: a literal at each call).
+FFX_DOF_INLINE void ffxDofGatherTileClass(FFX_DOF_INOUT(FfxDofGather) gather, FfxDofKernel kernel, FfxUInt32 tileClass,
+                                          FfxBoolean shaped, FfxDofConstants constants)
+{
+    // An equal-weight tile is all near or all far; the texel's own radius tells which.
+    FfxBoolean equalNear = kernel.centerCoc >= FFX_DOF_NEAR_THRESHOLD;
+    if (tileClass == FFX_DOF_TILE_CLASS_EQUAL && !equalNear)
+        ffxDofGatherKernel(gather, kernel, ffxDofMakeGatherParts(false, true, true, shaped), constants);
+    if (tileClass == FFX_DOF_TILE_CLASS_EQUAL && equalNear)
+        ffxDofGatherKernel(gather, kernel, ffxDofMakeGatherParts(true, false, true, shaped), constants);
+    if (tileClass == FFX_DOF_TILE_CLASS_FAR_ONLY)
+        ffxDofGatherKernel(gather, kernel, ffxDofMakeGatherParts(false, true, false, shaped), constants);
+    if (tileClass == FFX_DOF_TILE_CLASS_NEAR_ONLY)
+        ffxDofGatherKernel(gather, kernel, ffxDofMakeGatherParts(true, false, false, shaped), constants);
+    if (tileClass == FFX_DOF_TILE_CLASS_MIXED)
+        ffxDofGatherKernel(gather, kernel, ffxDofMakeGatherParts(true, true, false, shaped), constants);
 }
 
 // The blur of one half-res texel; `dilated` is its tile's DILATED_TILES texel from pass 3, `tileClass`
@@ -629,7 +657,7 @@ FFX_DOF_INLINE FfxDofBlurResult ffxDofBlurTexel(FfxUInt32x2 texel, FfxFloat32x4 
     kernel.spacing = kernelRadius / FfxFloat32(kernel.rings);
     kernel.baseMip = FfxUInt32(ffxDofMipForSpacing(kernel.spacing * ffxDofApertureRingSpacingScale(constants)));
     kernel.center = FfxFloat32x2(texel) + FfxFloat32x2(0.5f, 0.5f);
-    kernel.aperture = ffxDofMakeAperture(constants, kernel.center, FfxFloat32x2(constants.halfSize));
+    kernel.aperture = ffxDofRoundAperture();
     kernel.origin = kernel.center + ffxDofKernelJitter(texel, constants.frameIndex);
 
     FfxDofGather gather;
@@ -641,19 +669,23 @@ FFX_DOF_INLINE FfxDofBlurResult ffxDofBlurTexel(FfxUInt32x2 texel, FfxFloat32x4 
     gather.farBack = ffxDofEmptyBucket();
     gather.cocSpread = 0.0f;
 
-    // An equal-weight tile is all near or all far; the texel's own radius tells which.
-    FfxBoolean equalNear = kernel.centerCoc >= FFX_DOF_NEAR_THRESHOLD;
-    if (tileClass == FFX_DOF_TILE_CLASS_EQUAL && !equalNear)
-        ffxDofGatherKernel(gather, kernel, ffxDofMakeGatherParts(false, true, true), constants);
-    if (tileClass == FFX_DOF_TILE_CLASS_EQUAL && equalNear)
-        ffxDofGatherKernel(gather, kernel, ffxDofMakeGatherParts(true, false, true), constants);
-    if (tileClass == FFX_DOF_TILE_CLASS_FAR_ONLY)
-        ffxDofGatherKernel(gather, kernel, ffxDofMakeGatherParts(false, true, false), constants);
-    if (tileClass == FFX_DOF_TILE_CLASS_NEAR_ONLY)
-        ffxDofGatherKernel(gather, kernel, ffxDofMakeGatherParts(true, false, false), constants);
-    if (tileClass == FFX_DOF_TILE_CLASS_MIXED)
-        ffxDofGatherKernel(gather, kernel, ffxDofMakeGatherParts(true, true, false), constants);
-    return ffxDofFinishGather(gather, kernel, result);
+    // Round discs take the circle's path, shaped ones their own: a uniform choice per dispatch, made by
+    // two loops of zero or one pass, since devices that run both sides of a uniform branch (lavapipe)
+    // still skip a loop no lane enters. One path with the shape's values for the circle (a multiply by
+    // 1, loops of no pass per sample) made the circle's blur 1.33 times as long on lavapipe.
+    FfxUInt32 shapedPasses = ffxDofApertureIsShaped(constants) ? 1u : 0u;
+    FfxFloat32 fillAreaWeight = ffxDofRoundAreaWeight(abs(kernel.centerCoc));
+    FFX_DOF_LOOP
+    for (FfxUInt32 roundPass = shapedPasses; roundPass < 1u; ++roundPass)
+        ffxDofGatherTileClass(gather, kernel, tileClass, false, constants);
+    FFX_DOF_LOOP
+    for (FfxUInt32 shapedPass = 0u; shapedPass < shapedPasses; ++shapedPass)
+    {
+        kernel.aperture = ffxDofMakeAperture(constants, kernel.center, FfxFloat32x2(constants.halfSize));
+        fillAreaWeight = ffxDofApertureAreaWeight(kernel.aperture, abs(kernel.centerCoc));
+        ffxDofGatherTileClass(gather, kernel, tileClass, true, constants);
+    }
+    return ffxDofFinishGather(gather, kernel, fillAreaWeight, result);
 }
 
 FFX_DOF_INLINE void ffxDofBlurTile(FfxUInt32x2 groupId, FfxUInt32 localIndex, FfxFloat32x4 dilated, FfxUInt32 tileClass)
