@@ -37,6 +37,10 @@
 #else
 #define FFX_DOF_RING_MERGE_LOG 1
 #endif
+// 1: the blur can draw shaped apertures (FFX_DOF_ENABLE_APERTURE_SHAPES); 0: the circle's code alone.
+#ifndef FFX_DOF_OPTION_APERTURE_SHAPES
+#define FFX_DOF_OPTION_APERTURE_SHAPES 0
+#endif
 // 1: the depth buffer is inverted (near plane at 1).
 #ifndef FFX_DOF_OPTION_REVERSE_DEPTH
 #define FFX_DOF_OPTION_REVERSE_DEPTH 0

@@ -77,10 +77,16 @@ typedef enum FfxDofInitializationFlagBits {
      *  the color image itself (in-place). */
     FFX_DOF_OUTPUT_PRE_INIT = (1 << 1),
     /** Never gather inner kernel rings from higher MIP levels (slower; for reference comparisons). */
-    FFX_DOF_DISABLE_RING_MERGE = (1 << 2)
+    FFX_DOF_DISABLE_RING_MERGE = (1 << 2),
+    /** Dispatches may give a shaped FfxDofAperture (not in FidelityFX DoF 1.1). Without it the blur is the
+     *  circle's code alone; a shader holding both paths made the round aperture's blur 11 to 27% slower
+     *  (docs/aperture.md), so contexts that never shape their bokeh do not pay for it. */
+    FFX_DOF_ENABLE_APERTURE_SHAPES = (1 << 3)
 } FfxDofInitializationFlagBits;
 
-#define FFX_DOF_ALL_FLAGS ((uint32_t)(FFX_DOF_REVERSE_DEPTH | FFX_DOF_OUTPUT_PRE_INIT | FFX_DOF_DISABLE_RING_MERGE))
+#define FFX_DOF_ALL_FLAGS                                                                      \
+    ((uint32_t)(FFX_DOF_REVERSE_DEPTH | FFX_DOF_OUTPUT_PRE_INIT | FFX_DOF_DISABLE_RING_MERGE | \
+                FFX_DOF_ENABLE_APERTURE_SHAPES))
 
 typedef struct FfxDofDimensions2D {
     uint32_t width;
@@ -196,7 +202,8 @@ typedef struct FfxDofDispatchDescription {
      *  cocScale / cocBias are ignored. Read during the call only. */
     const FfxDofAutofocus* pAutofocus;
     /** NULL: a round aperture. Otherwise the aperture's shape for this dispatch (it may change every
-     *  frame at no cost). Read during the call only. */
+     *  frame at no cost); a shape other than the round one needs a context created with
+     *  FFX_DOF_ENABLE_APERTURE_SHAPES (else FFX_DOF_ERROR_INVALID_ARGUMENT). Read during the call only. */
     const FfxDofAperture* pAperture;
 } FfxDofDispatchDescription;
 

@@ -170,6 +170,10 @@ extern "C" FfxDofErrorCode ffxDofContextDispatch(FfxDofContext* pContext,
 
     if (desc.pAperture != nullptr) {
         if (const FfxDofErrorCode status = checkAperture(*desc.pAperture); status != FFX_DOF_OK) return status;
+        if (!isRoundAperture(*desc.pAperture) && !(config.flags & FFX_DOF_ENABLE_APERTURE_SHAPES))
+            return fail(FFX_DOF_ERROR_INVALID_ARGUMENT,
+                        "pAperture is not round; create the context with FFX_DOF_ENABLE_APERTURE_SHAPES to shape the "
+                        "bokeh");
     }
 
     try {

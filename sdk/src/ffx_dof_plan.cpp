@@ -267,6 +267,10 @@ FfxDofErrorCode checkAperture(const FfxDofAperture& a) {
     return FFX_DOF_OK;
 }
 
+bool isRoundAperture(const FfxDofAperture& a) {
+    return (a.bladeCount == 0 || a.roundness >= 1.0f) && a.anamorphicRatio == 1.0f && a.catEye == 0.0f;
+}
+
 void setApertureConstants(const FfxDofAperture& a, FfxDofConstants* c) {
     // Fully round blades are the circle: the blade loop is skipped rather than run to no effect.
     const bool blades = a.bladeCount >= 3 && a.roundness < 1.0f;

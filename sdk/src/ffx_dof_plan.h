@@ -103,6 +103,9 @@ FfxDofErrorCode checkAutofocus(const FfxDofAutofocus& autofocus);
 
 // Checks an aperture description; FFX_DOF_ERROR_INVALID_ARGUMENT naming the field otherwise.
 FfxDofErrorCode checkAperture(const FfxDofAperture& aperture);
+// Whether a checked aperture is the circle (what NULL gives): no blades (or fully round ones),
+// anamorphic ratio 1, no cat's eye.
+bool isRoundAperture(const FfxDofAperture& aperture);
 // The aperture's constants (ffx_dof_aperture.h) for a checked description; the round aperture's
 // are contextConstants' defaults.
 void setApertureConstants(const FfxDofAperture& aperture, FfxDofConstants* constants);

@@ -369,6 +369,19 @@ TEST_CASE_METHOD(Fixture, "each invalid aperture field is refused by name") {
         CHECK(lastError().find(c.field) != std::string::npos);
     }
     CHECK(backend->dispatches.empty());
+    // A shaped aperture needs a context made for shapes; the round one, given any way, does not.
+    const FfxDofAperture hexagon{6, 0.0f, 0.0f, 1.0f, 0.0f};
+    dispatch.pAperture = &hexagon;
+    CHECK(ffxDofContextDispatch(&context, &dispatch) == FFX_DOF_ERROR_INVALID_ARGUMENT);
+    CHECK(lastError().find("FFX_DOF_ENABLE_APERTURE_SHAPES") != std::string::npos);
+    for (const FfxDofAperture& round :
+         {FfxDofAperture{0, 1.0f, 0.5f, 1.0f, 0.0f}, FfxDofAperture{6, 1.0f, 1.0f, 1.0f, 0.0f}}) {
+        dispatch.pAperture = &round;
+        CHECK(ffxDofContextDispatch(&context, &dispatch) == FFX_DOF_OK);
+    }
+    REQUIRE(ffxDofContextDestroy(&context) == FFX_DOF_OK);
+    description.flags = FFX_DOF_ENABLE_APERTURE_SHAPES;
+    REQUIRE(create() == FFX_DOF_OK);
     // The limits themselves are accepted.
     for (const FfxDofAperture& aperture :
          {FfxDofAperture{3, -7.0f, 0.0f, 0.5f, 0.0f}, FfxDofAperture{16, 100.0f, 1.0f, 2.0f, 1.0f},

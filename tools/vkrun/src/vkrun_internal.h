@@ -56,8 +56,14 @@ private:
 // that never heard of apertures take.
 inline const FfxDofAperture* apertureOrNull(const RunSettings& settings) {
     const FfxDofAperture& a = settings.aperture;
-    const bool round = a.bladeCount == 0 && a.anamorphicRatio == 1.0f && a.catEye == 0.0f;
+    const bool round = (a.bladeCount == 0 || a.roundness >= 1.0f) && a.anamorphicRatio == 1.0f && a.catEye == 0.0f;
     return round ? nullptr : &settings.aperture;
+}
+
+// The context's flags: RunSettings::contextFlags, with FFX_DOF_ENABLE_APERTURE_SHAPES when the aperture
+// is shaped (a harness run is one context and one aperture).
+inline uint32_t contextFlagsFor(const RunSettings& settings) {
+    return settings.contextFlags | (apertureOrNull(settings) ? uint32_t(FFX_DOF_ENABLE_APERTURE_SHAPES) : 0u);
 }
 
 }  // namespace ffxdof::vkrun

@@ -256,7 +256,8 @@ RunResult runEffect(Device& device, const HostImage& color, const HostImage& dep
                                           ? VK_IMAGE_LAYOUT_DEPTH_STENCIL_READ_ONLY_OPTIMAL
                                           : VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL;
     const VkImageLayout outputLayout = VK_IMAGE_LAYOUT_GENERAL;
-    const uint32_t contextFlags = settings.contextFlags | (settings.inPlace ? uint32_t(FFX_DOF_OUTPUT_PRE_INIT) : 0u);
+    const uint32_t contextFlags =
+        contextFlagsFor(settings) | (settings.inPlace ? uint32_t(FFX_DOF_OUTPUT_PRE_INIT) : 0u);
     colorImage.upload(color, colorLayout);
     depthImage.upload(depth, depthLayout);
     if (outputImage) {

@@ -96,7 +96,7 @@ HostImage EffectSession::run(const HostImage& color, const HostImage& depth, con
     // A fresh context per frame: its first dispatch uses frame index 0 (see the class comment).
     Context context;
     FfxDofContextDescription description{};
-    description.flags = settings.contextFlags;
+    description.flags = contextFlagsFor(settings);
     description.quality = settings.quality;
     description.resolution = {width, height};
     description.backendInterface = s.backend;
