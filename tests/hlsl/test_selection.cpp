@@ -39,7 +39,7 @@ VKAPI_ATTR PFN_vkVoidFunction VKAPI_CALL recordingGetDeviceProcAddr(VkDevice dev
 }
 
 struct Options {
-    bool hlsl, half, reversedDepth, ringMerge, inPlace;
+    bool hlsl, half, reversedDepth, ringMerge, inPlace, apertureShapes;
 };
 
 const shaders::PassTable* tableFor(bool hlsl, const char* pass) {
@@ -60,6 +60,8 @@ const shaders::Blob& expectedBlob(const shaders::PassTable& table, const Options
             value = options.ringMerge ? 0 : 1;
         else if (macro == "FFX_DOF_OPTION_OUTPUT_PRE_INIT")
             value = options.inPlace;
+        else if (macro == "FFX_DOF_OPTION_APERTURE_SHAPES")
+            value = options.apertureShapes;
         else if (macro != "FFX_DOF_OPTION_WAVE64")
             FAIL("axis " << macro << " is unknown to this test");
         key.emplace_back(macro, value);
@@ -81,9 +83,11 @@ TEST_CASE("the backend creates its pipelines from the blobs of the chosen langua
     vkrun::Device& device = validatedDevice();
     REQUIRE(device.features().shaderFloat16);
     REQUIRE(device.features().storageBuffer16BitAccess);
-    for (uint32_t bits = 0; bits < 32; ++bits) {
-        const Options options{(bits & 1) != 0, (bits & 2) != 0, (bits & 4) != 0, (bits & 8) != 0, (bits & 16) != 0};
-        CAPTURE(options.hlsl, options.half, options.reversedDepth, options.ringMerge, options.inPlace);
+    for (uint32_t bits = 0; bits < 64; ++bits) {
+        const Options options{(bits & 1) != 0, (bits & 2) != 0,  (bits & 4) != 0,
+                              (bits & 8) != 0, (bits & 16) != 0, (bits & 32) != 0};
+        CAPTURE(options.hlsl, options.half, options.reversedDepth, options.ringMerge, options.inPlace,
+                options.apertureShapes);
         uint32_t backendFlags = FFX_DOF_VK_DISABLE_WAVE64;
         if (options.hlsl) backendFlags |= FFX_DOF_VK_USE_HLSL_SHADERS;
         if (!options.half) backendFlags |= FFX_DOF_VK_DISABLE_FLOAT16;
@@ -97,7 +101,8 @@ TEST_CASE("the backend creates its pipelines from the blobs of the chosen langua
         contextInfo.resolution = {67, 41};
         contextInfo.cocLimitFactor = 0.05f;
         contextInfo.flags = contextFlags(options.reversedDepth, options.ringMerge) |
-                            (options.inPlace ? uint32_t(FFX_DOF_OUTPUT_PRE_INIT) : 0u);
+                            (options.inPlace ? uint32_t(FFX_DOF_OUTPUT_PRE_INIT) : 0u) |
+                            (options.apertureShapes ? uint32_t(FFX_DOF_ENABLE_APERTURE_SHAPES) : 0u);
         contextInfo.backendInterface = backend;
         recordedModules.clear();
         FfxDofContext context = nullptr;
