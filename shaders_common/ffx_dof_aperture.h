@@ -72,14 +72,7 @@ struct FfxDofPixelAperture
     FfxFloat32 inscribedRadius;    // of the largest circle |u| < r inside the shape: 1 for round discs
 };
 
-// Whether the dispatch's aperture is anything but round. The blur has a path for each (uniform per
-// dispatch), so that round discs run exactly the circle's code.
-FFX_DOF_INLINE FfxBoolean ffxDofApertureIsShaped(FfxDofConstants constants)
-{
-    return constants.bladeCount != 0u || constants.catEye > 0.0f || constants.anamorphicRatio != 1.0f;
-}
-
-// The round aperture, as the shaped path would see it (for the round path, which never reads it).
+// The round aperture's values (what the circle's path carries, never reading them).
 FFX_DOF_INLINE FfxDofPixelAperture ffxDofRoundAperture()
 {
     FfxDofPixelAperture aperture;

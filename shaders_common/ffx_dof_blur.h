@@ -671,23 +671,13 @@ FFX_DOF_INLINE FfxDofBlurResult ffxDofBlurTexel(FfxUInt32x2 texel, FfxFloat32x4 
 
     FfxFloat32 fillAreaWeight = ffxDofRoundAreaWeight(abs(kernel.centerCoc));
 #if FFX_DOF_OPTION_APERTURE_SHAPES
-    // Round discs take the circle's path, shaped ones their own: a uniform choice per dispatch, made by
-    // two loops of zero or one pass, since devices that run both sides of a uniform branch (lavapipe)
-    // still skip a loop no lane enters. One path with the shape's values for the circle (a multiply by
-    // 1, loops of no pass per sample) made the circle's blur 1.27 times as long on lavapipe, these two
-    // loops 1.23 times, and the mere presence of the shaped path in the shader 1.11 times: hence the
-    // permutation (docs/aperture.md, Cost).
-    FfxUInt32 shapedPasses = ffxDofApertureIsShaped(constants) ? 1u : 0u;
-    FFX_DOF_LOOP
-    for (FfxUInt32 roundPass = shapedPasses; roundPass < 1u; ++roundPass)
-        ffxDofGatherTileClass(gather, kernel, tileClass, false, constants);
-    FFX_DOF_LOOP
-    for (FfxUInt32 shapedPass = 0u; shapedPass < shapedPasses; ++shapedPass)
-    {
-        kernel.aperture = ffxDofMakeAperture(constants, kernel.center, FfxFloat32x2(constants.halfSize));
-        fillAreaWeight = ffxDofApertureAreaWeight(kernel.aperture, abs(kernel.centerCoc));
-        ffxDofGatherTileClass(gather, kernel, tileClass, true, constants);
-    }
+    // The permutation of FFX_DOF_ENABLE_APERTURE_SHAPES: every dispatch takes the shaped path (a round
+    // aperture there gives the circle up to rounding). The circle's own code is the other permutation:
+    // a blur holding both paths, one chosen per dispatch, made the round aperture's blur 1.11 to 1.27
+    // times as long on lavapipe even when the shaped path never ran (docs/aperture.md, Cost).
+    kernel.aperture = ffxDofMakeAperture(constants, kernel.center, FfxFloat32x2(constants.halfSize));
+    fillAreaWeight = ffxDofApertureAreaWeight(kernel.aperture, abs(kernel.centerCoc));
+    ffxDofGatherTileClass(gather, kernel, tileClass, true, constants);
 #else
     ffxDofGatherTileClass(gather, kernel, tileClass, false, constants);
 #endif
