@@ -23,7 +23,7 @@ int main() {
     vulkan.pEnabledFeatures = nullptr;
     if (ffxDofBackendCreateVK(&vulkan, &backend) != FFX_DOF_ERROR_INVALID_POINTER) return 2;
 #endif
-    if (sizeof(FfxDofConstants) != 112) return 3;
+    if (sizeof(FfxDofConstants) != 120) return 3;
     if (consumer_version_from_c() != ffxDofGetEffectVersion()) return 4;
     std::printf("ffx-dof %u.%u.%u consumed\n", FFX_DOF_VERSION_MAJOR, FFX_DOF_VERSION_MINOR, FFX_DOF_VERSION_PATCH);
     return 0;
