@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <limits>
 #include <sstream>
+#include <stdexcept>
 
 namespace ffxdof::quality {
 namespace {
@@ -243,7 +244,8 @@ const std::vector<ShapedSceneGate>& shapedSceneGates() {
         for (const SceneGate& gate : sceneGates()) {
             if (gate.scene == scene) return gate.psnrMarginDb;
         }
-        return 0.0;
+        // A shape's gate without the circle's margin would gate nothing.
+        throw std::logic_error("aperture scene gate: " + scene + " has no circle gate in sceneGates()");
     };
     static const std::vector<ShapedSceneGate> gates = {
         {"far-highlights", kHexagon, circleMargin("far-highlights"),
