@@ -398,6 +398,16 @@ void transition(VkCommandBuffer commandBuffer, VkImage image, VkImageAspectFlags
 
 }  // namespace
 
+uint32_t imageMemoryType(const VkPhysicalDeviceMemoryProperties& properties, uint32_t typeBits) {
+    uint32_t firstFitting = UINT32_MAX;
+    for (uint32_t i = 0; i < properties.memoryTypeCount; ++i) {
+        if ((typeBits & (1u << i)) == 0) continue;
+        if ((properties.memoryTypes[i].propertyFlags & VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT) != 0) return i;
+        if (firstFitting == UINT32_MAX) firstFitting = i;
+    }
+    return firstFitting;
+}
+
 GpuImage::GpuImage(Device& device, uint32_t width, uint32_t height, VkFormat format, VkImageUsageFlags usage,
                    VkImageCreateFlags flags)
     : device_(device), format_(format), width_(width), height_(height) {
@@ -419,7 +429,13 @@ GpuImage::GpuImage(Device& device, uint32_t width, uint32_t height, VkFormat for
     vkGetImageMemoryRequirements(device.device(), image_, &requirements);
     auto allocation = makeInfo<VkMemoryAllocateInfo>(VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO);
     allocation.allocationSize = requirements.size;
-    allocation.memoryTypeIndex = memoryTypeFor(device.physicalDevice(), requirements.memoryTypeBits, 0);
+    VkPhysicalDeviceMemoryProperties memoryProperties{};
+    vkGetPhysicalDeviceMemoryProperties(device.physicalDevice(), &memoryProperties);
+    allocation.memoryTypeIndex = imageMemoryType(memoryProperties, requirements.memoryTypeBits);
+    if (allocation.memoryTypeIndex == UINT32_MAX) {
+        vkDestroyImage(device.device(), image_, nullptr);
+        throw Error("no Vulkan memory type can hold a " + formatName(format) + " image");
+    }
     const VkResult allocated = vkAllocateMemory(device.device(), &allocation, nullptr, &memory_);
     if (allocated == VK_SUCCESS) {
         check(vkBindImageMemory(device.device(), image_, memory_, 0), "vkBindImageMemory");
