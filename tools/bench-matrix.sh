@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # The benchmark matrix of docs/performance.md ("On hardware"): ffx-dof bench at 1080p and 4K, 16- and
-# 32-bit, two CoC limits, a hexagonal aperture against the round one, then one validated bench run.
+# 32-bit, two CoC limits, six blades against the round aperture, then two validated bench runs.
 # Usage: bash tools/bench-matrix.sh [path/to/ffx-dof] [repeat]
 # Every figure is printed by `ffx-dof bench` itself; this script only chooses the settings, so any row of
 # the page can be rerun with the command printed above it.

@@ -356,7 +356,7 @@ TEST_CASE("HDR colour far above the half range stays finite and keeps its energy
     }
 }
 
-TEST_CASE("the harness puts engine images in device-local memory where a type allows it", "[vulkan][harness]") {
+TEST_CASE("memory types: device-local where a type allows it, for the effect and the harness", "[vulkan][harness]") {
     // An NVIDIA-like list: type 0 is system memory with no flags, type 1 device-local, type 2 host
     // memory the device reads over the bus. The first fitting type must not win over device-local.
     VkPhysicalDeviceMemoryProperties properties{};
@@ -365,10 +365,13 @@ TEST_CASE("the harness puts engine images in device-local memory where a type al
     properties.memoryTypes[1].propertyFlags = VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT;
     properties.memoryTypes[2].propertyFlags =
         VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT;
-    CHECK(vkrun::imageMemoryType(properties, 0b111u) == 1u);
-    CHECK(vkrun::imageMemoryType(properties, 0b110u) == 1u);
+    CHECK(vk::chooseMemoryType(properties, 0b111u) == 1u);
+    CHECK(vk::chooseMemoryType(properties, 0b110u) == 1u);
     // No device-local type among the allowed ones: the first allowed; none allowed: UINT32_MAX.
-    CHECK(vkrun::imageMemoryType(properties, 0b101u) == 0u);
-    CHECK(vkrun::imageMemoryType(properties, 0b100u) == 2u);
-    CHECK(vkrun::imageMemoryType(properties, 0u) == UINT32_MAX);
+    CHECK(vk::chooseMemoryType(properties, 0b101u) == 0u);
+    CHECK(vk::chooseMemoryType(properties, 0b100u) == 2u);
+    CHECK(vk::chooseMemoryType(properties, 0u) == UINT32_MAX);
+    // Required properties come first: host-visible memory for a readback, device-local or not.
+    CHECK(vk::chooseMemoryType(properties, 0b111u, VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT) == 2u);
+    CHECK(vk::chooseMemoryType(properties, 0b011u, VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT) == UINT32_MAX);
 }

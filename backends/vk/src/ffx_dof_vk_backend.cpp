@@ -84,16 +84,8 @@ FfxDofErrorCode BackendVK::createContext(const ContextPlan& plan, std::unique_pt
 }
 
 bool BackendVK::findMemoryType(uint32_t typeBits, uint32_t* index, VkMemoryPropertyFlags required) const {
-    for (VkMemoryPropertyFlags wanted :
-         {VkMemoryPropertyFlags(VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT | required), required}) {
-        for (uint32_t i = 0; i < memoryProperties_.memoryTypeCount; ++i) {
-            if ((typeBits & (1u << i)) && (memoryProperties_.memoryTypes[i].propertyFlags & wanted) == wanted) {
-                *index = i;
-                return true;
-            }
-        }
-    }
-    return false;
+    *index = chooseMemoryType(memoryProperties_, typeBits, required);
+    return *index != UINT32_MAX;
 }
 
 VkFormatFeatureFlags BackendVK::optimalFeatures(VkFormat format) const {

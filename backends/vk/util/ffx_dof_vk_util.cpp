@@ -92,4 +92,15 @@ bool isColorFormat(VkFormat format) {
 
 bool isDepthFormat(VkFormat format) { return isDepthAspectFormat(format) || format == VK_FORMAT_R32_SFLOAT; }
 
+uint32_t chooseMemoryType(const VkPhysicalDeviceMemoryProperties& properties, uint32_t typeBits,
+                          VkMemoryPropertyFlags required) {
+    for (VkMemoryPropertyFlags wanted :
+         {VkMemoryPropertyFlags(VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT | required), required}) {
+        for (uint32_t i = 0; i < properties.memoryTypeCount; ++i) {
+            if ((typeBits & (1u << i)) && (properties.memoryTypes[i].propertyFlags & wanted) == wanted) return i;
+        }
+    }
+    return UINT32_MAX;
+}
+
 }  // namespace ffxdof::vk

@@ -4,6 +4,7 @@
 
 #include <vulkan/vulkan.h>
 
+#include <cstdint>
 #include <string>
 
 namespace ffxdof::vk {
@@ -28,5 +29,10 @@ bool isDepthAspectFormat(VkFormat format);
 // The engine formats ffx-dof accepts (docs/integration-vulkan.md): color and output, and depth.
 bool isColorFormat(VkFormat format);
 bool isDepthFormat(VkFormat format);
+// The memory type for a resource: one allowed by `typeBits` with the `required` properties, device-local
+// where one is; UINT32_MAX when none. The first type that fits is system memory on discrete GPUs (on an
+// NVIDIA H100 the harness's images sat there and every pass touching them ran over PCIe).
+uint32_t chooseMemoryType(const VkPhysicalDeviceMemoryProperties& properties, uint32_t typeBits,
+                          VkMemoryPropertyFlags required = 0);
 
 }  // namespace ffxdof::vk

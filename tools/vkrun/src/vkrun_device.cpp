@@ -398,16 +398,6 @@ void transition(VkCommandBuffer commandBuffer, VkImage image, VkImageAspectFlags
 
 }  // namespace
 
-uint32_t imageMemoryType(const VkPhysicalDeviceMemoryProperties& properties, uint32_t typeBits) {
-    uint32_t firstFitting = UINT32_MAX;
-    for (uint32_t i = 0; i < properties.memoryTypeCount; ++i) {
-        if ((typeBits & (1u << i)) == 0) continue;
-        if ((properties.memoryTypes[i].propertyFlags & VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT) != 0) return i;
-        if (firstFitting == UINT32_MAX) firstFitting = i;
-    }
-    return firstFitting;
-}
-
 GpuImage::GpuImage(Device& device, uint32_t width, uint32_t height, VkFormat format, VkImageUsageFlags usage,
                    VkImageCreateFlags flags)
     : device_(device), format_(format), width_(width), height_(height) {
@@ -431,7 +421,7 @@ GpuImage::GpuImage(Device& device, uint32_t width, uint32_t height, VkFormat for
     allocation.allocationSize = requirements.size;
     VkPhysicalDeviceMemoryProperties memoryProperties{};
     vkGetPhysicalDeviceMemoryProperties(device.physicalDevice(), &memoryProperties);
-    allocation.memoryTypeIndex = imageMemoryType(memoryProperties, requirements.memoryTypeBits);
+    allocation.memoryTypeIndex = vk::chooseMemoryType(memoryProperties, requirements.memoryTypeBits);
     if (allocation.memoryTypeIndex == UINT32_MAX) {
         vkDestroyImage(device.device(), image_, nullptr);
         throw Error("no Vulkan memory type can hold a " + formatName(format) + " image");

@@ -18,11 +18,6 @@ void check(VkResult result, const char* what);
 // Throws Error("<call>: <error string> (<last error message>)", code) unless code is FFX_DOF_OK.
 void checkDof(FfxDofErrorCode code, const char* call);
 
-// The memory type of an image the passes read and write (colour, depth, output): the first
-// device-local type among `typeBits`, else the first of them; UINT32_MAX when none. The first type that
-// fits is system memory on discrete GPUs (an NVIDIA H100: every pass touching these images ran over PCIe).
-uint32_t imageMemoryType(const VkPhysicalDeviceMemoryProperties& properties, uint32_t typeBits);
-
 // Bytes of one texel as copied between a buffer and the image (D24_UNORM_S8_UINT: X8_D24, 4 bytes).
 uint32_t bytesPerTexel(VkFormat format);
 // Host floats to texels (color: 4 channels; depth: 1) and color texels back to RGBA floats.
