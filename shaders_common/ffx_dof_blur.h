@@ -289,13 +289,6 @@ FFX_DOF_INLINE FfxFloat32 ffxDofRingMergeAmount(FfxFloat32 cocSpread)
                           (FFX_DOF_RING_MERGE_NOT_FLAT_SPREAD - FFX_DOF_RING_MERGE_FLAT_SPREAD));
 }
 
-// How much a sample of |radius| reaches a pixel `distance` away (scatter-as-gather), with half a
-// pixel of anti-aliasing.
-FFX_DOF_INLINE FfxFloat32 ffxDofReach(FfxFloat32 absRadius, FfxFloat32 distance)
-{
-    return ffxDofSaturate(absRadius - distance + 0.5f);
-}
-
 // A weighted sum of far-field samples.
 struct FfxDofBucket
 {

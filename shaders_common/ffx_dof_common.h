@@ -59,6 +59,14 @@
 
 // ---- CoC ----------------------------------------------------------------------------------------
 
+// How much a sample of |radius| reaches a pixel `distance` away (scatter-as-gather), with half a
+// pixel of anti-aliasing: the blur's gather at half resolution and the composite's own-surface gather
+// at full resolution (both in their own pixels).
+FFX_DOF_INLINE FfxFloat32 ffxDofReach(FfxFloat32 absRadius, FfxFloat32 distance)
+{
+    return ffxDofSaturate(absRadius - distance + 0.5f);
+}
+
 // Signed CoC radius of a depth value, always in 32-bit: rounding depth to 16 bits first would move
 // in-focus pixels next to the near plane out of focus.
 FFX_DOF_INLINE FfxFloat32 ffxDofCocFromDepth(FfxFloat32 depth, FfxFloat32 cocScale, FfxFloat32 cocBias,

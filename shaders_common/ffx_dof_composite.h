@@ -62,6 +62,14 @@ FfxFloat32 ffxDofLoadColorScale();
 #define FFX_DOF_FAR_LAYER_EXTRA_VARIANCE 0.3f
 // From this |radius| (half-res px) on, the far layer alone makes the pixel.
 #define FFX_DOF_FAR_LAYER_ONLY_RADIUS 3.0f
+// Below FFX_DOF_FAR_LAYER_ONLY_RADIUS a pixel's own surface is gathered at full resolution
+// (ffxDofGatherOwnSurface): the half-res layers, upsampled, blur a disc of a few pixels by half its
+// radius again and peak it (the circular gather, which ignores depth, beat them by up to 5 dB there).
+// Over the last half-res pixel of radius below the limit the gather hands over to the layers.
+#define FFX_DOF_OWN_SURFACE_FADE 1.0f
+// Full-res pixels read around the tile: the largest own-surface disc, 2 * 3 + 0.5 rounded up.
+#define FFX_DOF_OWN_SURFACE_BORDER 7
+#define FFX_DOF_OWN_SURFACE_SIDE (FFX_DOF_COMPOSITE_GROUP_EXTENT + 2 * FFX_DOF_OWN_SURFACE_BORDER)
 
 // Back from the effect's range: exact for a power-of-two scale (unless the result is a denormal),
 // clamped to the largest finite float.
@@ -147,6 +155,9 @@ FFX_DOF_GROUPSHARED FfxDofFloat3 ffxDofSharedNear[FFX_DOF_FILTERED_SIDE * FFX_DO
 FFX_DOF_GROUPSHARED FfxDofFloat3 ffxDofSharedFar[FFX_DOF_FILTERED_SIDE * FFX_DOF_FILTERED_SIDE];
 FFX_DOF_GROUPSHARED FfxFloat32x2 ffxDofSharedAlpha[FFX_DOF_FILTERED_SIDE * FFX_DOF_FILTERED_SIDE];
 FFX_DOF_GROUPSHARED FfxFloat32 ffxDofSharedCoc[FFX_DOF_FILTERED_SIDE * FFX_DOF_FILTERED_SIDE];
+// Full-res input around the tile for the own-surface gather: scaled color and |radius| in full-res px.
+FFX_DOF_GROUPSHARED FfxDofFloat3 ffxDofSharedOwnColor[FFX_DOF_OWN_SURFACE_SIDE * FFX_DOF_OWN_SURFACE_SIDE];
+FFX_DOF_GROUPSHARED FfxFloat32 ffxDofSharedOwnRadius[FFX_DOF_OWN_SURFACE_SIDE * FFX_DOF_OWN_SURFACE_SIDE];
 
 #if FFX_DOF_OPTION_OUTPUT_PRE_INIT
 // In place the output image is the input: other workgroups write their tiles during this pass, and
@@ -271,11 +282,63 @@ FFX_DOF_INLINE FfxFloat32x3 ffxDofFixedBlur(FfxDofQuadNeighbourhood neighbourhoo
     return sum / weightSum;
 }
 
+// Whether a tile of (min, max) signed radii (TILES) holds pixels whose own surface is gathered at full
+// resolution: |radius| from the in-focus limit to FFX_DOF_FAR_LAYER_ONLY_RADIUS, near or far. Uniform
+// per workgroup, so the group loads the full-res neighbourhood only where a pixel needs it.
+FFX_DOF_INLINE FfxBoolean ffxDofTileGathersOwnSurface(FfxFloat32x2 tile)
+{
+    FfxBoolean far = tile.x <= -FFX_DOF_IN_FOCUS_RADIUS && tile.y > -FFX_DOF_FAR_LAYER_ONLY_RADIUS;
+    FfxBoolean near = tile.y >= FFX_DOF_NEAR_THRESHOLD && tile.x < FFX_DOF_FAR_LAYER_ONLY_RADIUS;
+    return far || near;
+}
+
+// The pixel's own surface blurred at full resolution: every input pixel q within its disc (2 |radius|
+// full-res px, + half a pixel) that reaches it by q's own radius, each weighing its reach over its
+// disc's area (scatter as gather, like the blur), so a sharper neighbour never spreads beyond its own
+// disc. `local`: the pixel in the group's ffxDofSharedOwn* arrays. Returns the color and, in w, the
+// coverage: the summed weights over pi (1 where the surface goes on all around the disc; less at its
+// edges, where the half-res layers show what lies behind).
+FFX_DOF_INLINE FfxFloat32x4 ffxDofGatherOwnSurface(FfxInt32x2 local, FfxFloat32 absCoc)
+{
+    FfxFloat32 reachLimit = 2.0f * absCoc + 0.5f;
+    FfxInt32 extent = min(FfxInt32(ceil(reachLimit)), FfxInt32(FFX_DOF_OWN_SURFACE_BORDER));
+    FfxFloat32x3 sum = FfxFloat32x3(0.0f, 0.0f, 0.0f);
+    FfxFloat32 weightSum = 0.0f;
+    FFX_DOF_LOOP
+    for (FfxInt32 dy = -extent; dy <= extent; ++dy)
+    {
+        FfxInt32 rowExtent = min(FfxInt32(sqrt(max(reachLimit * reachLimit - FfxFloat32(dy * dy), 0.0f))), extent);
+        FfxInt32 row = (local.y + dy) * FfxInt32(FFX_DOF_OWN_SURFACE_SIDE) + local.x;
+        FFX_DOF_LOOP
+        for (FfxInt32 dx = -rowExtent; dx <= rowExtent; ++dx)
+        {
+            FfxUInt32 index = FfxUInt32(row + dx);
+            FfxFloat32 radius = ffxDofSharedOwnRadius[index];
+            FfxFloat32 weight =
+                ffxDofReach(radius, sqrt(FfxFloat32(dx * dx + dy * dy))) * ffxDofRoundAreaWeight(radius);
+            sum += ffxDofToFloat32x3(ffxDofSharedOwnColor[index]) * weight;
+            weightSum += weight;
+        }
+    }
+    // The pixel itself always weighs (reach 1 at distance 0), so weightSum > 0.
+    return FfxFloat32x4(sum / weightSum, ffxDofSaturate(weightSum * (1.0f / FFX_DOF_PI)));
+}
+
+// Share of the half-res layers in a pixel whose own surface is gathered at full resolution: 0 up to
+// the last FFX_DOF_OWN_SURFACE_FADE half-res px below FFX_DOF_FAR_LAYER_ONLY_RADIUS, 1 from there.
+FFX_DOF_INLINE FfxFloat32 ffxDofOwnSurfaceLayerShare(FfxFloat32 absCoc)
+{
+    return ffxDofSaturate((absCoc - FFX_DOF_FAR_LAYER_ONLY_RADIUS + FFX_DOF_OWN_SURFACE_FADE) *
+                          (1.0f / FFX_DOF_OWN_SURFACE_FADE));
+}
+
 // The composed color of one full-res pixel, `inQuad` (0..1 each way) in its invocation's quad;
-// `filteredOrigin` is the half-res texel at filtered index 0. Returns false (and leaves `color` alone) when the pixel
-// keeps its input value.
+// `filteredOrigin` is the half-res texel at filtered index 0; `ownSurfaceTile` whether the group loaded
+// the full-res neighbourhood from `ownSurfaceOrigin` (ffxDofTileGathersOwnSurface). Returns false (and leaves `color`
+// alone) when the pixel keeps its input value.
 FFX_DOF_INLINE FfxBoolean ffxDofComposePixel(FfxUInt32x2 pixel, FfxUInt32x2 inQuad, FfxInt32x2 filteredOrigin,
                                              FfxDofConstants constants, FfxDofQuadNeighbourhood neighbourhood,
+                                             FfxBoolean ownSurfaceTile, FfxInt32x2 ownSurfaceOrigin,
                                              FFX_DOF_INOUT(FfxFloat32x4) color)
 {
     FfxFloat32 coc =
@@ -324,18 +387,37 @@ FFX_DOF_INLINE FfxBoolean ffxDofComposePixel(FfxUInt32x2 pixel, FfxUInt32x2 inQu
     // half-res layers (background through the near layer) replace its own small blur only as far as
     // the variance match of its radius asks (ffxDofFarBlend), like a far-field pixel's.
     FfxBoolean ownNear = coc >= FFX_DOF_NEAR_THRESHOLD;
-    FfxFloat32 fixedBlurBlend = ffxDofFixedBlurBlend(absCoc, ownNear ? 0.0f : nearOpacity);
-    if (fixedBlurBlend > 0.0f)
-        result = ffxDofLerp(result, ffxDofFixedBlur(neighbourhood, inQuad), fixedBlurBlend);
+    // Radii below FFX_DOF_FAR_LAYER_ONLY_RADIUS: the own surface gathered at full resolution, the half-res
+    // layers where it does not cover the disc and over the fade; elsewhere (or in tiles the test of the
+    // group left out) the input, the fixed 3x3 blur and the layers mixed by their variance.
+    FfxBoolean gatherOwn =
+        ownSurfaceTile && absCoc >= FFX_DOF_IN_FOCUS_RADIUS && absCoc < FFX_DOF_FAR_LAYER_ONLY_RADIUS;
+    FfxFloat32 layerShare = ffxDofFarBlend(absCoc, 1.0f);
+    FfxFloat32 ownCoverage = 1.0f;
+    if (gatherOwn)
+    {
+        FfxFloat32x4 own = ffxDofGatherOwnSurface(FfxInt32x2(pixel) - ownSurfaceOrigin, absCoc);
+        result = FfxFloat32x3(own.x, own.y, own.z);
+        ownCoverage = own.w;
+        layerShare = ffxDofOwnSurfaceLayerShare(absCoc);
+    }
+    else
+    {
+        FfxFloat32 fixedBlurBlend = ffxDofFixedBlurBlend(absCoc, ownNear ? 0.0f : nearOpacity);
+        if (fixedBlurBlend > 0.0f)
+            result = ffxDofLerp(result, ffxDofFixedBlur(neighbourhood, inQuad), fixedBlurBlend);
+    }
     FfxFloat32x3 ownBlur = result;
     if (farWeight > 0.0f)
     {
         FfxFloat32 farValidity = farWeight / farTotal;
-        result = ffxDofLerp(result, farSum / farWeight, ownNear ? farValidity : ffxDofFarBlend(absCoc, farValidity));
+        FfxFloat32 farShare =
+            gatherOwn ? max(layerShare, 1.0f - ownCoverage) * farValidity : ffxDofFarBlend(absCoc, farValidity);
+        result = ffxDofLerp(result, farSum / farWeight, ownNear ? farValidity : farShare);
     }
     result = ffxDofLerp(result, nearColor, ffxDofCubicWeight(nearOpacity));
     if (ownNear)
-        result = ffxDofLerp(ownBlur, result, ffxDofFarBlend(absCoc, 1.0f));
+        result = ffxDofLerp(ownBlur, result, layerShare);
     color = FfxFloat32x4(result.x, result.y, result.z, color.w);
     return true;
 }
@@ -390,6 +472,27 @@ FFX_DOF_INLINE void ffxDofComposite(FfxUInt32x2 groupId, FfxUInt32 localIndex)
         ffxDofSharedRawAlpha[index] = ffxDofLoadLayerAlpha(texel);
     }
     ffxDofGroupBarrier();
+    // The full-res neighbourhood of the own-surface gather, after the barrier above: in place, the
+    // input of the group's own tile is read from group-shared memory (ffxDofCompositeInput).
+    FfxBoolean ownSurfaceTile = ffxDofTileGathersOwnSurface(tile);
+    FfxInt32x2 ownSurfaceOrigin =
+        FfxInt32x2(groupId * extent) - FfxInt32x2(FFX_DOF_OWN_SURFACE_BORDER, FFX_DOF_OWN_SURFACE_BORDER);
+    if (ownSurfaceTile)
+    {
+        for (FfxUInt32 index = localIndex; index < FfxUInt32(FFX_DOF_OWN_SURFACE_SIDE * FFX_DOF_OWN_SURFACE_SIDE);
+             index += FfxUInt32(FFX_DOF_GROUP_THREADS))
+        {
+            FfxInt32x2 pixel =
+                clamp(ownSurfaceOrigin + FfxInt32x2(FfxInt32(index % FfxUInt32(FFX_DOF_OWN_SURFACE_SIDE)),
+                                                    FfxInt32(index / FfxUInt32(FFX_DOF_OWN_SURFACE_SIDE))),
+                      FfxInt32x2(0, 0), FfxInt32x2(constants.fullSize) - FfxInt32x2(1, 1));
+            FfxFloat32x4 inputColor = ffxDofCompositeInput(FfxUInt32x2(pixel), quad, scale);
+            ffxDofSharedOwnColor[index] = ffxDofToDofFloat3(FfxFloat32x3(inputColor.x, inputColor.y, inputColor.z));
+            ffxDofSharedOwnRadius[index] =
+                2.0f * abs(ffxDofCocFromDepth(ffxDofLoadInputDepth(FfxUInt32x2(pixel)), constants.cocScale,
+                                              constants.cocBias, constants.cocLimit));
+        }
+    }
     FfxInt32x2 filteredOrigin = tileOrigin - FfxInt32x2(1, 1);
     for (FfxUInt32 index = localIndex; index < FfxUInt32(FFX_DOF_FILTERED_SIDE * FFX_DOF_FILTERED_SIDE);
          index += FfxUInt32(FFX_DOF_GROUP_THREADS))
@@ -413,10 +516,12 @@ FFX_DOF_INLINE void ffxDofComposite(FfxUInt32x2 groupId, FfxUInt32 localIndex)
             continue;
         FfxFloat32x4 color = neighbourhood.color[(inQuad.y + 1u) * 4u + inQuad.x + 1u];
 #if FFX_DOF_OPTION_OUTPUT_PRE_INIT
-        if (ffxDofComposePixel(pixel, inQuad, filteredOrigin, constants, neighbourhood, color))
+        if (ffxDofComposePixel(pixel, inQuad, filteredOrigin, constants, neighbourhood, ownSurfaceTile,
+                               ownSurfaceOrigin, color))
             ffxDofStoreOutput(pixel, ffxDofUnscaleColor(color, scale));
 #else
-        if (ffxDofComposePixel(pixel, inQuad, filteredOrigin, constants, neighbourhood, color))
+        if (ffxDofComposePixel(pixel, inQuad, filteredOrigin, constants, neighbourhood, ownSurfaceTile,
+                               ownSurfaceOrigin, color))
             ffxDofStoreOutput(pixel, ffxDofUnscaleColor(color, scale));
         else
             ffxDofStoreOutput(pixel, ffxDofLoadInputColor(pixel));

@@ -569,6 +569,85 @@ TEST_CASE("Layer blend weights match the variance of the pixel's disc", "[compos
     CHECK(ffxDofFarBlend(2.5f, 1.0f) > ffxDofFarBlend(2.0f, 1.0f));
 }
 
+namespace {
+
+// Fills the composite's own-surface arrays (full-res |radius| and color per pixel of the 30 x 30
+// neighbourhood) from a function of the pixel, and gathers at `pixel` for its own half-res |radius|.
+template <typename Radius, typename Color>
+glm::vec4 gatherOwnSurfaceAt(glm::ivec2 pixel, float halfResRadius, Radius radiusAt, Color colorAt) {
+    const int side = FFX_DOF_OWN_SURFACE_SIDE;
+    for (int y = 0; y < side; ++y) {
+        for (int x = 0; x < side; ++x) {
+            ffxDofSharedOwnRadius[y * side + x] = radiusAt(glm::ivec2(x, y));
+            ffxDofSharedOwnColor[y * side + x] = colorAt(glm::ivec2(x, y));
+        }
+    }
+    return ffxDofGatherOwnSurface(pixel, halfResRadius);
+}
+
+}  // namespace
+
+TEST_CASE("The own-surface gather blurs a pixel's own disc at full resolution", "[composite]") {
+    const glm::ivec2 centre(FFX_DOF_OWN_SURFACE_SIDE / 2, FFX_DOF_OWN_SURFACE_SIDE / 2);
+    const glm::vec3 background(0.25f, 0.5f, 0.75f);
+    for (float halfResRadius : {0.5f, 1.0f, 2.0f, 2.9f}) {
+        const float radius = 2.0f * halfResRadius;  // full-res px
+        auto uniform = [&](glm::ivec2) { return radius; };
+        auto flat = [&](glm::ivec2) { return background; };
+        INFO("half-res radius " << halfResRadius);
+        // A surface of one radius all around: its own color, fully covered.
+        const glm::vec4 solid = gatherOwnSurfaceAt(centre, halfResRadius, uniform, flat);
+        CHECK(solid.x == Approx(background.x).epsilon(1e-5));
+        CHECK(solid.z == Approx(background.z).epsilon(1e-5));
+        CHECK(solid.w == Approx(1.0f).margin(0.06));
+
+        // One bright pixel on that surface spreads its energy over its disc: summed over every pixel
+        // it reaches, what it adds is its own excess (scatter as gather), within 3%.
+        const glm::ivec2 light = centre;
+        auto withLight = [&](glm::ivec2 q) { return q == light ? background + glm::vec3(100.0f) : background; };
+        double added = 0.0;
+        const int reach = int(std::ceil(radius + 0.5f));
+        for (int dy = -reach; dy <= reach; ++dy)
+            for (int dx = -reach; dx <= reach; ++dx)
+                added +=
+                    gatherOwnSurfaceAt(light + glm::ivec2(dx, dy), halfResRadius, uniform, withLight).x - background.x;
+        CHECK(added == Approx(100.0).epsilon(0.03));
+    }
+
+    // A sharp neighbour (in focus, radius 0) two pixels away spreads nothing into a blurred pixel; a
+    // blurred one of the same radius does.
+    auto sharpAt = [&](glm::ivec2 q) { return q == centre + glm::ivec2(2, 0) ? 0.0f : 4.0f; };
+    auto brightAt = [&](glm::ivec2 q) { return q == centre + glm::ivec2(2, 0) ? glm::vec3(50.0f) : background; };
+    CHECK(gatherOwnSurfaceAt(centre, 2.0f, sharpAt, brightAt).x == Approx(background.x).epsilon(1e-5));
+    CHECK(gatherOwnSurfaceAt(
+              centre, 2.0f, [](glm::ivec2) { return 4.0f; }, brightAt)
+              .x > background.x + 0.5f);
+
+    // At the edge of a surface (its right half sharp, in front): about half the disc covered, so the
+    // half-res layers show through by the rest.
+    auto halfPlane = [&](glm::ivec2 q) { return q.x > centre.x ? 0.0f : 4.0f; };
+    const float edgeCoverage = gatherOwnSurfaceAt(centre, 2.0f, halfPlane, [&](glm::ivec2) { return background; }).w;
+    CHECK(edgeCoverage > 0.4f);
+    CHECK(edgeCoverage < 0.7f);
+}
+
+TEST_CASE("The own-surface gather covers radii below the far-layer radius, and hands over to the layers",
+          "[composite]") {
+    // Tiles of (min, max) signed radii, half-res px.
+    CHECK_FALSE(ffxDofTileGathersOwnSurface(glm::vec2(-0.4f, 0.4f)));   // in focus
+    CHECK_FALSE(ffxDofTileGathersOwnSurface(glm::vec2(-9.0f, -3.0f)));  // far layer alone
+    CHECK_FALSE(ffxDofTileGathersOwnSurface(glm::vec2(3.0f, 9.0f)));    // near layer alone
+    CHECK(ffxDofTileGathersOwnSurface(glm::vec2(-9.0f, -2.9f)));
+    CHECK(ffxDofTileGathersOwnSurface(glm::vec2(-0.5f, 0.0f)));
+    CHECK(ffxDofTileGathersOwnSurface(glm::vec2(2.9f, 9.0f)));
+    CHECK(ffxDofTileGathersOwnSurface(glm::vec2(-9.0f, 9.0f)));
+    // The gather's neighbourhood holds the largest disc the composite gathers.
+    CHECK(float(FFX_DOF_OWN_SURFACE_BORDER) >= 2.0f * FFX_DOF_FAR_LAYER_ONLY_RADIUS + 0.5f);
+    CHECK(ffxDofOwnSurfaceLayerShare(FFX_DOF_FAR_LAYER_ONLY_RADIUS - FFX_DOF_OWN_SURFACE_FADE) == 0.0f);
+    CHECK(ffxDofOwnSurfaceLayerShare(FFX_DOF_FAR_LAYER_ONLY_RADIUS - 0.5f * FFX_DOF_OWN_SURFACE_FADE) == Approx(0.5f));
+    CHECK(ffxDofOwnSurfaceLayerShare(FFX_DOF_FAR_LAYER_ONLY_RADIUS) == 1.0f);
+}
+
 TEST_CASE("sRGB encoding", "[composite]") {
     CHECK(ffxDofLinearToSrgb(0.0f) == 0.0f);
     CHECK(ffxDofLinearToSrgb(1.0f) == Approx(1.0f));
