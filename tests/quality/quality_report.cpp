@@ -76,10 +76,12 @@ int main(int argc, char** argv) {
               "Gaussian window, sigma 1.5). Regions come from the CoC radius of the pinhole depth in "
               "full-resolution pixels: in focus (|r| < 1), near field (r >= 1), far field (r <= -1), halo band "
               "(far-field pixels within 8 px of an in-focus pixel). The *circular gather* is the baseline of "
-              "the halo gate: each pixel averages the input over a disc of its own radius, ignoring depth order.\n\n"
+              "the halo and gather gates: each pixel averages the input over a disc of its own radius, ignoring "
+              "depth order.\n\n"
            << "Gates per scene: PSNR(ffx-dof, truth) >= PSNR(input, truth) + margin; in-focus pixels not "
               "reachable by a near-field blur stay within 1/255 of the input; halo-band PSNR of ffx-dof >= that "
-              "of the circular gather.\n\n"
+              "of the circular gather; overall PSNR of ffx-dof >= that of the circular gather (a known failure "
+              "where marked, tested as such).\n\n"
            << "Pictures, left to right: input (pinhole), ffx-dof, truth, |ffx-dof - truth| x 4, circular gather. "
               "8-bit sRGB, values above 1 clipped.\n\n";
         for (const quality::SceneGate& gate : quality::sceneGates()) {
@@ -124,6 +126,10 @@ int main(int argc, char** argv) {
                << (result.inFocusGate() ? "pass" : "**FAIL**") << " |\n"
                << "| halo band PSNR vs circular gather | >= " << decibels(result.gather.haloBand.psnr) << " dB | "
                << decibels(result.effect.haloBand.psnr) << " dB | " << (result.haloGate() ? "pass" : "**FAIL**")
+               << " |\n"
+               << "| PSNR vs circular gather | >= " << decibels(result.gather.psnr) << " dB | "
+               << decibels(result.effect.psnr) << " dB | "
+               << (result.gatherGate() ? "pass" : (gate.atLeastGather ? "**FAIL**" : "known failure"))
                << " |\n\nWhy this margin: " << gate.rationale << ".\n\n";
             std::printf("%-16s psnr input %s, ffx-dof %s, gather %s dB (%.1f s)\n", gate.scene.c_str(),
                         decibels(result.input.psnr).c_str(), decibels(result.effect.psnr).c_str(),

@@ -37,7 +37,19 @@ TEST_CASE("quality gates per scene against the thin-lens truth", "[quality][vulk
             CHECK(result.inFocusGate());
             CHECK(result.inFocusPixels > 0);
             CHECK(result.haloGate());
+            if (gate.atLeastGather) CHECK(result.gatherGate());
         }
+    }
+}
+
+TEST_CASE("far-highlights: at least the circular gather overall - known failure", "[quality][vulkan][!shouldfail]") {
+    // Half-res discs of bright lights have soft, wide rims (docs/quality.md); remove the tag and the scene's
+    // atLeastGather = false once ffx-dof reaches the gather here.
+    for (const quality::SceneGate& gate : quality::sceneGates()) {
+        if (gate.atLeastGather) continue;
+        const quality::GateResult result = quality::runGate(sharedDevice(), quality::renderScene(gate.scene));
+        INFO("scene " << gate.scene << ": ffx-dof " << result.effect.psnr << " dB, gather " << result.gather.psnr);
+        CHECK(result.gatherGate());
     }
 }
 
@@ -76,7 +88,7 @@ TEST_CASE("bokeh of a single far point: flatness and energy", "[quality][vulkan]
 TEST_CASE("in place equals out of place within the documented tolerance", "[quality][vulkan]") {
     // Documented tolerance (docs/technique.md): in place, the composite reads the input of other tiles from the
     // half-res color (other workgroups overwrite it during the pass): the fixed 3x3 blur of a tile's border pixels
-    // and the full-res own-surface gather of small radii (up to 9 px beyond the tile) see 2x2 bilateral averages
+    // and the full-res own-surface gather of small radii (up to 7 px beyond the tile) see 2x2 bilateral averages
     // there (ffx_dof_composite.h). The only difference to out of place.
     const quality::SceneRender render = quality::renderScene("floor");
     vkrun::Device& device = sharedDevice();
@@ -88,13 +100,13 @@ TEST_CASE("in place equals out of place within the documented tolerance", "[qual
     const double maxDifference = metrics::maxAbsDifference(outOfPlace.ours, inPlace.ours);
     INFO("in place vs out of place: PSNR " << difference.psnr << " dB, max abs difference " << maxDifference);
     CHECK(device.validationMessages().empty());
-    // Measured on lavapipe: 43.9 dB and 0.094 on this high-contrast checker floor (45.9 dB and 0.065 before the
+    // Measured on lavapipe: 45.3 dB and 0.065 on this high-contrast checker floor (45.9 dB and 0.065 before the
     // own-surface gather, when only the fixed blur read beyond the tile).
-    CHECK(difference.psnr >= 43.0);
-    CHECK(maxDifference <= 0.11);
+    CHECK(difference.psnr >= 44.0);
+    CHECK(maxDifference <= 0.08);
     // No race: two in-place runs agree bit for bit.
     CHECK(inPlace.ours.pixels == inPlaceAgain.ours.pixels);
-    // Measured: 0.51 dB lower in place (34.07 against 34.59 dB; the half-res input beyond the tile), and still
-    // 0.87 dB above out of place before the own-surface gather (33.20 dB).
-    CHECK(inPlace.effect.psnr >= outOfPlace.effect.psnr - 0.7);
+    // Measured: 0.29 dB lower in place (34.49 against 34.78 dB; the half-res input beyond the tile), and still
+    // 1.29 dB above out of place before the own-surface gather (33.20 dB).
+    CHECK(inPlace.effect.psnr >= outOfPlace.effect.psnr - 0.4);
 }

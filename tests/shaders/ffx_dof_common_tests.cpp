@@ -635,10 +635,12 @@ TEST_CASE("The own-surface gather covers radii below the far-layer radius, and h
           "[composite]") {
     // Tiles of (min, max) signed radii, half-res px.
     CHECK_FALSE(ffxDofTileGathersOwnSurface(glm::vec2(-0.4f, 0.4f)));   // in focus
+    CHECK_FALSE(ffxDofTileGathersOwnSurface(glm::vec2(-0.9f, 0.9f)));   // the fixed 3x3 blur's radii
     CHECK_FALSE(ffxDofTileGathersOwnSurface(glm::vec2(-9.0f, -3.0f)));  // far layer alone
     CHECK_FALSE(ffxDofTileGathersOwnSurface(glm::vec2(3.0f, 9.0f)));    // near layer alone
     CHECK(ffxDofTileGathersOwnSurface(glm::vec2(-9.0f, -2.9f)));
-    CHECK(ffxDofTileGathersOwnSurface(glm::vec2(-0.5f, 0.0f)));
+    CHECK(ffxDofTileGathersOwnSurface(glm::vec2(-1.0f, 0.0f)));
+    CHECK(ffxDofTileGathersOwnSurface(glm::vec2(0.0f, 1.0f)));
     CHECK(ffxDofTileGathersOwnSurface(glm::vec2(2.9f, 9.0f)));
     CHECK(ffxDofTileGathersOwnSurface(glm::vec2(-9.0f, 9.0f)));
     // The gather's neighbourhood holds the largest disc the composite gathers.
