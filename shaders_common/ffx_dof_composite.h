@@ -15,7 +15,10 @@
 //      |radius| 0.76 half-res px (ffxDofFixedBlurBlend; left out under a near-field opacity above
 //      FFX_DOF_NEAR_BLOCKS_FIXED_BLUR, where it would spread foreground color), the far layer over
 //      it, alone from FFX_DOF_FAR_LAYER_ONLY_RADIUS (ffxDofFarBlend), and the near layer on top
-//      (ffxDofCubicWeight).
+//      (ffxDofCubicWeight). Between FFX_DOF_OWN_SURFACE_MIN_RADIUS and FFX_DOF_FAR_LAYER_ONLY_RADIUS the
+//      pixel's own surface is instead gathered at full resolution from a 30 x 30 neighbourhood the
+//      group loads once (ffxDofGatherOwnSurface), the far layer showing where that surface does not
+//      cover the disc, and handing over to the layers over the last half-res px.
 // The composite also writes 0 to GLOBALS for the next dispatch (pass 3 has read it).
 // HDR range: the input color is multiplied by the frame's ffxDofColorRangeScale (from GLOBALS, written
 // by pass 2) as it is read, in 32-bit, so all the work happens in the range of the half-res layers;
