@@ -17,9 +17,9 @@ const std::vector<SceneGate>& sceneGates() {
         {"near-object", 17.5,
          "a large blurred near sphere: most of the input's error is there and the effect removes most of it"},
         {"far-highlights", 6.0,
-         "bright far bokeh: the effect's discs are brighter in the centre than the truth's flat ones; their rims, "
-         "upsampled from half resolution, are softer and wider than the truth's, which the circular gather, at full "
-         "resolution, keeps sharp (below it overall: a known failure)",
+         "bright far bokeh: the discs' rims, anti-aliased at half resolution and upsampled, are softer and wider "
+         "than the truth's, which a disc brighter than display white shows as a wider disc with colour fringes; the "
+         "circular gather, at full resolution, keeps them sharp (below it overall: a known failure)",
          false},
         {"mid-lights", 6.0,
          "small lights nearer than a far background (issue 17): each must spread into its own disc, no sharp "
