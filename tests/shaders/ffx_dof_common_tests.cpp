@@ -480,12 +480,18 @@ TEST_CASE("Median of nine matches nth_element", "[postfilter]") {
     }
 }
 
-TEST_CASE("Median gain", "[postfilter]") {
-    CHECK(ffxDofMedianGain(2.0f, 1.0f) == Approx(0.5f));
-    CHECK(ffxDofMedianGain(1.0f, 1.5f) == Approx(1.5f));
-    CHECK(ffxDofMedianGain(1.0f, 100.0f) == Approx(FFX_DOF_MEDIAN_MAX_GAIN));
-    CHECK(ffxDofMedianGain(1.0f, 0.0f) == 1.0f);
-    CHECK(ffxDofMedianGain(0.0f, 1.0f) == 1.0f);
+TEST_CASE("Outlier gain moves only a texel outside its neighbours' range", "[postfilter]") {
+    // Hot and cold spots are pulled to the nearest neighbour's luminance.
+    CHECK(ffxDofOutlierGain(2.0f, 0.5f, 1.0f) == Approx(0.5f));
+    CHECK(ffxDofOutlierGain(1.0f, 1.5f, 3.0f) == Approx(1.5f));
+    // Within the range (an edge, a disc's rim): unchanged, so no energy is taken.
+    CHECK(ffxDofOutlierGain(1.0f, 0.0f, 10.0f) == 1.0f);
+    CHECK(ffxDofOutlierGain(1.0f, 1.0f, 1.0f) == 1.0f);
+    // Bounded brightening; a black texel stays black.
+    CHECK(ffxDofOutlierGain(1.0f, 100.0f, 200.0f) == Approx(FFX_DOF_OUTLIER_MAX_GAIN));
+    CHECK(ffxDofOutlierGain(0.0f, 1.0f, 2.0f) == 1.0f);
+    // A lone bright texel among black ones goes black.
+    CHECK(ffxDofOutlierGain(5.0f, 0.0f, 0.0f) == 0.0f);
 }
 
 TEST_CASE("Cubic weight is flat at both ends", "[postfilter]") {
