@@ -11,7 +11,8 @@
 //   Far field (everything else): two layers, the texel's own surface and nearer (front) and what
 //   lies behind it (back), composed by the front's coverage (ffxDofComposeFarLayers). A sample only
 //   counts within its own radius, so in-focus and foreground color never spreads into the far field
-//   beyond it.
+//   beyond it. A far sample whose light over its own disc exceeds display white (in the input's
+//   units: GLOBALS' colour scale) spreads over a slightly smaller disc (ffxDofHighlightSpreadRadius).
 //   Hole filling: when the texel itself is near, every far-field sample, whatever its reach, is
 //   also summed as the fill and added to the far color at the end, each weighing what a sample of
 //   the texel's own radius would: the hidden background is extrapolated from around the object.
@@ -53,6 +54,7 @@ FfxFloat32 ffxDofLoadCocMip(FfxInt32x2 texel, FfxUInt32 mip);
 void ffxDofStoreNearColor(FfxUInt32x2 texel, FfxDofFloat3 color);
 void ffxDofStoreFarColor(FfxUInt32x2 texel, FfxDofFloat3 color);
 void ffxDofStoreLayerAlpha(FfxUInt32x2 texel, FfxFloat32x2 nearOpacityFarValidity);
+FfxFloat32 ffxDofLoadColorScale();
 #endif
 
 // ---- Tuning constants -------------------------------------------------------------------------------
@@ -72,6 +74,22 @@ void ffxDofStoreLayerAlpha(FfxUInt32x2 texel, FfxFloat32x2 nearOpacityFarValidit
 // its own surface (front layer), so that a receding surface is not split into layers; the share then
 // falls to 0 over one more pixel (ffxDofFarFrontShare).
 #define FFX_DOF_FAR_FRONT_TOLERANCE 0.5f
+// Highlights: a far sample whose light, spread over its own disc, comes near display white (its disc
+// level: luminance x texel area / disc area, in the input's units) is spread over a disc up to
+// FFX_DOF_HIGHLIGHT_INSET half-res px smaller, its area weight following, so its energy is kept. The
+// half-res rim ramp and the bilinear upsample widen every disc by about a full-res pixel each side,
+// which a disc below white hides and a disc above white shows as a wider, fringed disc. The inset
+// grows from a disc level of FFX_DOF_HIGHLIGHT_LEVEL to twice that.
+#define FFX_DOF_HIGHLIGHT_INSET 0.25f
+#define FFX_DOF_HIGHLIGHT_LEVEL 0.5f
+
+// Radius over which a far sample of |radius| `absRadius` spreads its light, from its disc level
+// (FFX_DOF_HIGHLIGHT_INSET).
+FFX_DOF_INLINE FfxFloat32 ffxDofHighlightSpreadRadius(FfxFloat32 absRadius, FfxFloat32 discLevel)
+{
+    FfxFloat32 inset = FFX_DOF_HIGHLIGHT_INSET * ffxDofSaturate(discLevel / FFX_DOF_HIGHLIGHT_LEVEL - 1.0f);
+    return max(absRadius - inset, min(absRadius, 0.5f));
+}
 
 // Tile classes of the blur pass (ffxDofClassifyTile), cheapest first.
 #define FFX_DOF_TILE_CLASS_COPY 0u       // every kernel is in focus: the texel is the far layer
@@ -375,6 +393,7 @@ struct FfxDofKernel
     FfxUInt32 rings;
     FfxBoolean centerIsNear;
     FfxDofPixelAperture aperture;  // the bokeh shape this texel sees
+    FfxFloat32 inverseColorScale;  // 1 / ffxDofColorRangeScale: the color MIPs back in input units
 };
 
 // Which parts of the gather a tile class needs; literals at every call, so what a path leaves out
@@ -405,6 +424,8 @@ FFX_DOF_INLINE void ffxDofGatherRing(FFX_DOF_INOUT(FfxDofGather) gather, FfxDofK
     FfxBoolean holeFill = parts.nearField && parts.farField;
     FfxFloat32 texelSize = FfxFloat32(1u << mip);
     FfxFloat32 sampleWeight = texelSize * texelSize * presence;
+    // Disc level of a sample = luminance x area weight x this (texel area / pi, back in input units).
+    FfxFloat32 levelScale = texelSize * texelSize * (1.0f / FFX_DOF_PI) * kernel.inverseColorScale;
     FfxFloat32 centerAbsCoc = abs(kernel.centerCoc);
     FfxFloat32x3 ringFillSum = FfxFloat32x3(0.0f, 0.0f, 0.0f);
     FfxFloat32 ringFillCount = 0.0f;
@@ -444,10 +465,18 @@ FFX_DOF_INLINE void ffxDofGatherRing(FFX_DOF_INOUT(FfxDofGather) gather, FfxDofK
         FfxFloat32 distance = gauge * texelSize;
         // Near and far samples weigh alike (reach times inverse area).
         FfxFloat32 absCoc = abs(coc);
-        FfxFloat32 reach = ffxDofReach(absCoc, distance);
-        reach *= valid;
         FfxFloat32 areaWeight =
             parts.shaped ? ffxDofApertureAreaWeight(kernel.aperture, absCoc) : ffxDofRoundAreaWeight(absCoc);
+        FfxFloat32 spreadRadius = absCoc;
+        if (!nearSample)
+        {
+            FfxFloat32 discLevel = ffxDofLuminance(ffxDofToDofFloat3(color)) * areaWeight * levelScale;
+            spreadRadius = ffxDofHighlightSpreadRadius(absCoc, discLevel);
+            areaWeight = parts.shaped ? ffxDofApertureAreaWeight(kernel.aperture, spreadRadius)
+                                      : ffxDofRoundAreaWeight(spreadRadius);
+        }
+        FfxFloat32 reach = ffxDofReach(spreadRadius, distance);
+        reach *= valid;
         FfxFloat32 weight = reach * areaWeight * sampleWeight;
         FfxFloat32 farShare = nearSample ? 0.0f : valid;
         if (!parts.nearField)
@@ -652,6 +681,7 @@ FFX_DOF_INLINE FfxDofBlurResult ffxDofBlurTexel(FfxUInt32x2 texel, FfxFloat32x4 
     kernel.center = FfxFloat32x2(texel) + FfxFloat32x2(0.5f, 0.5f);
     kernel.aperture = ffxDofRoundAperture();
     kernel.origin = kernel.center + ffxDofKernelJitter(texel, constants.frameIndex);
+    kernel.inverseColorScale = 1.0f / ffxDofLoadColorScale();
 
     FfxDofGather gather;
     gather.nearSum = FfxFloat32x3(0.0f, 0.0f, 0.0f);

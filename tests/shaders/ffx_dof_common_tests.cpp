@@ -408,6 +408,28 @@ TEST_CASE("Far layers: a texel's own surface and nearer samples in front, farthe
     CHECK(ffxDofFarFrontShare(30.0f, 10.0f) == 0.0f);
 }
 
+TEST_CASE("Highlights spread over a disc up to FFX_DOF_HIGHLIGHT_INSET smaller, from a disc level of 0.5 to 1", "[gather]") {
+    // Below FFX_DOF_HIGHLIGHT_LEVEL: the sample's own radius, whatever it is.
+    for (const float radius : {0.2f, 0.5f, 1.0f, 6.0f, 40.0f}) {
+        CHECK(ffxDofHighlightSpreadRadius(radius, 0.0f) == radius);
+        CHECK(ffxDofHighlightSpreadRadius(radius, FFX_DOF_HIGHLIGHT_LEVEL) == radius);
+    }
+    // The inset grows linearly up to twice the level and stops there.
+    CHECK(ffxDofHighlightSpreadRadius(6.0f, 1.5f * FFX_DOF_HIGHLIGHT_LEVEL) == Approx(6.0f - 0.5f * FFX_DOF_HIGHLIGHT_INSET));
+    CHECK(ffxDofHighlightSpreadRadius(6.0f, 2.0f * FFX_DOF_HIGHLIGHT_LEVEL) == Approx(6.0f - FFX_DOF_HIGHLIGHT_INSET));
+    CHECK(ffxDofHighlightSpreadRadius(6.0f, 1e30f) == Approx(6.0f - FFX_DOF_HIGHLIGHT_INSET));
+    // Never below half a pixel (a disc must keep the texel it starts from), never above the radius.
+    CHECK(ffxDofHighlightSpreadRadius(0.7f, 1e6f) == Approx(0.5f));
+    CHECK(ffxDofHighlightSpreadRadius(0.3f, 1e6f) == Approx(0.3f));
+    // Monotonic in the level.
+    float previous = 10.0f;
+    for (float level = 0.0f; level < 3.0f; level += 0.05f) {
+        const float spread = ffxDofHighlightSpreadRadius(10.0f, level);
+        CHECK(spread <= previous);
+        previous = spread;
+    }
+}
+
 TEST_CASE("Far layers compose front to back by the front layer's coverage", "[gather]") {
     const float pi = 3.14159265f;
     FfxFloat32x3 color;

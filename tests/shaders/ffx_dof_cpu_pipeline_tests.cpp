@@ -314,6 +314,39 @@ TEST_CASE("A single bright far pixel's disc with ring merging: flat and of its e
     }
 }
 
+TEST_CASE("A far light brighter than white gets a disc of the truth's size; a dim one keeps the wider one", "[pipeline]") {
+    // One half-res texel of light (2 x 2 px) on black, far field, radius 6 half-res px: the thin-lens
+    // disc has a radius of 12 full-res px, so its light's mean squared distance from the centre is
+    // 12^2 / 2. A dim light (disc level far below white) spreads over its full radius, rim ramp and
+    // upsample included; a light whose disc is brighter than white spreads over a disc up to half a
+    // half-res px smaller (ffxDofHighlightSpreadRadius), so its outline comes nearer the truth's,
+    // and both keep their energy.
+    const auto measure = [](float value, double& energyKept, double& radius) {
+        Scene scene = makeScene(96, 80, glm::vec4(0, 0, 0, 1), -6.0f);
+        for (int y = 40; y < 42; ++y)
+            for (int x = 48; x < 50; ++x) scene.color[size_t(y) * scene.width + size_t(x)] = glm::vec4(value, value, value, 1);
+        const std::vector<glm::vec4> out = ffxdoftest::runPipeline(scene, Settings{});
+        double energy = 0.0, moment = 0.0;
+        for (size_t i = 0; i < out.size(); ++i) {
+            const double dx = double(i % scene.width) + 0.5 - 49.0, dy = double(i / scene.width) + 0.5 - 41.0;
+            energy += out[i].y;
+            moment += out[i].y * (dx * dx + dy * dy);
+        }
+        energyKept = energy / (4.0 * value);
+        radius = std::sqrt(2.0 * moment / energy);  // a flat disc's radius
+    };
+    double dimEnergy = 0.0, dimRadius = 0.0, brightEnergy = 0.0, brightRadius = 0.0;
+    measure(0.5f, dimEnergy, dimRadius);     // disc level 0.5 * 4 / (pi 12^2): 0.004
+    measure(500.0f, brightEnergy, brightRadius);  // 4.4: the full inset
+    INFO("dim: energy " << dimEnergy << ", radius " << dimRadius << "; bright: energy " << brightEnergy << ", radius "
+                        << brightRadius << " (truth 12)");
+    CHECK(dimEnergy == Approx(1.0).epsilon(0.015));  // measured 0.990 and 1.005
+    CHECK(brightEnergy == Approx(1.0).epsilon(0.015));
+    CHECK(dimRadius > 12.0);
+    CHECK(dimRadius - brightRadius > 0.25);  // the inset: 0.5 full-res px, less what rounding keeps
+    CHECK(std::abs(brightRadius - 12.0) < std::abs(dimRadius - 12.0));
+}
+
 TEST_CASE("HDR: colour far above the half range stays finite, is blurred and keeps its energy", "[pipeline][hdr]") {
     // Issue 13: a patch of 16,400 (or 1e5, or a sun of 1e6) used to come out black with inf/NaN
     // around it. The effect scales such frames into its range by a power of two (docs/technique.md).
@@ -336,8 +369,10 @@ TEST_CASE("HDR: colour far above the half range stays finite, is blurred and kee
     for (const Case& c : cases) {
         INFO(c.name);
         Scene scene = makeScene(192, 160, glm::vec4(0, 0, 0, 1), -6.0f);
-        Scene reference = scene;  // the same scene at an intensity the effect handles without scaling
-        const float low = 1.0f;
+        // The same scene at an intensity the effect handles without scaling, and as far above white as
+        // the HDR one (highlights spread over a smaller disc: ffxDofHighlightSpreadRadius).
+        Scene reference = scene;
+        const float low = 1000.0f;
         for (int y = c.rect.y0; y < c.rect.y1; ++y)
             for (int x = c.rect.x0; x < c.rect.x1; ++x) {
                 const size_t i = size_t(y) * scene.width + size_t(x);
