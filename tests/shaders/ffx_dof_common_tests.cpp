@@ -408,14 +408,16 @@ TEST_CASE("Far layers: a texel's own surface and nearer samples in front, farthe
     CHECK(ffxDofFarFrontShare(30.0f, 10.0f) == 0.0f);
 }
 
-TEST_CASE("Highlights spread over a disc up to FFX_DOF_HIGHLIGHT_INSET smaller, from a disc level of 0.5 to 1", "[gather]") {
+TEST_CASE("Highlights spread over a disc up to FFX_DOF_HIGHLIGHT_INSET smaller, from a disc level of 0.5 to 1",
+          "[gather]") {
     // Below FFX_DOF_HIGHLIGHT_LEVEL: the sample's own radius, whatever it is.
     for (const float radius : {0.2f, 0.5f, 1.0f, 6.0f, 40.0f}) {
         CHECK(ffxDofHighlightSpreadRadius(radius, 0.0f) == radius);
         CHECK(ffxDofHighlightSpreadRadius(radius, FFX_DOF_HIGHLIGHT_LEVEL) == radius);
     }
     // The inset grows linearly up to twice the level and stops there.
-    CHECK(ffxDofHighlightSpreadRadius(6.0f, 1.5f * FFX_DOF_HIGHLIGHT_LEVEL) == Approx(6.0f - 0.5f * FFX_DOF_HIGHLIGHT_INSET));
+    CHECK(ffxDofHighlightSpreadRadius(6.0f, 1.5f * FFX_DOF_HIGHLIGHT_LEVEL) ==
+          Approx(6.0f - 0.5f * FFX_DOF_HIGHLIGHT_INSET));
     CHECK(ffxDofHighlightSpreadRadius(6.0f, 2.0f * FFX_DOF_HIGHLIGHT_LEVEL) == Approx(6.0f - FFX_DOF_HIGHLIGHT_INSET));
     CHECK(ffxDofHighlightSpreadRadius(6.0f, 1e30f) == Approx(6.0f - FFX_DOF_HIGHLIGHT_INSET));
     // Never below half a pixel (a disc must keep the texel it starts from), never above the radius.

@@ -314,7 +314,8 @@ TEST_CASE("A single bright far pixel's disc with ring merging: flat and of its e
     }
 }
 
-TEST_CASE("A far light brighter than white gets a disc of the truth's size; a dim one keeps the wider one", "[pipeline]") {
+TEST_CASE("A far light brighter than white gets a disc of the truth's size; a dim one keeps the wider one",
+          "[pipeline]") {
     // One half-res texel of light (2 x 2 px) on black, far field, radius 6 half-res px: the thin-lens
     // disc has a radius of 12 full-res px, so its light's mean squared distance from the centre is
     // 12^2 / 2. A dim light (disc level far below white) spreads over its full radius, rim ramp and
@@ -324,7 +325,8 @@ TEST_CASE("A far light brighter than white gets a disc of the truth's size; a di
     const auto measure = [](float value, double& energyKept, double& radius) {
         Scene scene = makeScene(96, 80, glm::vec4(0, 0, 0, 1), -6.0f);
         for (int y = 40; y < 42; ++y)
-            for (int x = 48; x < 50; ++x) scene.color[size_t(y) * scene.width + size_t(x)] = glm::vec4(value, value, value, 1);
+            for (int x = 48; x < 50; ++x)
+                scene.color[size_t(y) * scene.width + size_t(x)] = glm::vec4(value, value, value, 1);
         const std::vector<glm::vec4> out = ffxdoftest::runPipeline(scene, Settings{});
         double energy = 0.0, moment = 0.0;
         for (size_t i = 0; i < out.size(); ++i) {
@@ -336,7 +338,7 @@ TEST_CASE("A far light brighter than white gets a disc of the truth's size; a di
         radius = std::sqrt(2.0 * moment / energy);  // a flat disc's radius
     };
     double dimEnergy = 0.0, dimRadius = 0.0, brightEnergy = 0.0, brightRadius = 0.0;
-    measure(0.5f, dimEnergy, dimRadius);     // disc level 0.5 * 4 / (pi 12^2): 0.004
+    measure(0.5f, dimEnergy, dimRadius);          // disc level 0.5 * 4 / (pi 12^2): 0.004
     measure(500.0f, brightEnergy, brightRadius);  // 4.4: the full inset
     INFO("dim: energy " << dimEnergy << ", radius " << dimRadius << "; bright: energy " << brightEnergy << ", radius "
                         << brightRadius << " (truth 12)");
