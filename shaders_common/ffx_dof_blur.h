@@ -83,11 +83,17 @@ FfxFloat32 ffxDofLoadColorScale();
 #define FFX_DOF_HIGHLIGHT_INSET 0.25f
 #define FFX_DOF_HIGHLIGHT_LEVEL 0.5f
 
-// Radius over which a far sample of |radius| `absRadius` spreads its light, from its disc level
-// (FFX_DOF_HIGHLIGHT_INSET).
-FFX_DOF_INLINE FfxFloat32 ffxDofHighlightSpreadRadius(FfxFloat32 absRadius, FfxFloat32 discLevel)
+// Radius over which a far sample of |radius| `absRadius` spreads its light (FFX_DOF_HIGHLIGHT_INSET).
+// `levelRadiusSquared`: the squared radius of the disc over which the sample's light would be exactly
+// at FFX_DOF_HIGHLIGHT_LEVEL (luminance x texel area x the shape's area scale / (pi x the level), in
+// the input's units), so the disc level over the level, less 1, is (levelRadiusSquared - r^2) / r^2.
+// `rampScale` stands for 1 / r^2: the kernel's, one division per texel instead of one per sample (the
+// threshold is exact; the ramp above it is steeper or gentler for samples of other radii).
+FFX_DOF_INLINE FfxFloat32 ffxDofHighlightSpreadRadius(FfxFloat32 absRadius, FfxFloat32 levelRadiusSquared,
+                                                      FfxFloat32 rampScale)
 {
-    FfxFloat32 inset = FFX_DOF_HIGHLIGHT_INSET * ffxDofSaturate(discLevel / FFX_DOF_HIGHLIGHT_LEVEL - 1.0f);
+    FfxFloat32 excess = (levelRadiusSquared - absRadius * absRadius) * rampScale;
+    FfxFloat32 inset = FFX_DOF_HIGHLIGHT_INSET * ffxDofSaturate(excess);
     return max(absRadius - inset, min(absRadius, 0.5f));
 }
 
@@ -392,8 +398,9 @@ struct FfxDofKernel
     FfxUInt32 baseMip;
     FfxUInt32 rings;
     FfxBoolean centerIsNear;
-    FfxDofPixelAperture aperture;  // the bokeh shape this texel sees
-    FfxFloat32 inverseColorScale;  // 1 / ffxDofColorRangeScale: the color MIPs back in input units
+    FfxDofPixelAperture aperture;   // the bokeh shape this texel sees
+    FfxFloat32 inverseColorScale;   // 1 / ffxDofColorRangeScale: the color MIPs back in input units
+    FfxFloat32 highlightRampScale;  // 1 / the kernel radius^2 (ffxDofHighlightSpreadRadius)
 };
 
 // Which parts of the gather a tile class needs; literals at every call, so what a path leaves out
@@ -425,7 +432,8 @@ FFX_DOF_INLINE void ffxDofGatherRing(FFX_DOF_INOUT(FfxDofGather) gather, FfxDofK
     FfxFloat32 texelSize = FfxFloat32(1u << mip);
     FfxFloat32 sampleWeight = texelSize * texelSize * presence;
     // Disc level of a sample = luminance x area weight x this (texel area / pi, back in input units).
-    FfxFloat32 levelScale = texelSize * texelSize * (1.0f / FFX_DOF_PI) * kernel.inverseColorScale;
+    FfxFloat32 levelScale = texelSize * texelSize * kernel.aperture.areaScale * kernel.inverseColorScale *
+                            (1.0f / (FFX_DOF_PI * FFX_DOF_HIGHLIGHT_LEVEL));
     FfxFloat32 centerAbsCoc = abs(kernel.centerCoc);
     FfxFloat32x3 ringFillSum = FfxFloat32x3(0.0f, 0.0f, 0.0f);
     FfxFloat32 ringFillCount = 0.0f;
@@ -465,16 +473,11 @@ FFX_DOF_INLINE void ffxDofGatherRing(FFX_DOF_INOUT(FfxDofGather) gather, FfxDofK
         FfxFloat32 distance = gauge * texelSize;
         // Near and far samples weigh alike (reach times inverse area).
         FfxFloat32 absCoc = abs(coc);
-        FfxFloat32 areaWeight =
-            parts.shaped ? ffxDofApertureAreaWeight(kernel.aperture, absCoc) : ffxDofRoundAreaWeight(absCoc);
-        FfxFloat32 spreadRadius = absCoc;
-        if (!nearSample)
-        {
-            FfxFloat32 discLevel = ffxDofLuminance(ffxDofToDofFloat3(color)) * areaWeight * levelScale;
-            spreadRadius = ffxDofHighlightSpreadRadius(absCoc, discLevel);
-            areaWeight = parts.shaped ? ffxDofApertureAreaWeight(kernel.aperture, spreadRadius)
-                                      : ffxDofRoundAreaWeight(spreadRadius);
-        }
+        FfxFloat32 levelRadiusSquared = (color.x * 0.2126f + color.y * 0.7152f + color.z * 0.0722f) * levelScale;
+        FfxFloat32 spreadRadius =
+            nearSample ? absCoc : ffxDofHighlightSpreadRadius(absCoc, levelRadiusSquared, kernel.highlightRampScale);
+        FfxFloat32 areaWeight = parts.shaped ? ffxDofApertureAreaWeight(kernel.aperture, spreadRadius)
+                                             : ffxDofRoundAreaWeight(spreadRadius);
         FfxFloat32 reach = ffxDofReach(spreadRadius, distance);
         reach *= valid;
         FfxFloat32 weight = reach * areaWeight * sampleWeight;
@@ -682,6 +685,7 @@ FFX_DOF_INLINE FfxDofBlurResult ffxDofBlurTexel(FfxUInt32x2 texel, FfxFloat32x4 
     kernel.aperture = ffxDofRoundAperture();
     kernel.origin = kernel.center + ffxDofKernelJitter(texel, constants.frameIndex);
     kernel.inverseColorScale = 1.0f / ffxDofLoadColorScale();
+    kernel.highlightRampScale = ffxDofRoundAreaWeight(kernelRadius);
 
     FfxDofGather gather;
     gather.nearSum = FfxFloat32x3(0.0f, 0.0f, 0.0f);

@@ -314,7 +314,7 @@ TEST_CASE("A single bright far pixel's disc with ring merging: flat and of its e
     }
 }
 
-TEST_CASE("A far light brighter than white gets a disc of the truth's size; a dim one keeps the wider one",
+TEST_CASE("A far light brighter than white gets a disc nearer the truth's size than a dim one",
           "[pipeline]") {
     // One half-res texel of light (2 x 2 px) on black, far field, radius 6 half-res px: the thin-lens
     // disc has a radius of 12 full-res px, so its light's mean squared distance from the centre is
