@@ -314,8 +314,7 @@ TEST_CASE("A single bright far pixel's disc with ring merging: flat and of its e
     }
 }
 
-TEST_CASE("A far light brighter than white gets a disc nearer the truth's size than a dim one",
-          "[pipeline]") {
+TEST_CASE("A far light brighter than white gets a disc nearer the truth's size than a dim one", "[pipeline]") {
     // One half-res texel of light (2 x 2 px) on black, far field, radius 6 half-res px: the thin-lens
     // disc has a radius of 12 full-res px, so its light's mean squared distance from the centre is
     // 12^2 / 2. A dim light (disc level far below white) spreads over its full radius, rim ramp and
