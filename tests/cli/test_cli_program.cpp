@@ -669,7 +669,7 @@ TEST_CASE("apply: colour far beyond half's range is blurred, finite, kept in ene
     runWithPatch(1000.0f, &keptOrdinary);
     CAPTURE(kept, keptOrdinary);
     CHECK(kept == Approx(keptOrdinary).epsilon(0.01));
-    CHECK(std::abs(kept - 1.0) < 0.05);  // the blur's own loss at the band's edge, as at 1000
+    CHECK(std::abs(kept - 1.0) <= 0.01);  // issue 13: image sums within 1% (measured 1.0075)
 }
 
 TEST_CASE("aperture options: malformed numbers exit 1 and out-of-range values exit 3 naming the option", "[cli]") {
