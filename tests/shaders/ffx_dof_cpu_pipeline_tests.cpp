@@ -356,15 +356,14 @@ TEST_CASE("HDR: colour far above the half range stays finite, is blurred and kee
         Rect rect;
         float value;
         float coc;         // of the patch (the black background is far, radius 6)
-        double tolerance;  // |energy out / in - 1|: what the blur keeps at any intensity (measured at 1:
-                           // 0.1 to 0.4% for the far patches and the 4 x 4 px sun, 4.7% for the near
-                           // patch, whose opacity the near field's edge softens)
+        double tolerance;  // |energy out / in - 1| (measured: 0.1 to 0.5%; the near patch lost 4.7%
+                           // through the technique's cubic near-layer weight, ffxDofNearLayerWeight)
     };
     const Case cases[] = {
         {"sun of 1e6 (far)", {94, 78, 98, 82}, 1e6f, -6.0f, 0.01},
         {"patch of 16400 (far)", {80, 64, 112, 96}, 16400.0f, -6.0f, 0.01},
         {"patch of 1e5 (far)", {80, 64, 112, 96}, 1e5f, -6.0f, 0.01},
-        {"patch of 1e5 (near)", {80, 64, 112, 96}, 1e5f, 5.0f, 0.06},
+        {"patch of 1e5 (near)", {80, 64, 112, 96}, 1e5f, 5.0f, 0.01},
         {"patch of 1e30 (far)", {80, 64, 112, 96}, 1e30f, -6.0f, 0.01},
     };
     for (const Case& c : cases) {
