@@ -431,7 +431,8 @@ FFX_DOF_INLINE void ffxDofGatherRing(FFX_DOF_INOUT(FfxDofGather) gather, FfxDofK
     FfxBoolean holeFill = parts.nearField && parts.farField;
     FfxFloat32 texelSize = FfxFloat32(1u << mip);
     FfxFloat32 sampleWeight = texelSize * texelSize * presence;
-    // Disc level of a sample = luminance x area weight x this (texel area / pi, back in input units).
+    // A sample's luminance x this = the squared radius over which its light would be at the highlight
+    // level (ffxDofHighlightSpreadRadius): texel area x area scale / (pi x level), in input units.
     FfxFloat32 levelScale = texelSize * texelSize * kernel.aperture.areaScale * kernel.inverseColorScale *
                             (1.0f / (FFX_DOF_PI * FFX_DOF_HIGHLIGHT_LEVEL));
     FfxFloat32 centerAbsCoc = abs(kernel.centerCoc);
@@ -473,7 +474,7 @@ FFX_DOF_INLINE void ffxDofGatherRing(FFX_DOF_INOUT(FfxDofGather) gather, FfxDofK
         FfxFloat32 distance = gauge * texelSize;
         // Near and far samples weigh alike (reach times inverse area).
         FfxFloat32 absCoc = abs(coc);
-        FfxFloat32 levelRadiusSquared = (color.x * 0.2126f + color.y * 0.7152f + color.z * 0.0722f) * levelScale;
+        FfxFloat32 levelRadiusSquared = ffxDofLuminance32(color) * levelScale;
         FfxFloat32 spreadRadius =
             nearSample ? absCoc : ffxDofHighlightSpreadRadius(absCoc, levelRadiusSquared, kernel.highlightRampScale);
         FfxFloat32 areaWeight = parts.shaped ? ffxDofApertureAreaWeight(kernel.aperture, spreadRadius)

@@ -78,11 +78,13 @@ FFX_DOF_INLINE FfxFloat32 ffxDofCocFromDepth(FfxFloat32 depth, FfxFloat32 cocSca
 // ---- Colour -----------------------------------------------------------------------------------------
 
 // Rec. 709 luminance: the brightness that weighs a quad pixel's radius in the bilateral reduction
-// (pass 2) and that the median post-filter ranks (pass 5).
-FFX_DOF_INLINE FfxFloat32 ffxDofLuminance(FfxDofFloat3 color)
+// (pass 2), that tells a highlight in the blur (pass 4) and that the outlier post-filter clamps
+// (pass 5). The 32-bit form is for values already in 32-bit (the blur's samples).
+FFX_DOF_INLINE FfxFloat32 ffxDofLuminance32(FfxFloat32x3 color)
 {
-    return FfxFloat32(color.x) * 0.2126f + FfxFloat32(color.y) * 0.7152f + FfxFloat32(color.z) * 0.0722f;
+    return color.x * 0.2126f + color.y * 0.7152f + color.z * 0.0722f;
 }
+FFX_DOF_INLINE FfxFloat32 ffxDofLuminance(FfxDofFloat3 color) { return ffxDofLuminance32(ffxDofToFloat32x3(color)); }
 
 // ---- Storage ------------------------------------------------------------------------------------
 
@@ -148,7 +150,7 @@ FFX_DOF_INLINE FfxUInt32x2 ffxDofMipSize(FfxUInt32x2 size, FfxUInt32 mip)
 // kernel is max(dilated near radius, |own radius|), and its own radius is within the range.
 FFX_DOF_INLINE FfxFloat32 ffxDofTileKernelRadius(FfxFloat32x2 farNear) { return max(max(farNear.y, -farNear.x), 0.0f); }
 
-// Median of nine values by a 19-exchange selection network (the composite's post-filter, autofocus's
+// Median of nine values by a 19-exchange selection network (autofocus's reference depth at the
 // centre).
 FFX_DOF_INLINE void ffxDofSort2(FFX_DOF_INOUT(FfxFloat32) a, FFX_DOF_INOUT(FfxFloat32) b)
 {
