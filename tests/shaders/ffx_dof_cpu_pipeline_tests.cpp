@@ -318,9 +318,9 @@ TEST_CASE("A far light brighter than white gets a disc nearer the truth's size t
     // One half-res texel of light (2 x 2 px) on black, far field, radius 6 half-res px: the thin-lens
     // disc has a radius of 12 full-res px, so its light's mean squared distance from the centre is
     // 12^2 / 2. A dim light (disc level far below white) spreads over its full radius, rim ramp and
-    // upsample included; a light whose disc is brighter than white spreads over a disc up to half a
-    // half-res px smaller (ffxDofHighlightSpreadRadius), so its outline comes nearer the truth's,
-    // and both keep their energy.
+    // upsample included; a light whose disc is brighter than white spreads over a disc up to
+    // FFX_DOF_HIGHLIGHT_INSET half-res px smaller (ffxDofHighlightSpreadRadius), so its outline comes nearer the
+    // truth's, and both keep their energy.
     const auto measure = [](float value, double& energyKept, double& radius) {
         Scene scene = makeScene(96, 80, glm::vec4(0, 0, 0, 1), -6.0f);
         for (int y = 40; y < 42; ++y)
@@ -355,16 +355,14 @@ TEST_CASE("HDR: colour far above the half range stays finite, is blurred and kee
         const char* name;
         Rect rect;
         float value;
-        float coc;         // of the patch (the black background is far, radius 6)
-        double tolerance;  // |energy out / in - 1| (measured: 0.1 to 0.5%; the near patch lost 4.7%
-                           // through the technique's cubic near-layer weight, ffxDofNearLayerWeight)
+        float coc;  // of the patch (the black background is far, radius 6)
     };
     const Case cases[] = {
-        {"sun of 1e6 (far)", {94, 78, 98, 82}, 1e6f, -6.0f, 0.01},
-        {"patch of 16400 (far)", {80, 64, 112, 96}, 16400.0f, -6.0f, 0.01},
-        {"patch of 1e5 (far)", {80, 64, 112, 96}, 1e5f, -6.0f, 0.01},
-        {"patch of 1e5 (near)", {80, 64, 112, 96}, 1e5f, 5.0f, 0.01},
-        {"patch of 1e30 (far)", {80, 64, 112, 96}, 1e30f, -6.0f, 0.01},
+        {"sun of 1e6 (far)", {94, 78, 98, 82}, 1e6f, -6.0f},
+        {"patch of 16400 (far)", {80, 64, 112, 96}, 16400.0f, -6.0f},
+        {"patch of 1e5 (far)", {80, 64, 112, 96}, 1e5f, -6.0f},
+        {"patch of 1e5 (near)", {80, 64, 112, 96}, 1e5f, 5.0f},
+        {"patch of 1e30 (far)", {80, 64, 112, 96}, 1e30f, -6.0f},
     };
     for (const Case& c : cases) {
         INFO(c.name);
@@ -406,7 +404,9 @@ TEST_CASE("HDR: colour far above the half range stays finite, is blurred and kee
         INFO("energy in " << energyIn << ", out " << energyOut << "; at low intensity in " << lowIn << ", out "
                           << lowEnergyOut);
         CHECK(energyOut / energyIn == Approx(lowEnergyOut / lowIn).epsilon(0.01));
-        CHECK(std::abs(energyOut / energyIn - 1.0) <= c.tolerance);
+        // Issue 13: image sums within 1% (measured 0.1 to 0.5%; the near patch lost 4.7% through the
+        // technique's cubic near-layer weight, now ffxDofNearLayerWeight).
+        CHECK(std::abs(energyOut / energyIn - 1.0) <= 0.01);
     }
 }
 
