@@ -94,6 +94,8 @@
 #define ffxDofFract(x) fract(x)
 #define ffxDofAsUInt(x) floatBitsToUint(x)
 #define ffxDofAsFloat(x) uintBitsToFloat(x)
+#define ffxDofPackHalf2(v) packHalf2x16(v)
+#define ffxDofUnpackHalf2(bits) unpackHalf2x16(bits)
 #define ffxDofWaveMin(x) subgroupMin(x)
 #define ffxDofWaveMax(x) subgroupMax(x)
 #define ffxDofWaveSum(x) subgroupAdd(x)
@@ -164,6 +166,8 @@ typedef half4 FfxFloat16x4;
 #define ffxDofFract(x) frac(x)
 #define ffxDofAsUInt(x) asuint(x)
 #define ffxDofAsFloat(x) asfloat(x)
+#define ffxDofPackHalf2(v) (f32tof16((v).x) | (f32tof16((v).y) << 16u))
+#define ffxDofUnpackHalf2(bits) FfxFloat32x2(f16tof32((bits) & 0xffffu), f16tof32((bits) >> 16u))
 #define ffxDofWaveMin(x) WaveActiveMin(x)
 #define ffxDofWaveMax(x) WaveActiveMax(x)
 #define ffxDofWaveSum(x) WaveActiveSum(x)
@@ -182,6 +186,7 @@ typedef half4 FfxFloat16x4;
 #include <cstdint>
 #include <cstring>
 #include <glm/glm.hpp>
+#include <glm/gtc/packing.hpp>
 
 #if FFX_DOF_DECLARE_FFX_TYPES
 typedef float FfxFloat32;
@@ -270,6 +275,8 @@ inline float ffxDofAsFloat(uint32_t bits)
     std::memcpy(&x, &bits, sizeof x);
     return x;
 }
+inline uint32_t ffxDofPackHalf2(glm::vec2 v) { return glm::packHalf2x16(v); }
+inline glm::vec2 ffxDofUnpackHalf2(uint32_t bits) { return glm::unpackHalf2x16(bits); }
 // The CPU runs each invocation as a wave of one lane.
 #define ffxDofWaveMin(x) (x)
 #define ffxDofWaveMax(x) (x)

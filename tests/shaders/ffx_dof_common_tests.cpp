@@ -616,12 +616,9 @@ namespace {
 template <typename Radius, typename Color>
 glm::vec4 gatherOwnSurfaceAt(glm::ivec2 pixel, float halfResRadius, Radius radiusAt, Color colorAt) {
     const int side = FFX_DOF_OWN_SURFACE_SIDE;
-    for (int y = 0; y < side; ++y) {
-        for (int x = 0; x < side; ++x) {
-            ffxDofSharedOwnRadius[y * side + x] = radiusAt(glm::ivec2(x, y));
-            ffxDofSharedOwnColor[y * side + x] = colorAt(glm::ivec2(x, y));
-        }
-    }
+    for (int y = 0; y < side; ++y)
+        for (int x = 0; x < side; ++x)
+            ffxDofStoreOwnSample(uint32_t(y * side + x), colorAt(glm::ivec2(x, y)), radiusAt(glm::ivec2(x, y)));
     return ffxDofGatherOwnSurface(pixel, halfResRadius);
 }
 
@@ -713,6 +710,19 @@ TEST_CASE("Kernel jitter stays sub-pixel and varies", "[kernel]") {
         varies = varies || j != first;
     }
     CHECK(varies);
+}
+
+TEST_CASE("Two 16-bit floats pack into one word and back", "[storage]") {
+    // Exact for values 16-bit floats hold; the color range limit and radii fit with 11 bits of mantissa.
+    for (glm::vec2 v : {glm::vec2(0.0f, 1.0f), glm::vec2(0.5f, 4096.0f), glm::vec2(FFX_DOF_COLOR_RANGE_LIMIT, 6.25f),
+                        glm::vec2(1.0f / 1024.0f, 65504.0f)})
+        CHECK(ffxDofUnpackHalf2(ffxDofPackHalf2(v)) == v);
+    // Others are rounded to 11 significant bits.
+    const glm::vec2 rounded = ffxDofUnpackHalf2(ffxDofPackHalf2(glm::vec2(0.1f, 1234.567f)));
+    CHECK(rounded.x == Approx(0.1f).epsilon(1.0 / 2048.0));
+    CHECK(rounded.y == Approx(1234.567f).epsilon(1.0 / 2048.0));
+    CHECK(ffxDofPackHalf2(glm::vec2(1.0f, 0.0f)) == 0x3c00u);
+    CHECK(ffxDofPackHalf2(glm::vec2(0.0f, 1.0f)) == 0x3c000000u);
 }
 
 TEST_CASE("Colors are rounded to nearest before a packed-float store", "[storage]") {
