@@ -167,7 +167,7 @@ typedef half4 FfxFloat16x4;
 #define ffxDofAsUInt(x) asuint(x)
 #define ffxDofAsFloat(x) asfloat(x)
 #define ffxDofPackHalf2(v) (f32tof16((v).x) | (f32tof16((v).y) << 16u))
-#define ffxDofUnpackHalf2(bits) FfxFloat32x2(f16tof32((bits) & 0xffffu), f16tof32((bits) >> 16u))
+#define ffxDofUnpackHalf2(bits) FfxFloat32x2(f16tof32((bits)&0xffffu), f16tof32((bits) >> 16u))
 #define ffxDofWaveMin(x) WaveActiveMin(x)
 #define ffxDofWaveMax(x) WaveActiveMax(x)
 #define ffxDofWaveSum(x) WaveActiveSum(x)
