@@ -4,9 +4,24 @@
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
+#include <sstream>
 #include <utility>
 
 namespace ffxdof::quality {
+
+namespace {
+constexpr double kPi = 3.14159265358979323846;
+}  // namespace
+
+vkrun::Device& validatedDevice() {
+    static std::unique_ptr<vkrun::Device> device = [] {
+        vkrun::DeviceOptions options;
+        options.validation = true;
+        return std::make_unique<vkrun::Device>(options);
+    }();
+    return *device;
+}
 
 const std::vector<SceneGate>& sceneGates() {
     // Margins are about 1.5 dB below what the effect measured on lavapipe (gains of 19.3, 8.5, 7.8, 6.4,
@@ -165,6 +180,61 @@ PointBokeh measurePointBokeh(vkrun::Device& device) {
     bokeh.truth = metrics::checkBokeh(truth, expectedRadius, truth.energy);
     bokeh.ours = metrics::checkBokeh(metrics::measureBokeh(bokeh.result.ours), expectedRadius, inputEnergy);
     return bokeh;
+}
+
+std::string PointDiscCase::describe() const {
+    std::ostringstream text;
+    text << "radius " << radius << " px, offset (" << offsetX << ", " << offsetY << "), ring merging "
+         << (ringMerge ? "on" : "off") << ": measured radius " << disc.radius << ", flatness " << disc.flatness
+         << ", centre / inner level " << disc.centreLevel / disc.innerLevel << ", rim deviation " << disc.rimDeviation
+         << " px, glow " << glow << ", energy " << energyRatio;
+    return text.str();
+}
+
+PointDiscCase runPointDisc(vkrun::Device& device, double radius, int offsetX, int offsetY, bool ringMerge) {
+    constexpr uint32_t kSide = 160;
+    constexpr double kLargestRadius = 54.0;
+    vkrun::HostImage color(kSide, kSide, 4), depth(kSide, kSide, 1);
+    for (size_t i = 0; i < size_t(kSide) * kSide; ++i) {
+        color.pixels[i * 4 + 3] = 1.0f;
+        depth.pixels[i] = 1.0f;
+    }
+    const double energy = 0.25 * kPi * radius * radius;
+    float* point = color.at(80u + uint32_t(offsetX), 80u + uint32_t(offsetY));
+    point[0] = point[1] = point[2] = float(energy);
+
+    vkrun::RunSettings settings;
+    settings.colorFormat = VK_FORMAT_R32G32B32A32_SFLOAT;
+    settings.depthFormat = VK_FORMAT_R32_SFLOAT;
+    settings.outputFormat = VK_FORMAT_R32G32B32A32_SFLOAT;
+    settings.quality = kEffectQuality;
+    // Radius (half-res px) = depth * cocScale + cocBias, negative: far field.
+    settings.cocScale = -float(0.5 * radius);
+    settings.cocBias = 0.0f;
+    settings.cocLimitFactor = float(kLargestRadius / kSide);
+    settings.contextFlags = ringMerge ? 0u : uint32_t(FFX_DOF_DISABLE_RING_MERGE);
+    const vkrun::RunResult run = vkrun::runEffect(device, color, depth, settings);
+
+    PointDiscCase result;
+    result.radius = radius;
+    result.offsetX = offsetX;
+    result.offsetY = offsetY;
+    result.ringMerge = ringMerge;
+    result.output = io::ImageRGBA(kSide, kSide);
+    result.output.pixels = run.output.pixels;
+    result.disc = metrics::measureBokeh(result.output);
+    result.energyRatio = result.disc.energy / energy;
+    result.glow = metrics::bokehGlow(result.output, result.disc, radius + 1.5);
+    return result;
+}
+
+std::vector<PointDiscCase> runPointDiscCases(vkrun::Device& device) {
+    std::vector<PointDiscCase> cases;
+    for (bool ringMerge : {true, false})
+        for (double radius : kPointDiscRadii)
+            for (const auto& offset : kPointDiscOffsets)
+                cases.push_back(runPointDisc(device, radius, offset[0], offset[1], ringMerge));
+    return cases;
 }
 
 }  // namespace ffxdof::quality

@@ -11,6 +11,10 @@
 
 namespace ffxdof::quality {
 
+// The one Vulkan device of the quality tests, with the validation layer on (synchronization
+// included): a test fails on any message it leaves (Device::validationMessages).
+vkrun::Device& validatedDevice();
+
 // Resolution and lens samples of every gate (and of the pictures in docs/quality.md).
 constexpr uint32_t kWidth = 320;
 constexpr uint32_t kHeight = 180;
@@ -83,5 +87,27 @@ struct PointBokeh {
     metrics::BokehCheck ours;
 };
 PointBokeh measurePointBokeh(vkrun::Device& device);
+
+// Issue 17's point discs: a single far point of light (disc level 0.25, below the highlight inset's
+// level) on black, 160 x 160 px, at one radius everywhere, through the effect. Radii from 2 full-res
+// px to 1080p's default CoC limit (0.05 of the height: 54 px); positions at each corner of a half-res
+// quad (offsets (0, 0) to (1, 1) from the tile corner (80, 80)) and inside a tile (7, 5); ring
+// merging on and off. The truth of a one-pixel point is a flat disc of the thin-lens radius holding
+// the point's energy.
+constexpr double kPointDiscRadii[] = {2.0, 3.0, 4.5, 6.0, 8.0, 12.0, 19.2, 27.0, 40.0, 54.0};
+constexpr int kPointDiscOffsets[][2] = {{0, 0}, {1, 0}, {0, 1}, {1, 1}, {7, 5}};
+struct PointDiscCase {
+    double radius = 0.0;  // thin lens, full-res px
+    int offsetX = 0, offsetY = 0;
+    bool ringMerge = true;
+    metrics::BokehMeasurement disc;
+    double energyRatio = 0.0;  // measured / the point's
+    double glow = 0.0;         // brightest beyond radius + 1.5 px, over the disc's inner level
+    io::ImageRGBA output;
+    std::string describe() const;
+};
+PointDiscCase runPointDisc(vkrun::Device& device, double radius, int offsetX, int offsetY, bool ringMerge);
+// Every radius and offset, ring merging on, then off.
+std::vector<PointDiscCase> runPointDiscCases(vkrun::Device& device);
 
 }  // namespace ffxdof::quality

@@ -15,15 +15,6 @@ using namespace ffxdof;
 
 namespace {
 
-vkrun::Device& apertureTestDevice() {
-    static std::unique_ptr<vkrun::Device> device = [] {
-        vkrun::DeviceOptions options;
-        options.validation = true;
-        return std::make_unique<vkrun::Device>(options);
-    }();
-    return *device;
-}
-
 // What a test case checks of a point: everything, or its split into the disc's position (overlap with
 // the truth's and centroid) and its shape (area and orientation), for the points whose position is a
 // known failure.
@@ -35,7 +26,7 @@ void checkPoint(const std::string& name, PointPart part = PointPart::All) {
         if (candidate.name() == name) point = &candidate;
     }
     REQUIRE(point != nullptr);
-    vkrun::Device& device = apertureTestDevice();
+    vkrun::Device& device = quality::validatedDevice();
     device.clearValidationMessages();
     const quality::PointResult r = quality::measurePoint(device, *point);
     INFO(r.summary());
@@ -130,7 +121,7 @@ TEST_CASE("aperture scenes: highlights through a shaped aperture against the sha
         DYNAMIC_SECTION(gate.scene << " " << gate.aperture.name) {
             const quality::SceneRender render = quality::renderScene(gate.scene, quality::kWidth, quality::kHeight,
                                                                      quality::kLensSamples, gate.aperture.shape);
-            vkrun::Device& device = apertureTestDevice();
+            vkrun::Device& device = quality::validatedDevice();
             device.clearValidationMessages();
             const quality::GateResult result = quality::runGate(device, render);
             INFO("scene " << gate.scene << ", " << gate.aperture.title << "\ninput vs shaped truth:\n"

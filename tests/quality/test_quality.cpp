@@ -2,29 +2,13 @@
 
 #include <catch2/catch.hpp>
 
-#include <memory>
-
 using namespace ffxdof;
-
-namespace {
-
-// One device for every gate, with the validation layer on: any message fails the test.
-vkrun::Device& sharedDevice() {
-    static std::unique_ptr<vkrun::Device> device = [] {
-        vkrun::DeviceOptions options;
-        options.validation = true;
-        return std::make_unique<vkrun::Device>(options);
-    }();
-    return *device;
-}
-
-}  // namespace
 
 TEST_CASE("quality gates per scene against the thin-lens truth", "[quality][vulkan]") {
     for (const quality::SceneGate& gate : quality::sceneGates()) {
         DYNAMIC_SECTION(gate.scene) {
             const quality::SceneRender render = quality::renderScene(gate.scene);
-            vkrun::Device& device = sharedDevice();
+            vkrun::Device& device = quality::validatedDevice();
             device.clearValidationMessages();
             const quality::GateResult result = quality::runGate(device, render);
             INFO("scene " << gate.scene << "\ninput vs truth:\n"
@@ -47,7 +31,8 @@ TEST_CASE("far-highlights: at least the circular gather overall - known failure"
     // atLeastGather = false once ffx-dof reaches the gather here.
     for (const quality::SceneGate& gate : quality::sceneGates()) {
         if (gate.atLeastGather) continue;
-        const quality::GateResult result = quality::runGate(sharedDevice(), quality::renderScene(gate.scene));
+        const quality::GateResult result =
+            quality::runGate(quality::validatedDevice(), quality::renderScene(gate.scene));
         INFO("scene " << gate.scene << ": ffx-dof " << result.effect.psnr << " dB, gather " << result.gather.psnr);
         CHECK(result.gatherGate());
     }
@@ -68,7 +53,7 @@ TEST_CASE("the circular gather baseline blurs by each pixel's own radius", "[qua
 }
 
 TEST_CASE("bokeh of a single far point: disc radius", "[quality][vulkan]") {
-    vkrun::Device& device = sharedDevice();
+    vkrun::Device& device = quality::validatedDevice();
     device.clearValidationMessages();
     const quality::PointBokeh bokeh = quality::measurePointBokeh(device);
     INFO("truth: " << bokeh.truth.summary << "\nffx-dof: " << bokeh.ours.summary);
@@ -78,7 +63,7 @@ TEST_CASE("bokeh of a single far point: disc radius", "[quality][vulkan]") {
 }
 
 TEST_CASE("bokeh of a single far point: flatness and energy", "[quality][vulkan]") {
-    vkrun::Device& device = sharedDevice();
+    vkrun::Device& device = quality::validatedDevice();
     const quality::PointBokeh bokeh = quality::measurePointBokeh(device);
     INFO("ffx-dof: " << bokeh.ours.summary);
     CHECK(bokeh.ours.flatOk);
@@ -91,7 +76,7 @@ TEST_CASE("in place equals out of place within the documented tolerance", "[qual
     // and the full-res own-surface gather of small radii (up to 7 px beyond the tile) see 2x2 bilateral averages
     // there (ffx_dof_composite.h). The only difference to out of place.
     const quality::SceneRender render = quality::renderScene("floor");
-    vkrun::Device& device = sharedDevice();
+    vkrun::Device& device = quality::validatedDevice();
     device.clearValidationMessages();
     const quality::GateResult outOfPlace = quality::runGate(device, render);
     const quality::GateResult inPlace = quality::runGate(device, render, true);

@@ -4,11 +4,11 @@
 // MERGE_LOG) may change the image only by a difference that has no tile-periodic component.
 #include "ffx_dof.h"
 #include "ffx_dof_vkrun.h"
+#include "quality_scenes.h"
 
 #include <catch2/catch.hpp>
 
 #include <cmath>
-#include <memory>
 #include <random>
 
 using namespace ffxdof;
@@ -16,15 +16,6 @@ using namespace ffxdof;
 namespace {
 
 constexpr uint32_t kTilePixels = 16;  // full-res px per blur and composite tile
-
-vkrun::Device& tileTestDevice() {
-    static std::unique_ptr<vkrun::Device> device = [] {
-        vkrun::DeviceOptions options;
-        options.validation = true;
-        return std::make_unique<vkrun::Device>(options);
-    }();
-    return *device;
-}
 
 // A textured far field whose blur radius changes smoothly over the image (7.6 to 12.4 half-res px):
 // value noise of a few pixels per cell, so the MIP levels that ring merging reads differ from level 0.
@@ -70,7 +61,7 @@ vkrun::HostImage runScene(const TileScene& scene, bool ringMerge) {
     // The limit is a fraction of the full-res height in full-res px: 32 full-res px = 16 half-res px.
     settings.cocLimitFactor = 32.0f / float(scene.color.height);
     settings.contextFlags = ringMerge ? 0u : uint32_t(FFX_DOF_DISABLE_RING_MERGE);
-    return vkrun::runEffect(tileTestDevice(), scene.color, scene.depth, settings).output;
+    return vkrun::runEffect(quality::validatedDevice(), scene.color, scene.depth, settings).output;
 }
 
 double luminanceAt(const vkrun::HostImage& image, uint32_t x, uint32_t y) {
@@ -137,7 +128,7 @@ vkrun::HostImage difference(const vkrun::HostImage& a, const vkrun::HostImage& b
 
 TEST_CASE("no tile-shaped structure in a smooth far-field blur, ring merging on or off", "[quality][vulkan][tiles]") {
     const TileScene scene = makeTileScene(320, 192);
-    tileTestDevice().clearValidationMessages();
+    quality::validatedDevice().clearValidationMessages();
     const vkrun::HostImage merged = runScene(scene, true);
     const vkrun::HostImage full = runScene(scene, false);
     const double mergedRatio = tileBorderGradientRatio(merged);
@@ -153,7 +144,7 @@ TEST_CASE("no tile-shaped structure in a smooth far-field blur, ring merging on 
          << mergedRatio << ", full " << fullRatio << ", merged - full " << changeRatio
          << "; block contrast of merged - full, tile grid / shifted grid " << changeBlockContrast
          << " (rms of merged - full " << changeRms << ")");
-    CHECK(tileTestDevice().validationMessages().empty());
+    CHECK(quality::validatedDevice().validationMessages().empty());
     // Measured on lavapipe (docs/technique.md, ring merging): with the per-tile switch of merging,
     // merged 0.869 vs full 0.833, merged - full 1.19, block contrast 1.84; with the per-texel
     // continuous merge amount, 0.827 vs 0.829, 1.12 and 1.20. The gradient ratio of the difference

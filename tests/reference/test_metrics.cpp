@@ -167,10 +167,19 @@ TEST_CASE("bokeh measurement: radius, flatness and energy of synthetic discs", "
         CHECK(m.centerY == Approx(23.6).margin(0.05));
         CHECK(m.energy == Approx(500.0).epsilon(1e-3));
         CHECK(m.flatness < 0.01);
+        CHECK(m.centreLevel == Approx(m.innerLevel).epsilon(0.01));
+        CHECK(m.rimDeviation < 0.5);
+        CHECK(metrics::bokehGlow(disc, m, r + 1.0) == 0.0);
+        CHECK(metrics::bokehGlow(disc, m, r - 1.5) == Approx(1.0).epsilon(0.01));
         CHECK(metrics::checkBokeh(m, r, 500.0).ok());
         CHECK_FALSE(metrics::checkBokeh(m, r + 1.5, 500.0).radiusOk);
         CHECK_FALSE(metrics::checkBokeh(m, r, 550.0).energyOk);
     }
+    // Two overlapping discs 4 px apart: an oval whose rim is up to about 2 px off any circle.
+    io::ImageRGBA oval = discImage(48, 22.0, 24.0, 8.0, 500.0);
+    const io::ImageRGBA shifted = discImage(48, 26.0, 24.0, 8.0, 500.0);
+    for (size_t i = 0; i < oval.pixels.size(); ++i) oval.pixels[i] = std::max(oval.pixels[i], shifted.pixels[i]);
+    CHECK(metrics::measureBokeh(oval).rimDeviation > 1.5);
     // A Gaussian blob is not flat; a background is subtracted before measuring.
     io::ImageRGBA blob(48, 48), background(48, 48);
     for (uint32_t y = 0; y < 48; ++y) {
@@ -185,6 +194,7 @@ TEST_CASE("bokeh measurement: radius, flatness and energy of synthetic discs", "
     const metrics::BokehMeasurement gaussian = metrics::measureBokeh(blob, &background);
     CHECK(gaussian.energy == Approx(2.0 * M_PI * 16.0).epsilon(1e-3));
     CHECK(gaussian.flatness > 0.1);
+    CHECK(gaussian.centreLevel > gaussian.innerLevel);
     CHECK_FALSE(metrics::checkBokeh(gaussian, gaussian.radius, gaussian.energy).flatOk);
     CHECK_THROWS_AS(metrics::measureBokeh(io::ImageRGBA(4, 4)), std::invalid_argument);
 }

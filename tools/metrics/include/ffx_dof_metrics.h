@@ -93,8 +93,17 @@ struct BokehMeasurement {
     double radius = 0.0;                  // sqrt(area / pi) of the pixels brighter than half the disc's inner level
     double flatness = 0.0;                // standard deviation / mean of the luminance within 0.7 radius
     double energy = 0.0;                  // sum of luminance over the image
+    double innerLevel = 0.0;              // mean luminance within 0.7 radius
+    double centreLevel = 0.0;             // mean luminance within max(1, 0.15 radius) px of the centroid
+    // Largest distance of the rim from the circle of `radius` about the centroid, over 64 directions:
+    // along each, the farthest point (bilinear, 1/20 px steps) at half the inner level or more.
+    double rimDeviation = 0.0;
 };
 BokehMeasurement measureBokeh(const io::ImageRGBA& image, const io::ImageRGBA* background = nullptr);
+// The brightest pixel (luminance, less the background's) farther than `distance` px from the
+// measured disc's centroid, over the disc's inner level: the glow or tail beyond the disc.
+double bokehGlow(const io::ImageRGBA& image, const BokehMeasurement& disc, double distance,
+                 const io::ImageRGBA* background = nullptr);
 
 struct BokehTolerances {
     double radiusPixels = 1.0;  // |radius - expected| <= this

@@ -293,7 +293,55 @@ BokehMeasurement measureBokeh(const io::ImageRGBA& image, const io::ImageRGBA* b
     double mean = 0.0;
     innerStatistics(std::max(0.75, 0.7 * m.radius), mean, deviation);
     m.flatness = mean > 0.0 ? deviation / mean : kNaN;
+    m.innerLevel = mean;
+    innerStatistics(std::max(1.0, 0.15 * m.radius), m.centreLevel, deviation);
+
+    // Bilinear level at a point (pixel centres at +0.5), zero outside the image.
+    const auto levelAt = [&](double px, double py) {
+        const double fx = px - 0.5, fy = py - 0.5;
+        const double x0 = std::floor(fx), y0 = std::floor(fy);
+        double value = 0.0;
+        for (int k = 0; k < 4; ++k) {
+            const double x = x0 + (k & 1), y = y0 + (k >> 1);
+            if (x < 0.0 || y < 0.0 || x >= double(w) || y >= double(h)) continue;
+            const double weight = (1.0 - std::abs(fx - x)) * (1.0 - std::abs(fy - y));
+            value += weight * level[size_t(y) * w + size_t(x)];
+        }
+        return value;
+    };
+    constexpr int kRimDirections = 64;
+    const double reachLimit = 2.0 * m.radius + 4.0;
+    for (int k = 0; k < kRimDirections; ++k) {
+        const double angle = 2.0 * kPi * k / kRimDirections;
+        const double dx = std::cos(angle), dy = std::sin(angle);
+        double rim = 0.0;
+        for (double t = reachLimit; t > 0.0; t -= 0.05) {
+            if (levelAt(m.centerX + t * dx, m.centerY + t * dy) >= 0.5 * m.innerLevel) {
+                rim = t;
+                break;
+            }
+        }
+        m.rimDeviation = std::max(m.rimDeviation, std::abs(rim - m.radius));
+    }
     return m;
+}
+
+double bokehGlow(const io::ImageRGBA& image, const BokehMeasurement& disc, double distance,
+                 const io::ImageRGBA* background) {
+    if (background) checkPair(image, *background, nullptr);
+    if (!(disc.innerLevel > 0.0)) throw std::invalid_argument("bokehGlow: the disc has no inner level");
+    double brightest = 0.0;
+    for (uint32_t y = 0; y < image.height; ++y) {
+        for (uint32_t x = 0; x < image.width; ++x) {
+            const double dx = x + 0.5 - disc.centerX, dy = y + 0.5 - disc.centerY;
+            if (dx * dx + dy * dy <= distance * distance) continue;
+            const size_t i = size_t(y) * image.width + x;
+            double value = luminance(&image.pixels[i * 4]);
+            if (background) value -= luminance(&background->pixels[i * 4]);
+            brightest = std::max(brightest, value);
+        }
+    }
+    return brightest / disc.innerLevel;
 }
 
 BokehCheck checkBokeh(const BokehMeasurement& measured, double expectedRadius, double expectedEnergy,
