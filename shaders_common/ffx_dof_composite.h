@@ -52,8 +52,6 @@ FfxFloat32 ffxDofLoadColorScale();
 
 // Upper bound on the brightness gain of the outlier post-filter.
 #define FFX_DOF_OUTLIER_MAX_GAIN 2.0f
-// Near-layer opacity below which its blend weight falls off quadratically (ffxDofNearLayerWeight).
-#define FFX_DOF_NEAR_OPACITY_TOE 0.1f
 // Above this near-field opacity the fixed 3x3 blur is not used (it would spread foreground color).
 #define FFX_DOF_NEAR_BLOCKS_FIXED_BLUR 0.3f
 // Coverage of the neighbours of a pixel by a disc of diameter 3 px centred on it (edge, corner);
@@ -108,15 +106,11 @@ FFX_DOF_INLINE FfxFloat32 ffxDofOutlierGain(FfxFloat32 centerLuminance, FfxFloat
 }
 
 // Blend weight of the near layer from its filtered opacity: the opacity itself, so a thin near
-// object's veil is as opaque as the share of the disc it covers and the near layer keeps its energy,
-// with a quadratic toe below FFX_DOF_NEAR_OPACITY_TOE (continuous there) that damps the gather's
-// faint stray coverage on in-focus surfaces. The technique's cubic (smoothstep) weight made a veil of
-// opacity 0.2 one of 0.1, hardened its edges and lost 5% of a near patch's energy.
-FFX_DOF_INLINE FfxFloat32 ffxDofNearLayerWeight(FfxFloat32 opacity)
-{
-    FfxFloat32 a = ffxDofSaturate(opacity);
-    return a < FFX_DOF_NEAR_OPACITY_TOE ? a * a * (1.0f / FFX_DOF_NEAR_OPACITY_TOE) : a;
-}
+// object's veil is as opaque as the share of the disc it covers and the near layer keeps its energy.
+// The technique's cubic (smoothstep) weight made a veil of opacity 0.2 one of 0.1, hardened its
+// edges and lost 5% of a near patch's energy; a quadratic toe below 0.1 (against faint stray
+// coverage on in-focus surfaces) halved the veils of thin bars at large radii (docs/technique.md).
+FFX_DOF_INLINE FfxFloat32 ffxDofNearLayerWeight(FfxFloat32 opacity) { return ffxDofSaturate(opacity); }
 
 // Weight of a neighbour of the fixed 3x3 blur (offsets in -1..1).
 FFX_DOF_INLINE FfxFloat32 ffxDofFixedBlurWeight(FfxInt32 dx, FfxInt32 dy)
@@ -186,8 +180,8 @@ FFX_DOF_GROUPSHARED FfxUInt32x2 ffxDofSharedOwnSample[FFX_DOF_OWN_SURFACE_SIDE *
 
 FFX_DOF_INLINE void ffxDofStoreOwnSample(FfxUInt32 index, FfxFloat32x3 color, FfxFloat32 absRadius)
 {
-    ffxDofSharedOwnSample[index] = FfxUInt32x2(ffxDofPackHalf2(FfxFloat32x2(color.x, color.y)),
-                                               ffxDofPackHalf2(FfxFloat32x2(color.z, absRadius)));
+    ffxDofSharedOwnSample[index] =
+        FfxUInt32x2(ffxDofPackHalf2(FfxFloat32x2(color.x, color.y)), ffxDofPackHalf2(FfxFloat32x2(color.z, absRadius)));
 }
 
 // Color in xyz, |radius| in w.
@@ -352,8 +346,8 @@ FFX_DOF_INLINE FfxFloat32x4 ffxDofGatherOwnSurface(FfxInt32x2 local, FfxFloat32 
         for (FfxInt32 dx = -rowExtent; dx <= rowExtent; ++dx)
         {
             FfxFloat32x4 colorRadius = ffxDofLoadOwnSample(FfxUInt32(row + dx));
-            FfxFloat32 weight = ffxDofReach(colorRadius.w, sqrt(FfxFloat32(dx * dx + dy * dy))) *
-                                ffxDofRoundAreaWeight(colorRadius.w);
+            FfxFloat32 weight =
+                ffxDofReach(colorRadius.w, sqrt(FfxFloat32(dx * dx + dy * dy))) * ffxDofRoundAreaWeight(colorRadius.w);
             sum += FfxFloat32x3(colorRadius.x, colorRadius.y, colorRadius.z) * weight;
             weightSum += weight;
         }
@@ -525,10 +519,10 @@ FFX_DOF_INLINE void ffxDofComposite(FfxUInt32x2 groupId, FfxUInt32 localIndex)
                                                     FfxInt32(index / FfxUInt32(FFX_DOF_OWN_SURFACE_SIDE))),
                       FfxInt32x2(0, 0), FfxInt32x2(constants.fullSize) - FfxInt32x2(1, 1));
             FfxFloat32x4 inputColor = ffxDofCompositeInput(FfxUInt32x2(pixel), quad, scale);
-            ffxDofStoreOwnSample(index, FfxFloat32x3(inputColor.x, inputColor.y, inputColor.z),
-                                 2.0f * abs(ffxDofCocFromDepth(ffxDofLoadInputDepth(FfxUInt32x2(pixel)),
-                                                               constants.cocScale, constants.cocBias,
-                                                               constants.cocLimit)));
+            ffxDofStoreOwnSample(
+                index, FfxFloat32x3(inputColor.x, inputColor.y, inputColor.z),
+                2.0f * abs(ffxDofCocFromDepth(ffxDofLoadInputDepth(FfxUInt32x2(pixel)), constants.cocScale,
+                                              constants.cocBias, constants.cocLimit)));
         }
     }
     FfxInt32x2 filteredOrigin = tileOrigin - FfxInt32x2(1, 1);

@@ -261,9 +261,10 @@ TEST_CASE("apply: linear, device and reversed depth give the same image", "[vulk
     REQUIRE(linearOut.width == kWidth);
     REQUIRE(linearOut.height == kHeight);
 
-    // The in-focus band keeps its detail (away from its edges, where neighbours bleed in); the near and far
-    // bands lose it.
-    CHECK(meanDifference(linearOut, input, kWidth / 3 + 12, 2 * kWidth / 3 - 12) < 0.02);
+    // The in-focus band keeps its detail beyond the near band's radius (19.2 px: nearer to the near band the
+    // truth has its veil, 13% opaque 12 px away) and away from the far band's edge; the near and far bands
+    // lose it.
+    CHECK(meanDifference(linearOut, input, kWidth / 3 + 20, 2 * kWidth / 3 - 4) < 0.02);
     CHECK(meanDifference(linearOut, input, 0, kWidth / 3 - 8) > 0.1);
     CHECK(meanDifference(linearOut, input, 2 * kWidth / 3 + 8, kWidth) > 0.1);
 

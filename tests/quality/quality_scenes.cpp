@@ -237,4 +237,105 @@ std::vector<PointDiscCase> runPointDiscCases(vkrun::Device& device) {
     return cases;
 }
 
+std::string ThinBarCase::describe() const {
+    std::ostringstream text;
+    text << "bar " << width << " px from column " << left << " at near radius " << radius << " px: opacity summed "
+         << opacitySum << " (truth " << width << "), largest step " << largestStep << " (truth " << truthLargestStep
+         << ")";
+    return text.str();
+}
+
+namespace {
+
+// The thin-lens veil of a bar [x0, x0 + width) blurred by a disc of `radius`, at pixel column `column`:
+// the disc's share over the bar, averaged over the pixel (numerically, 64 x 64 points per pixel).
+double thinBarTruth(double x0, double width, double radius, int column) {
+    constexpr int kSteps = 64;
+    double sum = 0.0;
+    for (int i = 0; i < kSteps; ++i) {
+        const double x = column + (i + 0.5) / kSteps;
+        // Offsets u from the pixel to the bar's points: the disc covers the chord 2 sqrt(R^2 - u^2).
+        for (int j = 0; j < kSteps; ++j) {
+            const double u = x0 + width * (j + 0.5) / kSteps - x;
+            if (std::abs(u) < radius) sum += 2.0 * std::sqrt(radius * radius - u * u) * (width / kSteps);
+        }
+    }
+    return sum / kSteps / (kPi * radius * radius);
+}
+
+}  // namespace
+
+ThinBarCase runThinBar(vkrun::Device& device, double width, double radius, uint32_t left) {
+    constexpr uint32_t kWidth = 192, kHeight = 96;
+    const uint32_t barLeft = left;
+    const uint32_t barColumns = uint32_t(std::ceil(width));
+    vkrun::HostImage depth(kWidth, kHeight, 1);
+    for (uint32_t y = 0; y < kHeight; ++y)
+        for (uint32_t x = 0; x < kWidth; ++x)
+            depth.at(x, y)[0] = x >= barLeft && x < barLeft + barColumns ? 0.0f : 1.0f;
+    const auto wallAt = [](uint32_t x, uint32_t y) { return ((x / 3 + y / 3) % 2) ? 0.6f : 0.2f; };  // 3 px checker
+    vkrun::HostImage color(kWidth, kHeight, 4);
+    const auto runWithBar = [&](float barValue) {
+        for (uint32_t y = 0; y < kHeight; ++y) {
+            for (uint32_t x = 0; x < kWidth; ++x) {
+                float* p = color.at(x, y);
+                const bool bar = x >= barLeft && x < barLeft + barColumns;
+                p[0] = p[1] = p[2] = bar ? barValue : wallAt(x, y);
+                p[3] = 1.0f;
+            }
+        }
+        vkrun::RunSettings settings;
+        settings.colorFormat = VK_FORMAT_R32G32B32A32_SFLOAT;
+        settings.depthFormat = VK_FORMAT_R32_SFLOAT;
+        settings.outputFormat = VK_FORMAT_R32G32B32A32_SFLOAT;
+        settings.quality = kEffectQuality;
+        // Radius (half-res px) = depth * cocScale + cocBias: the wall (depth 1) in focus, the bar (0) near.
+        settings.cocBias = float(0.5 * radius);
+        settings.cocScale = -settings.cocBias;
+        settings.cocLimitFactor = float(radius / kHeight) * 1.02f;
+        return vkrun::runEffect(device, color, depth, settings).output;
+    };
+    const vkrun::HostImage black = runWithBar(0.0f), white = runWithBar(1.0f);
+
+    ThinBarCase result;
+    result.width = width;
+    result.radius = radius;
+    result.left = left;
+    result.input = io::ImageRGBA(kWidth, kHeight);
+    result.input.pixels = color.pixels;  // the white bar's
+    result.output = io::ImageRGBA(kWidth, kHeight);
+    result.output.pixels = white.pixels;
+    for (uint32_t x = 0; x < kWidth; ++x) {
+        double sum = 0.0;
+        for (uint32_t y = kHeight / 2 - 8; y < kHeight / 2 + 8; ++y) sum += white.at(x, y)[1] - black.at(x, y)[1];
+        result.opacity.push_back(sum / 16.0);
+        result.truthOpacity.push_back(thinBarTruth(barLeft, width, radius, int(x)));
+        result.opacitySum += result.opacity.back();
+        if (x > 0) {
+            result.largestStep = std::max(result.largestStep, std::abs(result.opacity[x] - result.opacity[x - 1]));
+            result.truthLargestStep =
+                std::max(result.truthLargestStep, std::abs(result.truthOpacity[x] - result.truthOpacity[x - 1]));
+        }
+    }
+    // The truth: the wall, behind the bar too, under the veil of the white bar.
+    result.truth = io::ImageRGBA(kWidth, kHeight);
+    for (uint32_t y = 0; y < kHeight; ++y) {
+        for (uint32_t x = 0; x < kWidth; ++x) {
+            float* p = result.truth.at(x, y);
+            const float opacity = float(result.truthOpacity[x]);
+            p[0] = p[1] = p[2] = wallAt(x, y) * (1.0f - opacity) + opacity;
+            p[3] = 1.0f;
+        }
+    }
+    return result;
+}
+
+std::vector<ThinBarCase> runThinBarCases(vkrun::Device& device) {
+    std::vector<ThinBarCase> cases;
+    for (uint32_t left : kThinBarLefts)
+        for (double radius : kThinBarRadii)
+            for (double width : kThinBarWidths) cases.push_back(runThinBar(device, width, radius, left));
+    return cases;
+}
+
 }  // namespace ffxdof::quality

@@ -175,11 +175,12 @@ TEST_CASE("bokeh measurement: radius, flatness and energy of synthetic discs", "
         CHECK_FALSE(metrics::checkBokeh(m, r + 1.5, 500.0).radiusOk);
         CHECK_FALSE(metrics::checkBokeh(m, r, 550.0).energyOk);
     }
-    // Two overlapping discs 4 px apart: an oval whose rim is up to about 2 px off any circle.
+    // Two overlapping discs 4 px apart: an oval whose rim is more than 1 px off its circle (a disc's
+    // is within 0.5).
     io::ImageRGBA oval = discImage(48, 22.0, 24.0, 8.0, 500.0);
     const io::ImageRGBA shifted = discImage(48, 26.0, 24.0, 8.0, 500.0);
     for (size_t i = 0; i < oval.pixels.size(); ++i) oval.pixels[i] = std::max(oval.pixels[i], shifted.pixels[i]);
-    CHECK(metrics::measureBokeh(oval).rimDeviation > 1.5);
+    CHECK(metrics::measureBokeh(oval).rimDeviation > 1.2);
     // A Gaussian blob is not flat; a background is subtracted before measuring.
     io::ImageRGBA blob(48, 48), background(48, 48);
     for (uint32_t y = 0; y < 48; ++y) {
