@@ -183,6 +183,45 @@ void writeThinBars(std::ostream& md, vkrun::Device& device, const std::filesyste
           "summed 2.14 px of opacity, 2 px at radius 24 0.87 px (docs/technique.md).\n\n";
 }
 
+// Issue 17's minimal case of small lights (tests/quality/test_small_lights.cpp): per radius and
+// precision, the range of the energy added and of the centre against the truth's over the sizes.
+void writeSmallLights(std::ostream& md, vkrun::Device& device) {
+    const std::vector<quality::SmallLightCase> cases = quality::runSmallLightCases(device);
+    md << "## small lights (issue 17: light kept)\n\n"
+       << "Issue 17's minimal case: a square light of value 50, 1 to 15 px a side (1, 2, 3, 4, 5, 7, 9, 11, 13, 15), "
+          "at a far radius of 6 to 28 px in front of a background of 0.05 at radius 32 (as the issue's 960x540 "
+          "case at 85 mm f/2, focus 1.5 m, background 25 m), 160 x 128 px. Energy added: the output with the "
+          "light less the output without it, over what the light adds to the input (gate: within 5%). Centre: the "
+          "output at the light's centre over the truth's (the light's share of the disc about it at 50, the "
+          "background's at the rest; gate: within 20%). Worst over the sizes:\n\n"
+       << "| radius (px) | precision | energy added | centre / truth |\n|---:|---|---|---|\n";
+    bool energyOk = true, centreOk = true;
+    for (bool float32 : {false, true}) {
+        for (double radius : quality::kSmallLightRadii) {
+            double energyLow = 1e30, energyHigh = 0.0, centreLow = 1e30, centreHigh = 0.0;
+            for (const quality::SmallLightCase& light : cases) {
+                if (light.float32 != float32 || light.radius != radius) continue;
+                energyLow = std::min(energyLow, light.energyRatio);
+                energyHigh = std::max(energyHigh, light.energyRatio);
+                centreLow = std::min(centreLow, light.centre / light.truthCentre);
+                centreHigh = std::max(centreHigh, light.centre / light.truthCentre);
+            }
+            energyOk = energyOk && energyLow >= 0.95 && energyHigh <= 1.05;
+            centreOk = centreOk && centreLow >= 0.8 && centreHigh <= 1.2;
+            md << "| " << number(radius, "%g") << " | " << (float32 ? "32-bit" : "16-bit") << " | "
+               << number(energyLow, "%.3f") << " to " << number(energyHigh, "%.3f") << " | "
+               << number(centreLow, "%.3f") << " to " << number(centreHigh, "%.3f") << " |\n";
+        }
+    }
+    md << "\n| gate (issue 17) | result |\n|---|---|\n"
+       << "| energy added within 5% | " << (energyOk ? "**passes: update the test**" : "known failure") << " |\n"
+       << "| centre within 20% of the truth's | " << (centreOk ? "pass" : "**FAIL**") << " |\n\n"
+       << "The energy is short by 1 to 29%, most at radius 12 and for lights of 1 to 5 px at radius 6. "
+          "Without ring merging the CPU pipeline keeps a light's energy within 5% at radius 20.8 "
+          "(tests/shaders, cpu_bokeh: the inner rings read from a coarser MIP put a light's energy up to a MIP "
+          "texel away, where the kernel's rim cuts some); the loss at radius 6 is not explained yet.\n\n";
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -294,6 +333,7 @@ int main(int argc, char** argv) {
         }
         writePointDiscs(md, device, imageDir);
         writeThinBars(md, device, imageDir);
+        writeSmallLights(md, device);
         const std::string text = md.str();
         io::writeFileReplacing((std::filesystem::path(docs) / "quality.md").string(),
                                [&](std::ostream& out) { out << text; });

@@ -139,4 +139,22 @@ struct ThinBarCase {
 ThinBarCase runThinBar(vkrun::Device& device, double width, double radius, uint32_t left);
 std::vector<ThinBarCase> runThinBarCases(vkrun::Device& device);
 
+// Issue 17's minimal case of small lights: a square light of value 50, 1 to 15 px a side, at a far
+// radius between the focus and a much farther background (0.05, radius 32 full-res px, as the
+// issue's 960x540 case at 85 mm f/2 focused at 1.5 m with the background at 25 m), 160 x 128 px, in
+// 16- and 32-bit. Energy added: output with the light less output without it, over what the light
+// adds to the input. The truth's centre: the light's share of the disc around it at the light's
+// value, the background's at the rest.
+constexpr int kSmallLightSizes[] = {1, 2, 3, 4, 5, 7, 9, 11, 13, 15};
+constexpr double kSmallLightRadii[] = {6.0, 12.0, 20.8, 28.0};  // full-res px, far field
+struct SmallLightCase {
+    int size = 0;
+    double radius = 0.0;
+    bool float32 = false;
+    double energyRatio = 0.0;  // added to the output / added to the input
+    double centre = 0.0, truthCentre = 0.0;
+    std::string describe() const;
+};
+std::vector<SmallLightCase> runSmallLightCases(vkrun::Device& device);
+
 }  // namespace ffxdof::quality

@@ -1,0 +1,40 @@
+// Issue 17's light-keeping gates on its minimal case: a small light between the focus and a much
+// farther background keeps its energy and spreads into a disc of the truth's level, at every size from
+// 1 to 15 px and at radii from 6 to 28 px, in 16- and 32-bit (quality_scenes.h).
+#include "quality_scenes.h"
+
+#include <catch2/catch.hpp>
+
+#include <vector>
+
+using namespace ffxdof;
+
+namespace {
+
+const std::vector<quality::SmallLightCase>& allSmallLights() {
+    static const std::vector<quality::SmallLightCase> cases = quality::runSmallLightCases(quality::validatedDevice());
+    return cases;
+}
+
+}  // namespace
+
+TEST_CASE("small lights: the energy a light adds within 5% of what it adds to the input - known failure",
+          "[quality][vulkan][lights][!shouldfail]") {
+    // Measured 0.71 to 0.99 (docs/quality.md, small lights): 0.81 to 0.88 at radius 12, 0.71 to 0.83
+    // for lights of 1 to 5 px at radius 6. Without ring merging the CPU pipeline keeps 95% at radius
+    // 20.8 (tests/shaders, cpu_bokeh); where the rest goes is not found yet.
+    quality::validatedDevice().clearValidationMessages();
+    for (const quality::SmallLightCase& light : allSmallLights()) {
+        INFO(light.describe());
+        CHECK(light.energyRatio == Approx(1.0).margin(0.05));
+    }
+}
+
+TEST_CASE("small lights: the value at a light's centre within 20% of the truth's", "[quality][vulkan][lights]") {
+    quality::validatedDevice().clearValidationMessages();
+    for (const quality::SmallLightCase& light : allSmallLights()) {
+        INFO(light.describe());
+        CHECK(light.centre == Approx(light.truthCentre).epsilon(0.20));
+    }
+    CHECK(quality::validatedDevice().validationMessages().empty());
+}
