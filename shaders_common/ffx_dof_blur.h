@@ -338,6 +338,17 @@ FFX_DOF_INLINE FfxFloat32 ffxDofFarFrontShare(FfxFloat32 absRadius, FfxFloat32 c
     return ffxDofSaturate(centerAbsRadius + FFX_DOF_FAR_FRONT_TOLERANCE + 1.0f - absRadius);
 }
 
+// How much of a far-field sample belongs to the layer in front of the texel's own surface: 1 from
+// FFX_DOF_FAR_FRONT_TOLERANCE + 1 px of radius nearer than the texel's own, 0 from
+// FFX_DOF_FAR_FRONT_TOLERANCE nearer (the mirror of ffxDofFarFrontShare). A small light in front of a
+// farther background covers part of the background's texels: composed over them by its coverage
+// instead of normalised with them, it keeps its energy (normalised, a light of a few texels at a
+// radius of 3 px lost up to a fifth of it to the background's weights).
+FFX_DOF_INLINE FfxFloat32 ffxDofFarNearerShare(FfxFloat32 absRadius, FfxFloat32 centerAbsRadius)
+{
+    return ffxDofSaturate(centerAbsRadius - FFX_DOF_FAR_FRONT_TOLERANCE - absRadius);
+}
+
 // Far-field color of a texel from its two layers, composed front to back. Every far sample spreads its
 // light over its own disc, so the front layer's summed weights over pi are the share of the texel it
 // covers (a solid surface of any radius sums to pi: opacity 1); the background shows through the rest.
@@ -383,9 +394,10 @@ struct FfxDofGather
     FfxFloat32 nearWeight;
     FfxFloat32x3 fillSum;
     FfxFloat32 fillCount;
-    FfxDofBucket farFront;  // far-field samples of the texel's own surface and nearer
-    FfxDofBucket farBack;   // far-field samples behind it
-    FfxFloat32 cocSpread;   // largest |radius - own radius| among the samples seen
+    FfxDofBucket farNearer;  // far-field samples nearer than the texel's own surface
+    FfxDofBucket farFront;   // far-field samples of the texel's own surface
+    FfxDofBucket farBack;    // far-field samples behind it
+    FfxFloat32 cocSpread;    // largest |radius - own radius| among the samples seen
 };
 
 // What every ring of one texel's kernel shares.
@@ -497,9 +509,13 @@ FFX_DOF_INLINE void ffxDofGatherRing(FFX_DOF_INOUT(FfxDofGather) gather, FfxDofK
         if (parts.farField)
         {
             FfxFloat32 frontShare = kernel.centerIsNear ? 0.0f : ffxDofFarFrontShare(absCoc, centerAbsCoc);
+            FfxFloat32 nearerShare = kernel.centerIsNear ? 0.0f : ffxDofFarNearerShare(absCoc, centerAbsCoc);
             FfxFloat32 frontWeight = farWeight * frontShare;
-            gather.farFront.color += color * frontWeight;
-            gather.farFront.weight += frontWeight;
+            FfxFloat32 nearerWeight = farWeight * nearerShare;
+            gather.farNearer.color += color * nearerWeight;
+            gather.farNearer.weight += nearerWeight;
+            gather.farFront.color += color * (frontWeight - nearerWeight);
+            gather.farFront.weight += frontWeight - nearerWeight;
             gather.farBack.color += color * (farWeight - frontWeight);
             gather.farBack.weight += farWeight - frontWeight;
         }
@@ -602,6 +618,15 @@ FFX_DOF_INLINE FfxDofBlurResult ffxDofFinishGather(FfxDofGather gather, FfxDofKe
     back.weight += gather.fillCount * fillWeight;
     FfxFloat32x3 farColor;
     if (ffxDofComposeFarLayers(gather.farFront, back, farColor))
+    {
+        if (gather.farNearer.weight > 0.0f)
+        {
+            FfxFloat32 nearerOpacity = ffxDofSaturate(gather.farNearer.weight * (1.0f / FFX_DOF_PI));
+            farColor = ffxDofLerp(farColor, gather.farNearer.color / gather.farNearer.weight, nearerOpacity);
+        }
+        result.farColor = ffxDofToDofFloat3(farColor);
+    }
+    else if (ffxDofComposeFarLayers(gather.farNearer, ffxDofEmptyBucket(), farColor))
         result.farColor = ffxDofToDofFloat3(farColor);
     else
         result.alpha.y = 0.0f;
@@ -693,6 +718,7 @@ FFX_DOF_INLINE FfxDofBlurResult ffxDofBlurTexel(FfxUInt32x2 texel, FfxFloat32x4 
     gather.nearWeight = 0.0f;
     gather.fillSum = FfxFloat32x3(0.0f, 0.0f, 0.0f);
     gather.fillCount = 0.0f;
+    gather.farNearer = ffxDofEmptyBucket();
     gather.farFront = ffxDofEmptyBucket();
     gather.farBack = ffxDofEmptyBucket();
     gather.cocSpread = 0.0f;

@@ -195,7 +195,7 @@ void writeSmallLights(std::ostream& md, vkrun::Device& device) {
           "output at the light's centre over the truth's (the light's share of the disc about it at 50, the "
           "background's at the rest; gate: within 20%). Worst over the sizes:\n\n"
        << "| radius (px) | precision | energy added | centre / truth |\n|---:|---|---|---|\n";
-    bool energyOk = true, centreOk = true;
+    bool energyOk = true, energyOk6 = true, centreOk = true;
     for (bool float32 : {false, true}) {
         for (double radius : quality::kSmallLightRadii) {
             double energyLow = 1e30, energyHigh = 0.0, centreLow = 1e30, centreHigh = 0.0;
@@ -206,7 +206,8 @@ void writeSmallLights(std::ostream& md, vkrun::Device& device) {
                 centreLow = std::min(centreLow, light.centre / light.truthCentre);
                 centreHigh = std::max(centreHigh, light.centre / light.truthCentre);
             }
-            energyOk = energyOk && energyLow >= 0.95 && energyHigh <= 1.05;
+            bool& energyGate = radius >= 12.0 ? energyOk : energyOk6;  // the gate, or the known failure
+            energyGate = energyGate && energyLow >= 0.95 && energyHigh <= 1.05;
             centreOk = centreOk && centreLow >= 0.8 && centreHigh <= 1.2;
             md << "| " << number(radius, "%g") << " | " << (float32 ? "32-bit" : "16-bit") << " | "
                << number(energyLow, "%.3f") << " to " << number(energyHigh, "%.3f") << " | "
@@ -214,12 +215,16 @@ void writeSmallLights(std::ostream& md, vkrun::Device& device) {
         }
     }
     md << "\n| gate (issue 17) | result |\n|---|---|\n"
-       << "| energy added within 5% | " << (energyOk ? "**passes: update the test**" : "known failure") << " |\n"
+       << "| energy added within 5%, radii 12 to 28 px | " << (energyOk ? "pass" : "**FAIL**") << " |\n"
+       << "| energy added within 5%, radius 6 px | " << (energyOk6 ? "**passes: update the test**" : "known failure")
+       << " |\n"
        << "| centre within 20% of the truth's | " << (centreOk ? "pass" : "**FAIL**") << " |\n\n"
-       << "The energy is short by 1 to 29%, most at radius 12 and for lights of 1 to 5 px at radius 6. "
-          "Without ring merging the CPU pipeline keeps a light's energy within 5% at radius 20.8 "
-          "(tests/shaders, cpu_bokeh: the inner rings read from a coarser MIP put a light's energy up to a MIP "
-          "texel away, where the kernel's rim cuts some); the loss at radius 6 is not explained yet.\n\n";
+       << "Before 2026-11-27 (726c6e3) the light's samples were normalised with the background texels' own in "
+          "one far layer, so a light lost up to a fifth of its energy to the background's weights: 0.71 to "
+          "0.99 over all radii. It is now a layer of its own in front of the texel's surface "
+          "(`ffxDofFarNearerShare`, docs/technique.md). At radius 6 px (3 half-res px, where the composite hands "
+          "its full-resolution own-surface gather over to the half-res layers) lights of 4 to 11 px gain up to "
+          "22%; not explained yet.\n\n";
 }
 
 }  // namespace

@@ -18,13 +18,23 @@ const std::vector<quality::SmallLightCase>& allSmallLights() {
 
 }  // namespace
 
-TEST_CASE("small lights: the energy a light adds within 5% of what it adds to the input - known failure",
-          "[quality][vulkan][lights][!shouldfail]") {
-    // Measured 0.71 to 0.99 (docs/quality.md, small lights): 0.81 to 0.88 at radius 12, 0.71 to 0.83
-    // for lights of 1 to 5 px at radius 6. Without ring merging the CPU pipeline keeps 95% at radius
-    // 20.8 (tests/shaders, cpu_bokeh); where the rest goes is not found yet.
-    quality::validatedDevice().clearValidationMessages();
+TEST_CASE("small lights: the energy a light adds within 5% of what it adds to the input, radii 12 to 28 px",
+          "[quality][vulkan][lights]") {
     for (const quality::SmallLightCase& light : allSmallLights()) {
+        if (light.radius < 12.0) continue;
+        INFO(light.describe());
+        CHECK(light.energyRatio == Approx(1.0).margin(0.05));  // measured 0.951 to 1.016
+    }
+}
+
+TEST_CASE(
+    "small lights: the energy a light adds within 5% of what it adds to the input, radius 6 px - known "
+    "failure",
+    "[quality][vulkan][lights][!shouldfail]") {
+    // Measured 0.93 to 1.22: lights of 4 to 11 px gain energy at a radius of 3 half-res px, where the
+    // composite hands its own-surface gather over to the half-res layers (docs/quality.md, small lights).
+    for (const quality::SmallLightCase& light : allSmallLights()) {
+        if (light.radius >= 12.0) continue;
         INFO(light.describe());
         CHECK(light.energyRatio == Approx(1.0).margin(0.05));
     }
