@@ -8,11 +8,12 @@
 //   one-texel source is read once by every texel whose kernel covers it: a flat bokeh disc).
 //   Near field (radius >= FFX_DOF_NEAR_THRESHOLD): scatter-as-gather, each sample weighted by reach
 //   and inverse area; opacity from the summed area weights (ffxDofNearOpacity).
-//   Far field (everything else): two layers, the texel's own surface and nearer (front) and what
-//   lies behind it (back), composed by the front's coverage (ffxDofComposeFarLayers). A sample only
-//   counts within its own radius, so in-focus and foreground color never spreads into the far field
-//   beyond it. A far sample whose light over its own disc exceeds display white (in the input's
-//   units: GLOBALS' colour scale) spreads over a slightly smaller disc (ffxDofHighlightSpreadRadius).
+//   Far field (everything else): three layers, what lies nearer than the texel's own surface, the
+//   surface itself (front) and what lies behind it (back), each composed over the ones behind by its
+//   coverage (ffxDofFarNearerShare, ffxDofComposeFarLayers). A sample only counts within its own
+//   radius, so in-focus and foreground color never spreads into the far field beyond it. A far
+//   sample whose light over its own disc exceeds display white (in the input's units: GLOBALS'
+//   colour scale) spreads over a slightly smaller disc (ffxDofHighlightSpreadRadius).
 //   Hole filling: when the texel itself is near, every far-field sample, whatever its reach, is
 //   also summed as the fill and added to the far color at the end, each weighing what a sample of
 //   the texel's own radius would: the hidden background is extrapolated from around the object.
