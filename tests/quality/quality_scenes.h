@@ -106,6 +106,13 @@ struct PointDiscCase {
     double glow = 0.0;         // brightest beyond radius + 1.5 px, over the disc's inner level
     io::ImageRGBA output;
     std::string describe() const;
+    // Issue 17's disc gates, one place for the tests and docs/quality.md.
+    bool radiusOk() const { return std::abs(disc.radius - radius) <= 1.0; }
+    bool energyOk() const { return std::abs(energyRatio - 1.0) <= 0.05; }
+    bool flatOk() const { return disc.flatness <= 0.08; }
+    bool noCentreDip() const { return disc.centreLevel >= 0.92 * disc.innerLevel; }
+    bool rimOk() const { return disc.rimDeviation <= 1.0; }
+    bool glowOk() const { return glow <= 0.02; }
 };
 PointDiscCase runPointDisc(vkrun::Device& device, double radius, int offsetX, int offsetY, bool ringMerge);
 // Every radius and offset, ring merging on, then off.
@@ -154,6 +161,11 @@ struct SmallLightCase {
     double energyRatio = 0.0;  // added to the output / added to the input
     double centre = 0.0, truthCentre = 0.0;
     std::string describe() const;
+    // Issue 17's gates: the energy added within 5% of the input's, the centre within 20% of the truth's.
+    bool energyOk() const { return std::abs(energyRatio - 1.0) <= 0.05; }
+    bool centreOk() const { return std::abs(centre / truthCentre - 1.0) <= 0.20; }
+    // Radius 6 px (3 half-res px, the composite's hand-over): the energy gate is a known failure.
+    bool energyKnownFailure() const { return radius < 12.0; }
 };
 std::vector<SmallLightCase> runSmallLightCases(vkrun::Device& device);
 

@@ -21,9 +21,9 @@ const std::vector<quality::SmallLightCase>& allSmallLights() {
 TEST_CASE("small lights: the energy a light adds within 5% of what it adds to the input, radii 12 to 28 px",
           "[quality][vulkan][lights]") {
     for (const quality::SmallLightCase& light : allSmallLights()) {
-        if (light.radius < 12.0) continue;
+        if (light.energyKnownFailure()) continue;
         INFO(light.describe());
-        CHECK(light.energyRatio == Approx(1.0).margin(0.05));  // measured 0.951 to 1.016
+        CHECK(light.energyOk());  // measured 0.951 to 1.016
     }
 }
 
@@ -34,9 +34,9 @@ TEST_CASE(
     // Measured 0.93 to 1.22: lights of 4 to 11 px gain energy at a radius of 3 half-res px, where the
     // composite hands its own-surface gather over to the half-res layers (docs/quality.md, small lights).
     for (const quality::SmallLightCase& light : allSmallLights()) {
-        if (light.radius >= 12.0) continue;
+        if (!light.energyKnownFailure()) continue;
         INFO(light.describe());
-        CHECK(light.energyRatio == Approx(1.0).margin(0.05));
+        CHECK(light.energyOk());
     }
 }
 
@@ -44,7 +44,7 @@ TEST_CASE("small lights: the value at a light's centre within 20% of the truth's
     quality::validatedDevice().clearValidationMessages();
     for (const quality::SmallLightCase& light : allSmallLights()) {
         INFO(light.describe());
-        CHECK(light.centre == Approx(light.truthCentre).epsilon(0.20));
+        CHECK(light.centreOk());
     }
     CHECK(quality::validatedDevice().validationMessages().empty());
 }
