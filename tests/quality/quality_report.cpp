@@ -118,8 +118,8 @@ void writePointDiscs(std::ostream& md, vkrun::Device& device, const std::filesys
        << " |\n"
        << "| rim within 1 px of a circle, ring merging off | "
        << verdict(every(&quality::PointDiscCase::rimOk, 0), false) << " |\n"
-       << "| rim within 1 px of a circle, ring merging on | " << verdict(every(&quality::PointDiscCase::rimOk, 1), true)
-       << " |\n"
+       << "| rim within 1 px of a circle, ring merging on | "
+       << verdict(every(&quality::PointDiscCase::rimOk, 1), false) << " |\n"
        << "| no glow beyond R + 1.5 px above 2% of the level | "
        << verdict(every(&quality::PointDiscCase::glowOk), true) << " |\n\n"
        << "Why the known failures. Glow: the far layer is half-res and upsampled bilinearly, so a disc's rim "
@@ -129,9 +129,13 @@ void writePointDiscs(std::ostream& md, vkrun::Device& device, const std::filesys
           "over. A sharper fixed upsampling (weights 0.84 / 0.16 per axis instead of 0.75 / 0.25; a smoothstep of the "
           "bilinear fraction in ffxDofComposePixel, tried on 2026-11-27 and reverted) measured a "
           "glow of 0.07 and 0.09 dB more on far-highlights, with rims up to 0.5 px less round; not kept. The "
-          "fix is a full-resolution path for highlights (issue 17). Rim with ring merging: the inner rings read "
-          "the point from a coarser MIP texel whose centre is up to a texel away from it, so where they meet "
-          "the outer ring the disc bulges toward that texel (1.3 px at radius 40).\n\n";
+          "fix is a full-resolution path for highlights (issue 17).\n\n"
+          "Rim with ring merging (passes since 2026-11-27): the inner rings read the point from the coarser "
+          "MIP texel that holds it, whose centre is up to 0.7 half-res px away, and give it full reach; where "
+          "they met the outermost ring, read at the kernel's own MIP, the disc bulged toward that texel's "
+          "centre by up to 1.29 px at radius 40, and its glow rose to 0.25. The outermost ring's inner "
+          "border now lies half a texel farther in where merged rings meet it on a flat far field "
+          "(FFX_DOF_RING_MERGE_RIM_INSET, docs/technique.md): rims and glow as without merging.\n\n";
 }
 
 // Issue 17's thin near bars (tests/quality/test_thin_bars.cpp): the veil's summed opacity and its
@@ -336,8 +340,9 @@ int main(int argc, char** argv) {
                << "Issue 6: the blur read each ring as 6k points, each from the nearest texel, so a one-texel "
                   "source was read 0 to 2 times depending on the output texel (a dotted disc; flatness 0.132) "
                   "and the composite's median removed its hot spots (energy -13%). It now reads every texel "
-                  "of a ring once; where ring merging reads groups of rings from a coarser MIP, the borders "
-                  "between the levels are not exact (docs/technique.md, Kernel shape and walk).\n\n";
+                  "of a ring once, also where ring merging reads groups of rings from a coarser MIP: walks at two "
+                  "levels judge their common border by the coarse texels (docs/technique.md, Kernel shape and "
+                  "walk).\n\n";
         }
         writePointDiscs(md, device, imageDir);
         writeThinBars(md, device, imageDir);

@@ -175,7 +175,9 @@ TEST_CASE("Walks at two MIPs sharing a border judged by the coarse texels read e
         const float spacing = 0.7f + 0.8f * unit(rng);
         const uint32_t rings = 2u + uint32_t(unit(rng) * 9.0f);
         const float kernelOuter = ffxDofRingInnerRadius(rings + 1u, spacing);
-        const float groupOuter = ffxDofRingInnerRadius(rings, spacing);
+        // The rim border moved in as the blur moves it where merged rings meet the outermost ring.
+        const float rimInset = trial % 2 == 0 ? FFX_DOF_RING_MERGE_RIM_INSET : 0.0f;
+        const float groupOuter = ffxDofWalkBorderRadius(rings, spacing, rings, true, rimInset);
         const float groupInner = ffxDofRingInnerRadius(1u, spacing);
         std::map<std::pair<int, int>, int> reads;
         for (const auto& t : walkAnnulus(origin, groupOuter, kernelOuter, 2.0f, 1.0f)) ++reads[t];
@@ -184,7 +186,7 @@ TEST_CASE("Walks at two MIPs sharing a border judged by the coarse texels read e
             for (int dy = 0; dy < 2; ++dy)
                 for (int dx = 0; dx < 2; ++dx) ++reads[{2 * t.first + dx, 2 * t.second + dy}];
         INFO("trial " << trial << ": origin " << origin.x << ", " << origin.y << ", spacing " << spacing << ", rings "
-                      << rings);
+                      << rings << ", rim inset " << rimInset);
         for (const auto& [texel, count] : reads) REQUIRE(count == 1);
         // Nothing of the kernel is missed: every texel whose centre lies well inside is read.
         for (int y = 0; y < 48; ++y)
@@ -232,6 +234,16 @@ TEST_CASE("Ring radii: ring k spans (k - 1/2) s to (k + 1/2) s, ring 0 the centr
     CHECK(ffxDofRingInnerRadius(0, 1.3f) == 0.0f);
     CHECK(ffxDofRingInnerRadius(1, 1.3f) == Approx(0.65f));
     CHECK(ffxDofRingInnerRadius(4, 0.8f) == Approx(2.8f));
+}
+
+TEST_CASE("Walk borders: only the rim border judged by coarse texels moves in, never below 0", "[kernel]") {
+    // Ring 5 of 5 is the outermost ring: its inner edge is the rim border.
+    CHECK(ffxDofWalkBorderRadius(5, 1.2f, 5, true, 0.5f) == Approx(4.9f));
+    CHECK(ffxDofWalkBorderRadius(5, 1.2f, 5, false, 0.5f) == Approx(5.4f));
+    CHECK(ffxDofWalkBorderRadius(4, 1.2f, 5, true, 0.5f) == Approx(4.2f));
+    CHECK(ffxDofWalkBorderRadius(1, 0.2f, 1, true, 0.5f) == 0.0f);
+    // Computed in the units of two MIPs a power of two apart, the border agrees to the bit.
+    CHECK(ffxDofWalkBorderRadius(7, 1.37f, 7, true, 0.5f) * 0.5f == ffxDofWalkBorderRadius(7, 0.685f, 7, true, 0.25f));
 }
 
 TEST_CASE("Annulus walk: exactly the texels whose centres lie from inner (included) to outer radius, each once",
