@@ -202,7 +202,7 @@ void writeSmallLights(std::ostream& md, vkrun::Device& device) {
           "output at the light's centre over the truth's (the light's share of the disc about it at 50, the "
           "background's at the rest; gate: within 20%). Worst over the sizes:\n\n"
        << "| radius (px) | precision | energy added | centre / truth |\n|---:|---|---|---|\n";
-    bool energyOk = true, energyKnownFailureOk = true, centreOk = true;
+    bool energyOk = true, centreOk = true;
     for (bool float32 : {false, true}) {
         for (double radius : quality::kSmallLightRadii) {
             double energyLow = 1e30, energyHigh = 0.0, centreLow = 1e30, centreHigh = 0.0;
@@ -212,8 +212,7 @@ void writeSmallLights(std::ostream& md, vkrun::Device& device) {
                 energyHigh = std::max(energyHigh, light.energyRatio);
                 centreLow = std::min(centreLow, light.centre / light.truthCentre);
                 centreHigh = std::max(centreHigh, light.centre / light.truthCentre);
-                bool& energyGate = light.energyKnownFailure() ? energyKnownFailureOk : energyOk;
-                energyGate = energyGate && light.energyOk();
+                energyOk = energyOk && light.energyOk();
                 centreOk = centreOk && light.centreOk();
             }
             md << "| " << number(radius, "%g") << " | " << (float32 ? "32-bit" : "16-bit") << " | "
@@ -222,16 +221,17 @@ void writeSmallLights(std::ostream& md, vkrun::Device& device) {
         }
     }
     md << "\n| gate (issue 17) | result |\n|---|---|\n"
-       << "| energy added within 5%, radii 12 to 28 px | " << (energyOk ? "pass" : "**FAIL**") << " |\n"
-       << "| energy added within 5%, radius 6 px | "
-       << (energyKnownFailureOk ? "**passes: update the test**" : "known failure") << " |\n"
+       << "| energy added within 5% | " << (energyOk ? "pass" : "**FAIL**") << " |\n"
        << "| centre within 20% of the truth's | " << (centreOk ? "pass" : "**FAIL**") << " |\n\n"
        << "Before 2026-11-27 (726c6e3) the light's samples were normalised with the background texels' own in "
           "one far layer, so a light lost up to a fifth of its energy to the background's weights: 0.71 to "
           "0.99 over all radii. It is now a layer of its own in front of the texel's surface "
-          "(`ffxDofFarNearerShare`, docs/technique.md). At radius 6 px (3 half-res px, where the composite hands "
-          "its full-resolution own-surface gather over to the half-res layers) lights of 4 to 11 px gain up to "
-          "22%; not explained yet.\n\n";
+          "(`ffxDofFarNearerShare`, docs/technique.md). Until 2026-11-27 (703cd49) lights at radius 6 px (3 "
+          "half-res px) of 4 to 11 px gained up to 22%: the background's kernels (radius 32 px) read them from "
+          "merged rings of 4 half-res px texels, which draw a disc around the texel's centre, up to 2.8 px from "
+          "the light, while the light's own texels gather it where it is; the background's texels then took "
+          "more of its disc than theirs. Rings merge now only where a texel of the coarse MIP is no larger "
+          "than the smallest radius the tile's kernels read (`ffxDofMergedRingsResolve`, docs/technique.md).\n\n";
 }
 
 }  // namespace

@@ -164,8 +164,6 @@ struct SmallLightCase {
     // Issue 17's gates: the energy added within 5% of the input's, the centre within 20% of the truth's.
     bool energyOk() const { return std::abs(energyRatio - 1.0) <= 0.05; }
     bool centreOk() const { return std::abs(centre / truthCentre - 1.0) <= 0.20; }
-    // Radius 6 px (3 half-res px, the composite's hand-over): the energy gate is a known failure.
-    bool energyKnownFailure() const { return radius < 12.0; }
 };
 std::vector<SmallLightCase> runSmallLightCases(vkrun::Device& device);
 
