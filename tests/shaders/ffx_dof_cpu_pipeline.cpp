@@ -251,9 +251,9 @@ PointDisc measurePointDisc(float radius, int position, uint32_t frame) {
     return disc;
 }
 
-std::vector<LightCase> runSmallFarLightCases() {
+std::vector<LightCase> runSmallFarLightCases(float lightRadius, const std::vector<int>& sizes) {
     const uint32_t w = 128, h = 112;
-    const float lightRadius = 10.4f, backgroundRadius = 16.0f;  // far field: depth = radius
+    const float backgroundRadius = 16.0f;  // far field: depth = radius
     Scene plain;
     plain.width = w;
     plain.height = h;
@@ -263,7 +263,7 @@ std::vector<LightCase> runSmallFarLightCases() {
     settings.cocLimit = 40.0f;
     const std::vector<glm::vec4> without = runPipeline(plain, settings);
     std::vector<LightCase> cases;
-    for (const int size : {1, 3, 5, 9, 13}) {
+    for (const int size : sizes) {
         Scene scene = plain;
         const int x0 = int(w) / 2 - size / 2, y0 = int(h) / 2 - size / 2;
         for (int y = y0; y < y0 + size; ++y)

@@ -58,7 +58,9 @@ struct LightCase {
     double centre = 0.0;       // output at the light's centre
     double discLevel = 0.0;    // thin lens: its energy over its disc, over the background it leaves
 };
-std::vector<LightCase> runSmallFarLightCases();
+// `lightRadius` (half-res px, in front of the background at 16) and the light's sizes (px per side).
+std::vector<LightCase> runSmallFarLightCases(float lightRadius = 10.4f,
+                                             const std::vector<int>& sizes = {1, 3, 5, 9, 13});
 
 // A single bright far pixel (value 10) on black, both at far radius `radius` (half-res px), at one of
 // two positions in the quad grid: the energy of the half-res far layer (2.5: a quarter of one
