@@ -68,9 +68,7 @@ FfxFloat32 ffxDofLoadColorScale();
 #define FFX_DOF_RING_MERGE_NOT_FLAT_SPREAD 1.0f
 // How far the outermost ring's inner border moves in where merged rings meet it, in texels of the
 // kernel's MIP (ffxDofWalkBorderRadius).
-#ifndef FFX_DOF_RING_MERGE_RIM_INSET
 #define FFX_DOF_RING_MERGE_RIM_INSET 0.5f
-#endif
 // A blur tile whose kernels read only radii within this of each other (half-res px) takes the
 // equal-weight path, where every sample weighs what the texel's own radius gives. Small: bright
 // highlights a fraction of a pixel nearer than their background must keep their own radius
@@ -155,8 +153,8 @@ FFX_DOF_INLINE FfxFloat32 ffxDofRingInnerRadius(FfxUInt32 ring, FfxFloat32 spaci
 // The rim border -- the outermost ring's inner edge, `rimRing` -- moves inward by `rimInset` where it
 // is judged by coarse texels (`coarseBorder`): inside it, merged rings read a light from the centre
 // of the coarse texel that holds it, up to 0.71 of the kernel's texels away, and gave it full reach
-// there, so its disc bulged past its radius toward that centre (a point's rim 1.3 px off the circle,
-// its centroid 0.9 px off). Both walks sharing the border compute it from the same figures.
+// there, so its disc bulged past its radius toward that centre (a point's rim up to 1.3 px off the
+// circle). Both walks sharing the border compute it from the same figures.
 FFX_DOF_INLINE FfxFloat32 ffxDofWalkBorderRadius(FfxUInt32 ring, FfxFloat32 spacing, FfxUInt32 rimRing,
                                                  FfxBoolean coarseBorder, FfxFloat32 rimInset)
 {
@@ -323,6 +321,13 @@ FFX_DOF_INLINE FfxFloat32x2 ffxDofKernelJitter(FfxUInt32x2 pixel, FfxUInt32 fram
 
 // ---- Gathering ----------------------------------------------------------------------------------
 
+// Whether the radii the kernels of a tile read (`dilated`: its DILATED_TILES texel, footprint min and
+// max in z and w) lie within FFX_DOF_RING_MERGE_NOT_FLAT_SPREAD of each other.
+FFX_DOF_INLINE FfxBoolean ffxDofFootprintFlat(FfxFloat32x4 dilated)
+{
+    return dilated.w - dilated.z <= FFX_DOF_RING_MERGE_NOT_FLAT_SPREAD;
+}
+
 // Whether merged rings can stand for every radius the kernels of a tile read (`dilated`: its
 // DILATED_TILES texel, footprint min and max in z and w): where those radii are flat (within
 // FFX_DOF_RING_MERGE_NOT_FLAT_SPREAD), or where the smallest of them is at least a texel of the coarse
@@ -334,9 +339,8 @@ FFX_DOF_INLINE FfxFloat32x2 ffxDofKernelJitter(FfxUInt32x2 pixel, FfxUInt32 fram
 FFX_DOF_INLINE FfxBoolean ffxDofMergedRingsResolve(FfxFloat32x4 dilated, FfxUInt32 baseMip)
 {
     FfxUInt32 coarseMip = min(baseMip + FfxUInt32(FFX_DOF_RING_MERGE_LOG), FfxUInt32(FFX_DOF_OPTION_MAX_MIP - 1));
-    FfxBoolean flatRadii = dilated.w - dilated.z <= FFX_DOF_RING_MERGE_NOT_FLAT_SPREAD;
     FfxFloat32 smallestRadius = dilated.w < -FFX_DOF_IN_FOCUS_RADIUS ? -dilated.w : 0.0f;
-    return flatRadii || smallestRadius >= FfxFloat32(1u << coarseMip);
+    return ffxDofFootprintFlat(dilated) || smallestRadius >= FfxFloat32(1u << coarseMip);
 }
 
 // How much of the merged-ring path a texel takes (0: all rings at full resolution, 1: merged), from
@@ -748,13 +752,12 @@ FFX_DOF_INLINE FfxDofBlurResult ffxDofBlurTexel(FfxUInt32x2 texel, FfxFloat32x4 
     kernel.spacing = kernelRadius / FfxFloat32(kernel.rings);
     kernel.baseMip = FfxUInt32(ffxDofMipForSpacing(kernel.spacing * ffxDofApertureRingSpacingScale(constants)));
     kernel.mergeResolved = ffxDofMergedRingsResolve(dilated, kernel.baseMip);
-    // The rim border moves in only where every radius the tile's kernels read is far and within
-    // FFX_DOF_RING_MERGE_NOT_FLAT_SPREAD of the others (dilate's footprint), so the rims of the discs lie in the
-    // outermost ring. Where a light lies farther in front of its background, its rim lies in the merged rings anyway,
-    // and moving the border in changed which texels merge: such lights kept 0.92 to 1.06 of their energy instead of
+    // The rim border moves in only where every radius the tile's kernels read is far and flat
+    // (ffxDofFootprintFlat), so the rims of the discs lie in the outermost ring. Where a light lies
+    // farther in front of its background, its rim lies in the merged rings anyway, and moving the
+    // border in changed which texels merge: such lights kept 0.92 to 1.06 of their energy instead of
     // 0.95 to 1.02, and a bright near patch over a far field gained 1.4% instead of 0.5%.
-    FfxBoolean flatFarTile =
-        dilated.w < FFX_DOF_NEAR_THRESHOLD && dilated.w - dilated.z <= FFX_DOF_RING_MERGE_NOT_FLAT_SPREAD;
+    FfxBoolean flatFarTile = dilated.w < FFX_DOF_NEAR_THRESHOLD && ffxDofFootprintFlat(dilated);
     kernel.rimInset = flatFarTile ? FFX_DOF_RING_MERGE_RIM_INSET * FfxFloat32(1u << kernel.baseMip) : 0.0f;
     kernel.center = FfxFloat32x2(texel) + FfxFloat32x2(0.5f, 0.5f);
     kernel.aperture = ffxDofRoundAperture();
