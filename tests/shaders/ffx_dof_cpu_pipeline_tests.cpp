@@ -429,18 +429,15 @@ TEST_CASE("HDR: an in-focus frame above the range is still copied bit for bit", 
     CHECK(changed == 0);
 }
 
-TEST_CASE("A small light far in front of its background keeps its energy at radii of a coarse texel or less",
+TEST_CASE("A small light far in front of its background keeps its energy at a radius below a coarse texel",
           "[pipeline]") {
-    // Issue 17's minimal case at 3 and 5.2 half-res px in front of a background at 16, whose kernels read
-    // from MIP 1 with merged rings at MIP 2 (4 half-res px texels). Merged, a light of radius 3 was drawn
-    // around the coarse texels' centres while its own texels gathered it where it is: 7 to 11 px lights
-    // gained up to 22% (ffxDofMergedRingsResolve). Measured 0.981 to 1.040 and 0.985 to 1.008 over sizes
-    // 3 to 11 px.
-    for (const float lightRadius : {3.0f, 5.2f}) {
-        for (const ffxdoftest::LightCase& light : ffxdoftest::runSmallFarLightCases(lightRadius, {3, 7, 11})) {
-            INFO("radius " << lightRadius << ", " << light.size << " px: energy added "
-                           << light.energyAdded / light.inputEnergy);
-            CHECK(light.energyAdded / light.inputEnergy == Approx(1.0).epsilon(0.05));
-        }
+    // Issue 17's minimal case at 3 half-res px in front of a background at 16, whose kernels read from
+    // MIP 1 with merged rings at MIP 2 (4 half-res px texels). Merged, the light was drawn around the
+    // coarse texels' centres while its own texels gathered it where it is: lights of 7 and 11 px gained
+    // 20% and 18% (3 and 5 px: 4% and 12%; ffxDofMergedRingsResolve). Measured 0.981 and 1.040 now. Two
+    // sizes only: the test is among the slowest under ASan.
+    for (const ffxdoftest::LightCase& light : ffxdoftest::runSmallFarLightCases(3.0f, {7, 11})) {
+        INFO(light.size << " px: energy added " << light.energyAdded / light.inputEnergy);
+        CHECK(light.energyAdded / light.inputEnergy == Approx(1.0).epsilon(0.05));
     }
 }
