@@ -42,8 +42,13 @@ TEST_CASE("bad input: one line, non-zero exit, no output", "[cli]") {
     const std::string outArg = "-o '" + out.string() + "'";
     // A regular file where the output folder's parent should be: the folder cannot be created,
     // whoever runs the test (root ignores permission bits).
+    // The work folder may not exist yet when this case runs first in a fresh build: without it the
+    // blocker file is never written and the tool would create the folder and succeed.
+    fs::create_directories(FFX_DOF_TEST_WORK_DIR);
     const fs::path blocker = fs::path(FFX_DOF_TEST_WORK_DIR) / "not_a_folder";
+    fs::remove_all(blocker);
     std::ofstream(blocker) << "x";
+    REQUIRE(fs::is_regular_file(blocker));
 
     const std::pair<std::string, std::string> cases[] = {
         {source + axes + outArg + " --frobnicate", "--frobnicate"},
