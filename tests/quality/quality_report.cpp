@@ -12,6 +12,7 @@
 #include <filesystem>
 #include <ostream>
 #include <sstream>
+#include <stdexcept>
 #include <vector>
 
 using namespace ffxdof;
@@ -234,6 +235,49 @@ void writeSmallLights(std::ostream& md, vkrun::Device& device) {
           "than the smallest radius the tile's kernels read (`ffxDofMergedRingsResolve`, docs/technique.md).\n\n";
 }
 
+// Issue 17's light-kept gate in the mid-lights scene itself (tests/quality/test_small_lights.cpp).
+void writeSceneLights(std::ostream& md, vkrun::Device& device) {
+    const std::vector<quality::SceneLightCase> cases = quality::runSceneLightCases(device, "mid-lights");
+    if (cases.empty()) throw std::runtime_error("mid-lights: the scene has no emitters");
+    md << "## lights of the mid-lights scene (issue 17: light kept, per light)\n\n"
+       << "Each of the scene's 14 emitters taken out of the scene in turn: the energy it adds is the image with "
+          "it less the image without it (RGB summed over the frame, unclipped), for the pinhole input, ffx-dof "
+          "(16- and 32-bit) and, for a light whose disc reaches an in-focus pixel (partly hidden: the thin lens "
+          "loses part of it too), the truth. Gate: ffx-dof adds within 5% of the input's, or of the truth's "
+          "where partly hidden. Radius: the CoC at the light's depth, full-res px.\n\n"
+       << "| light | radius (px) | partly hidden | input adds | truth adds | ffx-dof 16-bit / reference | 32-bit "
+          "/ reference | gate |\n|---:|---:|---|---:|---:|---:|---:|---|\n";
+    size_t passing = 0, lights = 0;
+    const quality::SceneLightCase* worst = &cases.front();
+    for (const quality::SceneLightCase& light : cases)
+        if (std::abs(light.energyRatio() - 1.0) > std::abs(worst->energyRatio() - 1.0)) worst = &light;
+    for (const quality::SceneLightCase& half : cases) {
+        if (half.float32) continue;
+        const quality::SceneLightCase* full = nullptr;
+        for (const quality::SceneLightCase& other : cases)
+            if (other.float32 && other.emitter == half.emitter) full = &other;
+        if (full == nullptr) continue;
+        const bool ok = half.energyOk() && full->energyOk();
+        passing += ok ? 1 : 0;
+        ++lights;
+        md << "| " << half.emitter << " | " << number(half.radius, "%.1f") << " | "
+           << (half.partlyHidden ? "yes" : "no") << " | " << number(half.inputAdded, "%.0f") << " | "
+           << (half.partlyHidden ? number(half.truthAdded, "%.0f") : std::string("")) << " | "
+           << number(half.energyRatio(), "%.3f") << " | " << number(full->energyRatio(), "%.3f") << " | "
+           << (ok ? "pass" : "**known failure**") << " |\n";
+    }
+    md << "\n"
+       << passing << " of " << lights
+       << " lights pass (`quality: mid-lights: every light adds its energy within 5% - known failure`). The "
+          "minimal case above passes where this scene's lights fail: its lights are squares of whole pixels "
+          "with the light's depth in every one of them, these are spheres of 1 to 4 px whose anti-aliased "
+          "border pixels carry part of the light's colour at the background's depth (the pinhole depth is "
+          "traced through pixel centres), and they sit at several depths over a textured background. Not "
+          "explained yet; the next step is the CPU pipeline on the worst of them (light "
+       << worst->emitter << ", " << (worst->float32 ? "32" : "16") << "-bit: " << number(worst->energyRatio(), "%.3f")
+       << " of its energy).\n\n";
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -347,6 +391,7 @@ int main(int argc, char** argv) {
         writePointDiscs(md, device, imageDir);
         writeThinBars(md, device, imageDir);
         writeSmallLights(md, device);
+        writeSceneLights(md, device);
         const std::string text = md.str();
         io::writeFileReplacing((std::filesystem::path(docs) / "quality.md").string(),
                                [&](std::ostream& out) { out << text; });

@@ -124,6 +124,30 @@ metrics::Mask undisturbedInFocusMask(const io::ImageR& radiusPixels) {
     return mask;
 }
 
+vkrun::RunSettings sceneRunSettings(const SceneRender& render) {
+    const ref::Camera& camera = render.setup.camera;
+    const ref::ProjectionTerms projection = camera.projection();
+    // The SDK's radius is in half-resolution pixels: conversion = 0.5 * width / sensorWidth.
+    const float conversion = float(0.5 * camera.width / camera.sensorWidth);
+    float largest = 0.0f;
+    for (float r : render.radius.pixels) largest = std::max(largest, std::abs(r));
+    vkrun::RunSettings settings;
+    settings.colorFormat = VK_FORMAT_R32G32B32A32_SFLOAT;
+    settings.depthFormat = VK_FORMAT_D32_SFLOAT;
+    settings.outputFormat = VK_FORMAT_R32G32B32A32_SFLOAT;
+    settings.quality = kEffectQuality;
+    // The limit is a fraction of the full-resolution height: cover the largest radius of the scene.
+    settings.cocLimitFactor = largest / float(camera.height) * 1.02f + 1e-3f;
+    settings.cocScale = ffxDofCalculateCocScale(float(camera.apertureRadius), float(camera.focusDistance),
+                                                float(camera.focalLength), conversion, float(projection.proj33),
+                                                float(projection.proj34), float(projection.proj43));
+    settings.cocBias = ffxDofCalculateCocBias(float(camera.apertureRadius), float(camera.focusDistance),
+                                              float(camera.focalLength), conversion, float(projection.proj33),
+                                              float(projection.proj34), float(projection.proj43));
+    settings.aperture = effectAperture(camera.aperture);
+    return settings;
+}
+
 GateResult runGate(vkrun::Device& device, const SceneRender& render, bool inPlace) {
     const ref::Camera& camera = render.setup.camera;
     const uint32_t w = camera.width, h = camera.height;
@@ -132,30 +156,11 @@ GateResult runGate(vkrun::Device& device, const SceneRender& render, bool inPlac
     depth.pixels = render.pinhole.deviceDepth.pixels;
 
     GateResult result;
-    const ref::ProjectionTerms projection = camera.projection();
-    // The SDK's radius is in half-resolution pixels: conversion = 0.5 * width / sensorWidth.
-    const float conversion = float(0.5 * w / camera.sensorWidth);
-    result.cocScale = ffxDofCalculateCocScale(float(camera.apertureRadius), float(camera.focusDistance),
-                                              float(camera.focalLength), conversion, float(projection.proj33),
-                                              float(projection.proj34), float(projection.proj43));
-    result.cocBias = ffxDofCalculateCocBias(float(camera.apertureRadius), float(camera.focusDistance),
-                                            float(camera.focalLength), conversion, float(projection.proj33),
-                                            float(projection.proj34), float(projection.proj43));
-    float largest = 0.0f;
-    for (float r : render.radius.pixels) largest = std::max(largest, std::abs(r));
-    // The limit is a fraction of the full-resolution height: cover the largest radius of the scene.
-    result.cocLimitFactor = largest / float(h) * 1.02f + 1e-3f;
-
-    vkrun::RunSettings settings;
-    settings.colorFormat = VK_FORMAT_R32G32B32A32_SFLOAT;
-    settings.depthFormat = VK_FORMAT_D32_SFLOAT;
-    settings.outputFormat = VK_FORMAT_R32G32B32A32_SFLOAT;
-    settings.quality = kEffectQuality;
-    settings.cocLimitFactor = result.cocLimitFactor;
-    settings.cocScale = result.cocScale;
-    settings.cocBias = result.cocBias;
+    vkrun::RunSettings settings = sceneRunSettings(render);
     settings.inPlace = inPlace;
-    settings.aperture = effectAperture(camera.aperture);
+    result.cocScale = settings.cocScale;
+    result.cocBias = settings.cocBias;
+    result.cocLimitFactor = settings.cocLimitFactor;
     const vkrun::RunResult run = vkrun::runEffect(device, color, depth, settings);
     result.ours = io::ImageRGBA(w, h);
     result.ours.pixels = run.output.pixels;
@@ -344,6 +349,113 @@ std::string SmallLightCase::describe() const {
          << "-bit: energy added " << energyRatio << " of the input's, centre " << centre << " (truth " << truthCentre
          << ")";
     return text.str();
+}
+
+std::string SceneLightCase::describe() const {
+    std::ostringstream text;
+    text << scene << " light " << emitter << " at radius " << radius << " px" << (partlyHidden ? ", partly hidden" : "")
+         << ", " << (float32 ? "32" : "16") << "-bit: adds " << oursAdded << " (input " << inputAdded;
+    if (partlyHidden) text << ", truth " << truthAdded;
+    text << "): " << energyRatio() << " of " << (partlyHidden ? "the truth's" : "the input's");
+    return text.str();
+}
+
+namespace {
+
+// RGB summed over the frame, unclipped.
+double imageEnergy(const std::vector<float>& rgba) {
+    double sum = 0.0;
+    for (size_t i = 0; i < rgba.size(); i += 4) sum += double(rgba[i]) + rgba[i + 1] + rgba[i + 2];
+    return sum;
+}
+
+std::vector<float> runOnPinhole(vkrun::Device& device, const ref::PinholeImages& pinhole,
+                                const vkrun::RunSettings& settings) {
+    const uint32_t w = pinhole.color.width, h = pinhole.color.height;
+    vkrun::HostImage color(w, h, 4), depth(w, h, 1);
+    color.pixels = pinhole.color.pixels;
+    depth.pixels = pinhole.deviceDepth.pixels;
+    return vkrun::runEffect(device, color, depth, settings).output.pixels;
+}
+
+// Whether an in-focus pixel lies within reach of the light's disc: the pixels where the input changes
+// with the light, widened by its radius.
+bool lightPartlyHidden(const SceneRender& full, const ref::PinholeImages& without, double radius) {
+    const io::ImageRGBA& with = full.pinhole.color;
+    std::vector<std::pair<uint32_t, uint32_t>> footprint;
+    for (uint32_t y = 0; y < with.height; ++y)
+        for (uint32_t x = 0; x < with.width; ++x) {
+            const size_t i = (size_t(y) * with.width + x) * 4;
+            for (size_t c = 0; c < 3; ++c)
+                if (with.pixels[i + c] != without.color.pixels[i + c]) {
+                    footprint.emplace_back(x, y);
+                    break;
+                }
+        }
+    const double reach = std::abs(radius) + 1.0;
+    for (uint32_t y = 0; y < with.height; ++y)
+        for (uint32_t x = 0; x < with.width; ++x) {
+            if (!(std::abs(full.radius.pixels[size_t(y) * with.width + x]) < 1.0f)) continue;
+            for (const auto& [fx, fy] : footprint) {
+                const double dx = double(x) - fx, dy = double(y) - fy;
+                if (dx * dx + dy * dy <= reach * reach) return true;
+            }
+        }
+    return false;
+}
+
+}  // namespace
+
+std::vector<SceneLightCase> runSceneLightCases(vkrun::Device& device, const std::string& scene) {
+    const SceneRender full = renderScene(scene);
+    const ref::Camera& camera = full.setup.camera;
+    ref::RenderSettings renderSettings;
+    renderSettings.lensSamples = kLensSamples;
+    const double inputEnergy = imageEnergy(full.pinhole.color.pixels);
+    const double truthEnergy = imageEnergy(full.truth.pixels);
+
+    struct Removed {
+        size_t emitter;
+        double radius;
+        ref::PinholeImages pinhole;
+        bool partlyHidden;
+        double truthAdded;
+    };
+    std::vector<Removed> removed;
+    size_t emitter = 0;
+    for (size_t i = 0; i < full.setup.scene.primitives.size(); ++i) {
+        const ref::Primitive& light = full.setup.scene.primitives[i];
+        if (!light.emitter) continue;
+        ref::Scene without = full.setup.scene;
+        without.primitives.erase(without.primitives.begin() + std::ptrdiff_t(i));
+        Removed entry{emitter++, camera.cocRadiusPixels(light.center.z),
+                      ref::renderPinhole(without, camera, renderSettings), false, 0.0};
+        entry.partlyHidden = lightPartlyHidden(full, entry.pinhole, entry.radius);
+        if (entry.partlyHidden)
+            entry.truthAdded =
+                truthEnergy - imageEnergy(ref::renderThinLens(without, camera, renderSettings).color.pixels);
+        removed.push_back(std::move(entry));
+    }
+
+    std::vector<SceneLightCase> cases;
+    for (bool float32 : {false, true}) {
+        vkrun::RunSettings settings = sceneRunSettings(full);
+        settings.forceFloat32 = float32;
+        const double oursEnergy = imageEnergy(runOnPinhole(device, full.pinhole, settings));
+        for (const Removed& entry : removed) {
+            SceneLightCase light;
+            light.scene = scene;
+            light.emitter = entry.emitter;
+            light.radius = entry.radius;
+            light.float32 = float32;
+            light.partlyHidden = entry.partlyHidden;
+            light.inputAdded = inputEnergy - imageEnergy(entry.pinhole.color.pixels);
+            light.oursAdded = oursEnergy - imageEnergy(runOnPinhole(device, entry.pinhole, settings));
+            light.truthAdded = entry.truthAdded;
+            cases.push_back(light);
+        }
+    }
+    return cases;
 }
 
 std::vector<SmallLightCase> runSmallLightCases(vkrun::Device& device) {

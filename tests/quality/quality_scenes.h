@@ -167,4 +167,29 @@ struct SmallLightCase {
 };
 std::vector<SmallLightCase> runSmallLightCases(vkrun::Device& device);
 
+// The effect's settings for a scene's pinhole render, as runGate uses them: cocScale/cocBias from
+// ffxDofCalculateCocScale/Bias, a cocLimitFactor that covers the scene's largest radius, the camera's
+// aperture, RGBA32F colour and output.
+vkrun::RunSettings sceneRunSettings(const SceneRender& render);
+
+// Issue 17's light-kept gate on a whole scene: each emitter of the scene taken out in turn, the energy
+// it adds is the image with it less the image without it (RGB summed over the frame, unclipped).
+struct SceneLightCase {
+    std::string scene;
+    size_t emitter = 0;   // index among the scene's emitters, in the order the scene adds them
+    double radius = 0.0;  // signed CoC radius at its depth, full-res px (negative: far field)
+    bool float32 = false;
+    bool partlyHidden = false;  // an in-focus pixel lies within its disc: the truth loses part of it too
+    double inputAdded = 0.0, oursAdded = 0.0;
+    double truthAdded = 0.0;  // measured only for partly hidden lights
+    // What the light must add: the input's share, or the truth's where an in-focus object in front
+    // hides part of its disc (there the thin lens itself adds less than the pinhole input).
+    double referenceAdded() const { return partlyHidden ? truthAdded : inputAdded; }
+    double energyRatio() const { return oursAdded / referenceAdded(); }
+    bool energyOk() const { return std::abs(energyRatio() - 1.0) <= 0.05; }
+    std::string describe() const;
+};
+// Every emitter of the scene, 16- and 32-bit.
+std::vector<SceneLightCase> runSceneLightCases(vkrun::Device& device, const std::string& scene);
+
 }  // namespace ffxdof::quality

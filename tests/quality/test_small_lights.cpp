@@ -36,3 +36,41 @@ TEST_CASE("small lights: the value at a light's centre within 20% of the truth's
     }
     CHECK(quality::validatedDevice().validationMessages().empty());
 }
+
+namespace {
+
+const std::vector<quality::SceneLightCase>& midLightsLights() {
+    static const std::vector<quality::SceneLightCase> cases =
+        quality::runSceneLightCases(quality::validatedDevice(), "mid-lights");
+    return cases;
+}
+
+}  // namespace
+
+TEST_CASE("mid-lights: each light of the scene measured alone, validation clean", "[quality][vulkan][lights]") {
+    quality::validatedDevice().clearValidationMessages();
+    const std::vector<quality::SceneLightCase>& lights = midLightsLights();
+    // 14 emitters, each in both precisions; the last two sit beside the box, partly hidden by it.
+    REQUIRE(lights.size() == 28);
+    for (const quality::SceneLightCase& light : lights) {
+        INFO(light.describe());
+        CHECK(light.inputAdded > 0.0);
+        CHECK(light.radius < -1.0);
+        if (light.emitter >= 12) CHECK(light.partlyHidden);
+        if (light.partlyHidden) CHECK(light.truthAdded < light.inputAdded * 1.05);
+    }
+    CHECK(quality::validatedDevice().validationMessages().empty());
+}
+
+// Issue 17: "for every light, the energy it adds ... within 5%", in the scene itself. Measured
+// 2026-11-28 (docs/quality.md, "lights of the mid-lights scene"): 3 of 14 lights pass; light 2 (13 px,
+// the dimmest) keeps 0.03 (16-bit) and 0.12 (32-bit) of its energy, light 1 (7 px) 0.65, light 3
+// (18 px) gains 24%, light 12 (10 px, beside the box) adds 1.83 times the truth's. Marked so that the
+// suite stays green while the failure stands: drop the tag once it passes.
+TEST_CASE("mid-lights: every light adds its energy within 5% - known failure",
+          "[quality][vulkan][lights][!shouldfail]") {
+    for (const quality::SceneLightCase& light : midLightsLights()) {
+        INFO(light.describe());
+        CHECK(light.energyOk());
+    }
+}
