@@ -3,7 +3,9 @@
 // ffxDofColorRangeScale of the frame's colour peak (pass 1) first, in 32-bit; the scale goes to
 // GLOBALS for the composite.
 //
-// One workgroup covers one tile: its 64 invocations make the 8 x 8 texels of MIP 0, then the group
+// One workgroup covers one tile: the group first shares the luminance and radius of its 16 x 16
+// full-res pixels and a border of one (a light's anti-aliased rim takes the light's radius:
+// ffxDofLightRimCoc; 2,592 bytes), its 64 invocations make the 8 x 8 texels of MIP 0, then the group
 // reduces them in group-shared memory to 4 x 4, 2 x 2 and 1 x 1 (MIPs 1..3), so no global
 // synchronisation is needed. Every level uses ffxDofBilateralReduce.
 #ifndef FFX_DOF_DOWNSAMPLE_COLOR_H
@@ -129,6 +131,47 @@ FFX_DOF_INLINE void ffxDofBilateralReduce(FfxDofFloat3 color0, FfxDofFloat3 colo
     coc = (coc0 * light0 + coc1 * light1 + coc2 * light2 + coc3 * light3) / (light0 + light1 + light2 + light3);
 }
 
+// ---- Light rims -------------------------------------------------------------------------------------
+
+// A depth buffer holds one surface per pixel, so the anti-aliased rim of a small light, which the light
+// covers only in part, has the depth of the surface behind it. Blurred with that surface's larger
+// radius, the light's rim spread into a wide faint halo around its disc and the disc lost that light
+// (docs/technique.md, "Light rims"). A far-field pixel at least FFX_DOF_LIGHT_RIM_CONTRAST times
+// brighter than the dimmest pixel of its own surface among its 8 neighbours takes the radius of its
+// nearest far-field neighbour that is at least as bright: its light spreads with the light's disc.
+#define FFX_DOF_LIGHT_RIM_CONTRAST 4.0f
+
+struct FfxDofLightRim
+{
+    FfxFloat32 dimmest;  // dimmest luminance of the pixel's own surface (radii within 1 px), itself included
+    FfxFloat32 nearest;  // largest (nearest) far-field radius of a neighbour at least as bright, or its own
+};
+
+FFX_DOF_INLINE FfxDofLightRim ffxDofLightRimBegin(FfxFloat32 luminance, FfxFloat32 coc)
+{
+    FfxDofLightRim rim;
+    rim.dimmest = luminance;
+    rim.nearest = coc;
+    return rim;
+}
+
+FFX_DOF_INLINE FfxDofLightRim ffxDofLightRimAdd(FfxDofLightRim rim, FfxFloat32 luminance, FfxFloat32 coc,
+                                                FfxFloat32 neighbourLuminance, FfxFloat32 neighbourCoc)
+{
+    if (abs(neighbourCoc - coc) <= 1.0f)
+        rim.dimmest = min(rim.dimmest, neighbourLuminance);
+    if (neighbourLuminance >= luminance && neighbourCoc <= -1.0f)
+        rim.nearest = max(rim.nearest, neighbourCoc);
+    return rim;
+}
+
+// The radius the pixel is downsampled with: a light's rim takes the light's.
+FFX_DOF_INLINE FfxFloat32 ffxDofLightRimCoc(FfxDofLightRim rim, FfxFloat32 luminance, FfxFloat32 coc)
+{
+    FfxBoolean rimOfLight = coc <= -1.0f && luminance > 0.0f && luminance >= FFX_DOF_LIGHT_RIM_CONTRAST * rim.dimmest;
+    return rimOfLight ? rim.nearest : coc;
+}
+
 // ---- HDR range --------------------------------------------------------------------------------------
 
 // The factor the frame's colour is multiplied by inside the effect: 1 when `peak` (the largest finite
@@ -148,12 +191,50 @@ FFX_DOF_INLINE FfxFloat32 ffxDofColorRangeScale(FfxFloat32 peak)
 FFX_DOF_GROUPSHARED FfxDofFloat3 ffxDofSharedMipColor[FFX_DOF_GROUP_THREADS];
 FFX_DOF_GROUPSHARED FfxFloat32 ffxDofSharedMipCoc[FFX_DOF_GROUP_THREADS];
 
+// The group's full-resolution pixels and a one-pixel border: (luminance, radius) for the light rims.
+#define FFX_DOF_RIM_SIDE (2u * FFX_DOF_TILE_SIZE + 2u)
+FFX_DOF_GROUPSHARED FfxFloat32x2 ffxDofSharedRimSample[FFX_DOF_RIM_SIDE * FFX_DOF_RIM_SIDE];
+
 // Scaled in 32-bit (and clamped to the half range) before any conversion to 16 bits.
-FFX_DOF_INLINE FfxDofFloat3 ffxDofLoadInputColorRgb(FfxUInt32x2 pixel, FfxFloat32 scale)
+FFX_DOF_INLINE FfxFloat32x4 ffxDofLoadScaledInputColor(FfxUInt32x2 pixel, FfxFloat32 scale)
 {
-    FfxFloat32x4 color = ffxDofScaleColor(ffxDofLoadInputColor(pixel), scale);
-    return FfxDofFloat3(color.x, color.y, color.z);
+    return ffxDofScaleColor(ffxDofLoadInputColor(pixel), scale);
 }
+
+FFX_DOF_INLINE FfxFloat32 ffxDofLoadInputCoc(FfxUInt32x2 pixel, FfxDofConstants constants)
+{
+    return ffxDofCocFromDepth(ffxDofLoadInputDepth(pixel), constants.cocScale, constants.cocBias, constants.cocLimit);
+}
+
+// Cell `index` of the border ring of the rim grid: the top row, the bottom row, then the sides.
+FFX_DOF_INLINE FfxUInt32x2 ffxDofRimBorderCell(FfxUInt32 index)
+{
+    FfxUInt32 side = FfxUInt32(FFX_DOF_RIM_SIDE);
+    if (index < side)
+        return FfxUInt32x2(index, 0u);
+    if (index < 2u * side)
+        return FfxUInt32x2(index - side, side - 1u);
+    FfxUInt32 row = index - 2u * side;
+    return FfxUInt32x2(row < side - 2u ? 0u : side - 1u, 1u + row % (side - 2u));
+}
+
+FFX_DOF_INLINE FfxFloat32 ffxDofLightRimCocAt(FfxUInt32x2 cell)
+{
+    FfxFloat32x2 centre = ffxDofSharedRimSample[cell.y * FFX_DOF_RIM_SIDE + cell.x];
+    FfxDofLightRim rim = ffxDofLightRimBegin(centre.x, centre.y);
+    FFX_DOF_UNROLL
+    for (FfxUInt32 neighbour = 0u; neighbour < 9u; ++neighbour)
+    {
+        if (neighbour == 4u)
+            continue;
+        FfxUInt32x2 at = cell + FfxUInt32x2(neighbour % 3u, neighbour / 3u) - FfxUInt32x2(1u, 1u);
+        FfxFloat32x2 around = ffxDofSharedRimSample[at.y * FFX_DOF_RIM_SIDE + at.x];
+        rim = ffxDofLightRimAdd(rim, centre.x, centre.y, around.x, around.y);
+    }
+    return ffxDofLightRimCoc(rim, centre.x, centre.y);
+}
+
+FFX_DOF_INLINE FfxDofFloat3 ffxDofRgb(FfxFloat32x4 color) { return FfxDofFloat3(color.x, color.y, color.z); }
 
 FFX_DOF_INLINE void ffxDofDownsampleColor(FfxUInt32x2 groupId, FfxUInt32 localIndex)
 {
@@ -171,19 +252,43 @@ FFX_DOF_INLINE void ffxDofDownsampleColor(FfxUInt32x2 groupId, FfxUInt32 localIn
     FfxUInt32x2 pixel1 = min(quad + FfxUInt32x2(1u, 0u), lastPixel);
     FfxUInt32x2 pixel2 = min(quad + FfxUInt32x2(0u, 1u), lastPixel);
     FfxUInt32x2 pixel3 = min(quad + FfxUInt32x2(1u, 1u), lastPixel);
-    FfxFloat32 coc0 =
-        ffxDofCocFromDepth(ffxDofLoadInputDepth(pixel0), constants.cocScale, constants.cocBias, constants.cocLimit);
-    FfxFloat32 coc1 =
-        ffxDofCocFromDepth(ffxDofLoadInputDepth(pixel1), constants.cocScale, constants.cocBias, constants.cocLimit);
-    FfxFloat32 coc2 =
-        ffxDofCocFromDepth(ffxDofLoadInputDepth(pixel2), constants.cocScale, constants.cocBias, constants.cocLimit);
-    FfxFloat32 coc3 =
-        ffxDofCocFromDepth(ffxDofLoadInputDepth(pixel3), constants.cocScale, constants.cocBias, constants.cocLimit);
+    FfxFloat32x4 input0 = ffxDofLoadScaledInputColor(pixel0, scale);
+    FfxFloat32x4 input1 = ffxDofLoadScaledInputColor(pixel1, scale);
+    FfxFloat32x4 input2 = ffxDofLoadScaledInputColor(pixel2, scale);
+    FfxFloat32x4 input3 = ffxDofLoadScaledInputColor(pixel3, scale);
+
+    // The light rims need each pixel's 8 neighbours: the group's pixels and a border of one.
+    FfxUInt32x2 cell = local * 2u + FfxUInt32x2(1u, 1u);
+    ffxDofSharedRimSample[cell.y * FFX_DOF_RIM_SIDE + cell.x] = FfxFloat32x2(
+        ffxDofLuminance32(FfxFloat32x3(input0.x, input0.y, input0.z)), ffxDofLoadInputCoc(pixel0, constants));
+    ffxDofSharedRimSample[cell.y * FFX_DOF_RIM_SIDE + cell.x + 1u] = FfxFloat32x2(
+        ffxDofLuminance32(FfxFloat32x3(input1.x, input1.y, input1.z)), ffxDofLoadInputCoc(pixel1, constants));
+    ffxDofSharedRimSample[(cell.y + 1u) * FFX_DOF_RIM_SIDE + cell.x] = FfxFloat32x2(
+        ffxDofLuminance32(FfxFloat32x3(input2.x, input2.y, input2.z)), ffxDofLoadInputCoc(pixel2, constants));
+    ffxDofSharedRimSample[(cell.y + 1u) * FFX_DOF_RIM_SIDE + cell.x + 1u] = FfxFloat32x2(
+        ffxDofLuminance32(FfxFloat32x3(input3.x, input3.y, input3.z)), ffxDofLoadInputCoc(pixel3, constants));
+    FfxInt32x2 origin = FfxInt32x2(groupId * (2u * FfxUInt32(FFX_DOF_TILE_SIZE))) - FfxInt32x2(1, 1);
+    FFX_DOF_LOOP
+    for (FfxUInt32 border = localIndex; border < 4u * (FFX_DOF_RIM_SIDE - 1u); border += FFX_DOF_GROUP_THREADS)
+    {
+        FfxUInt32x2 borderCell = ffxDofRimBorderCell(border);
+        FfxUInt32x2 pixel =
+            FfxUInt32x2(clamp(origin + FfxInt32x2(borderCell), FfxInt32x2(0, 0), FfxInt32x2(lastPixel)));
+        FfxFloat32x4 bordering = ffxDofLoadScaledInputColor(pixel, scale);
+        ffxDofSharedRimSample[borderCell.y * FFX_DOF_RIM_SIDE + borderCell.x] =
+            FfxFloat32x2(ffxDofLuminance32(FfxFloat32x3(bordering.x, bordering.y, bordering.z)),
+                         ffxDofLoadInputCoc(pixel, constants));
+    }
+    ffxDofGroupBarrier();
+    FfxFloat32 coc0 = ffxDofLightRimCocAt(cell);
+    FfxFloat32 coc1 = ffxDofLightRimCocAt(cell + FfxUInt32x2(1u, 0u));
+    FfxFloat32 coc2 = ffxDofLightRimCocAt(cell + FfxUInt32x2(0u, 1u));
+    FfxFloat32 coc3 = ffxDofLightRimCocAt(cell + FfxUInt32x2(1u, 1u));
+
     FfxDofFloat3 color;
     FfxFloat32 coc;
-    ffxDofBilateralReduce(ffxDofLoadInputColorRgb(pixel0, scale), ffxDofLoadInputColorRgb(pixel1, scale),
-                          ffxDofLoadInputColorRgb(pixel2, scale), ffxDofLoadInputColorRgb(pixel3, scale), coc0, coc1,
-                          coc2, coc3, color, coc);
+    ffxDofBilateralReduce(ffxDofRgb(input0), ffxDofRgb(input1), ffxDofRgb(input2), ffxDofRgb(input3), coc0, coc1, coc2,
+                          coc3, color, coc);
     if (texel.x < constants.halfSize.x && texel.y < constants.halfSize.y)
     {
         ffxDofStoreColorMip(0u, texel, ffxDofRoundForPackedColor(color));

@@ -26,18 +26,6 @@ TEST_CASE("quality gates per scene against the thin-lens truth", "[quality][vulk
     }
 }
 
-TEST_CASE("far-highlights: at least the circular gather overall - known failure", "[quality][vulkan][!shouldfail]") {
-    // Half-res discs of bright lights have soft, wide rims (docs/quality.md); remove the tag and the scene's
-    // atLeastGather = false once ffx-dof reaches the gather here.
-    for (const quality::SceneGate& gate : quality::sceneGates()) {
-        if (gate.atLeastGather) continue;
-        const quality::GateResult result =
-            quality::runGate(quality::validatedDevice(), quality::renderScene(gate.scene));
-        INFO("scene " << gate.scene << ": ffx-dof " << result.effect.psnr << " dB, gather " << result.gather.psnr);
-        CHECK(result.gatherGate());
-    }
-}
-
 TEST_CASE("the circular gather baseline blurs by each pixel's own radius", "[quality]") {
     io::ImageRGBA color(9, 9);
     color.at(4, 4)[0] = 10.0f;

@@ -99,6 +99,74 @@ TEST_CASE("Bilateral reduce keeps a bright pixel's energy and radius wherever it
     }
 }
 
+namespace {
+
+// The light-rim radius of a centre pixel among 8 neighbours, through the shader's three functions.
+float lightRimCoc(float luminance, float coc, const std::vector<std::pair<float, float>>& neighbours) {
+    FfxDofLightRim rim = ffxDofLightRimBegin(luminance, coc);
+    for (const auto& [neighbourLuminance, neighbourCoc] : neighbours)
+        rim = ffxDofLightRimAdd(rim, luminance, coc, neighbourLuminance, neighbourCoc);
+    return ffxDofLightRimCoc(rim, luminance, coc);
+}
+
+}  // namespace
+
+TEST_CASE("Light rims: a bright rim pixel at the background's depth takes the light's radius", "[downsample]") {
+    // A rim pixel (250) at the background's radius -14, beside the light (1000 at -9) and the
+    // background (0.05 at -14): the brightness the light gives it must spread with the light's disc.
+    const std::vector<std::pair<float, float>> rimOfLight = {{1000.0f, -9.0f}, {500.0f, -9.0f}, {0.05f, -14.0f},
+                                                             {0.05f, -14.0f},  {0.05f, -14.0f}, {0.05f, -14.0f},
+                                                             {0.05f, -14.0f},  {250.0f, -14.0f}};
+    CHECK(lightRimCoc(250.0f, -14.0f, rimOfLight) == -9.0f);
+    // The nearest of two brighter far neighbours, never a dimmer one.
+    std::vector<std::pair<float, float>> twoLights = rimOfLight;
+    twoLights[2] = {300.0f, -6.0f};
+    twoLights[3] = {100.0f, -2.0f};  // nearer but dimmer than the pixel: not its light
+    CHECK(lightRimCoc(250.0f, -14.0f, twoLights) == -6.0f);
+}
+
+TEST_CASE("Light rims: every other pixel keeps its own radius", "[downsample]") {
+    const std::vector<std::pair<float, float>> flat(8, {0.05f, -14.0f});
+    // The background itself, and a pixel of it not 4 times brighter than its dimmest neighbour.
+    CHECK(lightRimCoc(0.05f, -14.0f, flat) == -14.0f);
+    std::vector<std::pair<float, float>> beside = flat;
+    beside[0] = {1000.0f, -9.0f};
+    CHECK(lightRimCoc(0.19f, -14.0f, beside) == -14.0f);
+    CHECK(lightRimCoc(0.21f, -14.0f, beside) == -9.0f);  // just above 4 times the dimmest (0.05)
+    // In focus or in the near field: the composite draws those pixels from the input, and a far radius
+    // would spread them into the background (or the reverse).
+    CHECK(lightRimCoc(250.0f, -0.5f, beside) == -0.5f);
+    CHECK(lightRimCoc(250.0f, 3.0f, beside) == 3.0f);
+    // The light must be in the far field too: an in-focus or near neighbour never lends its radius.
+    std::vector<std::pair<float, float>> inFocusLight = flat;
+    inFocusLight[0] = {1000.0f, -0.5f};
+    inFocusLight[1] = {1000.0f, 4.0f};
+    CHECK(lightRimCoc(250.0f, -14.0f, inFocusLight) == -14.0f);
+    // A light farther than the pixel does not pull it back.
+    std::vector<std::pair<float, float>> fartherLight = flat;
+    fartherLight[0] = {1000.0f, -20.0f};
+    CHECK(lightRimCoc(250.0f, -14.0f, fartherLight) == -14.0f);
+    // Black stays black whatever surrounds it.
+    const std::vector<std::pair<float, float>> black(8, {0.0f, -14.0f});
+    std::vector<std::pair<float, float>> blackBeside = black;
+    blackBeside[0] = {0.0f, -9.0f};
+    CHECK(lightRimCoc(0.0f, -14.0f, blackBeside) == -14.0f);
+}
+
+TEST_CASE("Light rims: the border ring of the rim grid names each border cell once", "[downsample]") {
+    const uint32_t side = FFX_DOF_RIM_SIDE;
+    std::set<std::pair<uint32_t, uint32_t>> cells;
+    for (uint32_t index = 0; index < 4 * (side - 1); ++index) {
+        const FfxUInt32x2 cell = ffxDofRimBorderCell(index);
+        INFO("index " << index << ": (" << cell.x << ", " << cell.y << ")");
+        CHECK((cell.x == 0 || cell.x == side - 1 || cell.y == 0 || cell.y == side - 1));
+        CHECK(cell.x < side);
+        CHECK(cell.y < side);
+        cells.insert({cell.x, cell.y});
+    }
+    CHECK(cells.size() == size_t(4 * (side - 1)));
+}
+
 TEST_CASE("Bilateral reduce keeps the energy of a small far light in front of a farther background", "[downsample]") {
     // A light of radius -10.4 among background pixels of -16 (1, 2 or 3 of the quad's pixels), 1000x
     // brighter: the texel holds the quad's plain average (energy kept) with the light's radius.
