@@ -404,6 +404,36 @@ bool lightPartlyHidden(const SceneRender& full, const ref::PinholeImages& withou
     return false;
 }
 
+// The RGB sum of with - without over the pixels within |radius| + 3 px of the input's change (the
+// light's own pixels, weighted by how much they change).
+double ownDiscEnergyAdded(const SceneRender& full, const ref::PinholeImages& without, double radius,
+                          const std::vector<float>& with, const std::vector<float>& withoutOutput) {
+    const io::ImageRGBA& input = full.pinhole.color;
+    double cx = 0.0, cy = 0.0, weight = 0.0;
+    for (uint32_t y = 0; y < input.height; ++y)
+        for (uint32_t x = 0; x < input.width; ++x) {
+            const size_t i = (size_t(y) * input.width + x) * 4;
+            double change = 0.0;
+            for (size_t c = 0; c < 3; ++c)
+                change += std::abs(double(input.pixels[i + c]) - without.color.pixels[i + c]);
+            cx += change * x;
+            cy += change * y;
+            weight += change;
+        }
+    if (!(weight > 0.0)) return 0.0;
+    cx /= weight;
+    cy /= weight;
+    const double reach = std::abs(radius) + 3.0;
+    double added = 0.0;
+    for (uint32_t y = 0; y < input.height; ++y)
+        for (uint32_t x = 0; x < input.width; ++x) {
+            if ((x - cx) * (x - cx) + (y - cy) * (y - cy) > reach * reach) continue;
+            const size_t i = (size_t(y) * input.width + x) * 4;
+            for (size_t c = 0; c < 3; ++c) added += double(with[i + c]) - withoutOutput[i + c];
+        }
+    return added;
+}
+
 }  // namespace
 
 std::vector<SceneLightCase> runSceneLightCases(vkrun::Device& device, const std::string& scene) {
@@ -441,7 +471,8 @@ std::vector<SceneLightCase> runSceneLightCases(vkrun::Device& device, const std:
     for (bool float32 : {false, true}) {
         vkrun::RunSettings settings = sceneRunSettings(full);
         settings.forceFloat32 = float32;
-        const double oursEnergy = imageEnergy(runOnPinhole(device, full.pinhole, settings));
+        const std::vector<float> oursWith = runOnPinhole(device, full.pinhole, settings);
+        const double oursEnergy = imageEnergy(oursWith);
         for (const Removed& entry : removed) {
             SceneLightCase light;
             light.scene = scene;
@@ -450,7 +481,9 @@ std::vector<SceneLightCase> runSceneLightCases(vkrun::Device& device, const std:
             light.float32 = float32;
             light.partlyHidden = entry.partlyHidden;
             light.inputAdded = inputEnergy - imageEnergy(entry.pinhole.color.pixels);
-            light.oursAdded = oursEnergy - imageEnergy(runOnPinhole(device, entry.pinhole, settings));
+            const std::vector<float> oursWithout = runOnPinhole(device, entry.pinhole, settings);
+            light.oursAdded = oursEnergy - imageEnergy(oursWithout);
+            light.oursAddedOwnDisc = ownDiscEnergyAdded(full, entry.pinhole, entry.radius, oursWith, oursWithout);
             light.truthAdded = entry.truthAdded;
             cases.push_back(light);
         }

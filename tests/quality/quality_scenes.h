@@ -181,6 +181,9 @@ struct SceneLightCase {
     bool float32 = false;
     bool partlyHidden = false;  // an in-focus pixel lies within its disc: the truth loses part of it too
     double inputAdded = 0.0, oursAdded = 0.0;
+    // What ffx-dof adds within the light's own disc (its radius + 3 px around the input's change): the
+    // rest is what the light changes elsewhere, in the blur of other content near it.
+    double oursAddedOwnDisc = 0.0;
     double truthAdded = 0.0;  // measured only for partly hidden lights
     // What the light must add: the input's share, or the truth's where an in-focus object in front
     // hides part of its disc (there the thin lens itself adds less than the pinhole input).

@@ -37,40 +37,35 @@ TEST_CASE("small lights: the value at a light's centre within 20% of the truth's
     CHECK(quality::validatedDevice().validationMessages().empty());
 }
 
-namespace {
-
-const std::vector<quality::SceneLightCase>& midLightsLights() {
-    static const std::vector<quality::SceneLightCase> cases =
-        quality::runSceneLightCases(quality::validatedDevice(), "mid-lights");
-    return cases;
-}
-
-}  // namespace
-
-TEST_CASE("mid-lights: each light of the scene measured alone, validation clean", "[quality][vulkan][lights]") {
+// Issue 17: "for every light, the energy it adds ... within 5%", in the scene itself (docs/quality.md,
+// "lights of the mid-lights scene"). Measured 2026-11-28: 5 of 14 lights pass since the light rims (3
+// before). Lights 1 and 2 hold their energy within their own discs (0.99, 1.00) but change a brighter
+// light's rim nearby (0.75, 0.26 over the frame); light 0 (3 px) keeps 0.87, light 10 0.93; the partly
+// hidden ones add 1.06 to 1.83 times the truth's. Until every light passes, the count of passing lights
+// is a ratchet: it may rise (raise kLightsWithinFivePercent with it), never fall. One test case, so the
+// 28 runs happen once.
+TEST_CASE("mid-lights: every light measured alone, and no fewer lights within 5% than measured",
+          "[quality][vulkan][lights]") {
+    constexpr size_t kLightsWithinFivePercent = 5;  // of 14, in both precisions
     quality::validatedDevice().clearValidationMessages();
-    const std::vector<quality::SceneLightCase>& lights = midLightsLights();
+    const std::vector<quality::SceneLightCase> lights =
+        quality::runSceneLightCases(quality::validatedDevice(), "mid-lights");
     // 14 emitters, each in both precisions; the last two sit beside the box, partly hidden by it.
     REQUIRE(lights.size() == 28);
+    size_t passing = 0;
     for (const quality::SceneLightCase& light : lights) {
         INFO(light.describe());
         CHECK(light.inputAdded > 0.0);
         CHECK(light.radius < -1.0);
         if (light.emitter >= 12) CHECK(light.partlyHidden);
         if (light.partlyHidden) CHECK(light.truthAdded < light.inputAdded * 1.05);
+        if (!light.float32) {
+            bool bothOk = light.energyOk();
+            for (const quality::SceneLightCase& other : lights)
+                if (other.float32 && other.emitter == light.emitter) bothOk = bothOk && other.energyOk();
+            passing += bothOk ? 1 : 0;
+        }
     }
+    CHECK(passing >= kLightsWithinFivePercent);
     CHECK(quality::validatedDevice().validationMessages().empty());
-}
-
-// Issue 17: "for every light, the energy it adds ... within 5%", in the scene itself. Measured
-// 2026-11-28 (docs/quality.md, "lights of the mid-lights scene"): 5 of 14 lights pass since the light
-// rims (3 before); light 2 (13 px, the dimmest) keeps 0.26 of its energy, light 1 (7 px) 0.75, light 0
-// (3 px) 0.88, light 12 (10 px, beside the box) adds 1.83 times the truth's. Marked so that the suite
-// stays green while the failure stands: drop the tag once it passes.
-TEST_CASE("mid-lights: every light adds its energy within 5% - known failure",
-          "[quality][vulkan][lights][!shouldfail]") {
-    for (const quality::SceneLightCase& light : midLightsLights()) {
-        INFO(light.describe());
-        CHECK(light.energyOk());
-    }
 }
