@@ -252,6 +252,31 @@ void writeSceneLights(std::ostream& md, vkrun::Device& device) {
     const quality::SceneLightCase* worst = &cases.front();
     for (const quality::SceneLightCase& light : cases)
         if (std::abs(light.energyRatio() - 1.0) > std::abs(worst->energyRatio() - 1.0)) worst = &light;
+    // The 16-bit light that holds its energy within 5% in its own disc and is farthest from it over the
+    // frame: the clearest case of a light that changes other content while it is there.
+    const auto ownDiscRatio = [](const quality::SceneLightCase& light) {
+        return light.oursAddedOwnDisc / light.referenceAdded();
+    };
+    const quality::SceneLightCase* keptOnlyInOwnDisc = nullptr;
+    for (const quality::SceneLightCase& light : cases) {
+        if (light.float32 || light.energyOk() || !(std::abs(ownDiscRatio(light) - 1.0) <= 0.05)) continue;
+        if (keptOnlyInOwnDisc == nullptr ||
+            std::abs(light.energyRatio() - 1.0) > std::abs(keptOnlyInOwnDisc->energyRatio() - 1.0))
+            keptOnlyInOwnDisc = &light;
+    }
+    std::ostringstream ownDiscText;
+    if (keptOnlyInOwnDisc != nullptr)
+        ownDiscText
+            << "Where a light's own disc (its radius + 3 px) holds about its energy and the whole frame does not "
+               "(most so light "
+            << keptOnlyInOwnDisc->emitter << ", 16-bit: " << number(ownDiscRatio(*keptOnlyInOwnDisc), "%.2f")
+            << " in its disc, " << number(keptOnlyInOwnDisc->energyRatio(), "%.2f")
+            << " in the frame), the difference is other content drawn differently while the light is there, "
+               "such as a brighter light's rim nearby (2026-11-28: light 3, of 1000, 24 px from light 2, lost "
+               "part of its rim while light 2 was there).";
+    else
+        ownDiscText << "No light holds its energy within 5% in its own disc (its radius + 3 px) while missing it over "
+                       "the frame (16-bit).";
     for (const quality::SceneLightCase& half : cases) {
         if (half.float32) continue;
         const quality::SceneLightCase* full = nullptr;
@@ -279,10 +304,8 @@ void writeSceneLights(std::ostream& md, vkrun::Device& device) {
           "downsample (docs/technique.md, light rims): 3 lights passed before, light 3 added 1.24 times its "
           "energy, and the scene gained 3.0 dB against the truth. The worst figure now is light "
        << worst->emitter << "'s (" << (worst->float32 ? "32" : "16") << "-bit: " << number(worst->energyRatio(), "%.3f")
-       << "). Where a light's own disc (its radius + 3 px) holds about its energy and the whole frame does not "
-          "(light 2 in 2026-11-28's run: within 5% in its disc, 0.26 in the frame), the difference is other content "
-          "drawn differently while the light is there: light 3 (1000, 24 px away) loses part of its rim. Ring "
-          "merging and the rim inset are decided per tile from the radii its kernels read (dilate's footprint), "
+       << "). " << ownDiscText.str()
+       << " Ring merging and the rim inset are decided per tile from the radii its kernels read (dilate's footprint), "
           "so a dim light in a bright light's tiles changes how the "
           "bright light's rim is drawn. Lights beside in-focus objects (partly hidden) keep their rim pixels at "
           "the in-focus depth, sharp, and their disc is not cut by the object as the thin lens cuts it.\n\n";

@@ -34,7 +34,7 @@ const std::vector<SceneGate>& sceneGates() {
         {"far-highlights", 6.0,
          "bright far bokeh: the discs' rims, anti-aliased at half resolution and upsampled, are softer and wider "
          "than the truth's, which a disc brighter than display white shows as a wider disc with colour fringes; the "
-         "circular gather, at full resolution, keeps them sharp. Above the gather (by 0.15 dB) since the lights' "
+         "circular gather, at full resolution, keeps them sharp. Above the gather since the lights' "
          "anti-aliased rims take the light's radius (docs/technique.md, light rims); below it until then"},
         {"mid-lights", 6.0,
          "small lights nearer than a far background (issue 17): each must spread into its own disc, no sharp "
@@ -356,7 +356,8 @@ std::string SceneLightCase::describe() const {
     text << scene << " light " << emitter << " at radius " << radius << " px" << (partlyHidden ? ", partly hidden" : "")
          << ", " << (float32 ? "32" : "16") << "-bit: adds " << oursAdded << " (input " << inputAdded;
     if (partlyHidden) text << ", truth " << truthAdded;
-    text << "): " << energyRatio() << " of " << (partlyHidden ? "the truth's" : "the input's");
+    text << "): " << energyRatio() << " of " << (partlyHidden ? "the truth's" : "the input's") << ", "
+         << oursAddedOwnDisc / referenceAdded() << " within its own disc";
     return text.str();
 }
 
@@ -378,25 +379,49 @@ std::vector<float> runOnPinhole(vkrun::Device& device, const ref::PinholeImages&
     return vkrun::runEffect(device, color, depth, settings).output.pixels;
 }
 
-// Whether an in-focus pixel lies within reach of the light's disc: the pixels where the input changes
-// with the light, widened by its radius.
-bool lightPartlyHidden(const SceneRender& full, const ref::PinholeImages& without, double radius) {
-    const io::ImageRGBA& with = full.pinhole.color;
-    std::vector<std::pair<uint32_t, uint32_t>> footprint;
+// Where the input changes with a light: its own pixels, anti-aliased rim included, and their centre
+// weighted by how much each changes. The two reaches from it differ on purpose: lightPartlyHidden asks
+// whether the disc of any changed pixel (|radius| + 1) meets an in-focus pixel, ownDiscEnergyAdded sums
+// the light's own disc about its centre (|radius| + 3, the "own disc" of docs/quality.md).
+struct LightFootprint {
+    std::vector<std::pair<uint32_t, uint32_t>> changedPixels;
+    double totalChange = 0.0;  // RGB |with - without| summed: 0 where the light changes nothing
+    double centreX = 0.0, centreY = 0.0;
+};
+
+LightFootprint lightFootprint(const io::ImageRGBA& with, const io::ImageRGBA& without) {
+    LightFootprint footprint;
+    double weightedX = 0.0, weightedY = 0.0;
     for (uint32_t y = 0; y < with.height; ++y)
         for (uint32_t x = 0; x < with.width; ++x) {
             const size_t i = (size_t(y) * with.width + x) * 4;
-            for (size_t c = 0; c < 3; ++c)
-                if (with.pixels[i + c] != without.color.pixels[i + c]) {
-                    footprint.emplace_back(x, y);
-                    break;
-                }
+            double change = 0.0;
+            bool changed = false;
+            for (size_t c = 0; c < 3; ++c) {
+                changed = changed || with.pixels[i + c] != without.pixels[i + c];
+                change += std::abs(double(with.pixels[i + c]) - without.pixels[i + c]);
+            }
+            if (changed) footprint.changedPixels.emplace_back(x, y);
+            weightedX += change * x;
+            weightedY += change * y;
+            footprint.totalChange += change;
         }
+    if (footprint.totalChange > 0.0) {
+        footprint.centreX = weightedX / footprint.totalChange;
+        footprint.centreY = weightedY / footprint.totalChange;
+    }
+    return footprint;
+}
+
+// Whether an in-focus pixel lies within reach of the light's disc: its changed pixels, widened by its
+// radius.
+bool lightPartlyHidden(const SceneRender& full, const LightFootprint& footprint, double radius) {
+    const uint32_t width = full.pinhole.color.width, height = full.pinhole.color.height;
     const double reach = std::abs(radius) + 1.0;
-    for (uint32_t y = 0; y < with.height; ++y)
-        for (uint32_t x = 0; x < with.width; ++x) {
-            if (!(std::abs(full.radius.pixels[size_t(y) * with.width + x]) < 1.0f)) continue;
-            for (const auto& [fx, fy] : footprint) {
+    for (uint32_t y = 0; y < height; ++y)
+        for (uint32_t x = 0; x < width; ++x) {
+            if (!(std::abs(full.radius.pixels[size_t(y) * width + x]) < 1.0f)) continue;
+            for (const auto& [fx, fy] : footprint.changedPixels) {
                 const double dx = double(x) - fx, dy = double(y) - fy;
                 if (dx * dx + dy * dy <= reach * reach) return true;
             }
@@ -404,31 +429,18 @@ bool lightPartlyHidden(const SceneRender& full, const ref::PinholeImages& withou
     return false;
 }
 
-// The RGB sum of with - without over the pixels within |radius| + 3 px of the input's change (the
-// light's own pixels, weighted by how much they change).
-double ownDiscEnergyAdded(const SceneRender& full, const ref::PinholeImages& without, double radius,
+// The RGB sum of with - without over the pixels within |radius| + 3 px of the footprint's centre.
+double ownDiscEnergyAdded(const SceneRender& full, const LightFootprint& footprint, double radius,
                           const std::vector<float>& with, const std::vector<float>& withoutOutput) {
-    const io::ImageRGBA& input = full.pinhole.color;
-    double cx = 0.0, cy = 0.0, weight = 0.0;
-    for (uint32_t y = 0; y < input.height; ++y)
-        for (uint32_t x = 0; x < input.width; ++x) {
-            const size_t i = (size_t(y) * input.width + x) * 4;
-            double change = 0.0;
-            for (size_t c = 0; c < 3; ++c)
-                change += std::abs(double(input.pixels[i + c]) - without.color.pixels[i + c]);
-            cx += change * x;
-            cy += change * y;
-            weight += change;
-        }
-    if (!(weight > 0.0)) return 0.0;
-    cx /= weight;
-    cy /= weight;
+    if (!(footprint.totalChange > 0.0)) return 0.0;
+    const uint32_t width = full.pinhole.color.width, height = full.pinhole.color.height;
+    const double cx = footprint.centreX, cy = footprint.centreY;
     const double reach = std::abs(radius) + 3.0;
     double added = 0.0;
-    for (uint32_t y = 0; y < input.height; ++y)
-        for (uint32_t x = 0; x < input.width; ++x) {
+    for (uint32_t y = 0; y < height; ++y)
+        for (uint32_t x = 0; x < width; ++x) {
             if ((x - cx) * (x - cx) + (y - cy) * (y - cy) > reach * reach) continue;
-            const size_t i = (size_t(y) * input.width + x) * 4;
+            const size_t i = (size_t(y) * width + x) * 4;
             for (size_t c = 0; c < 3; ++c) added += double(with[i + c]) - withoutOutput[i + c];
         }
     return added;
@@ -448,6 +460,7 @@ std::vector<SceneLightCase> runSceneLightCases(vkrun::Device& device, const std:
         size_t emitter;
         double radius;
         ref::PinholeImages pinhole;
+        LightFootprint footprint;
         bool partlyHidden;
         double truthAdded;
     };
@@ -458,13 +471,14 @@ std::vector<SceneLightCase> runSceneLightCases(vkrun::Device& device, const std:
         if (!light.emitter) continue;
         ref::Scene without = full.setup.scene;
         without.primitives.erase(without.primitives.begin() + std::ptrdiff_t(i));
-        Removed entry{emitter++, camera.cocRadiusPixels(light.center.z),
-                      ref::renderPinhole(without, camera, renderSettings), false, 0.0};
-        entry.partlyHidden = lightPartlyHidden(full, entry.pinhole, entry.radius);
-        if (entry.partlyHidden)
-            entry.truthAdded =
-                truthEnergy - imageEnergy(ref::renderThinLens(without, camera, renderSettings).color.pixels);
-        removed.push_back(std::move(entry));
+        const double radius = camera.cocRadiusPixels(light.center.z);
+        ref::PinholeImages pinhole = ref::renderPinhole(without, camera, renderSettings);
+        LightFootprint footprint = lightFootprint(full.pinhole.color, pinhole.color);
+        const bool partlyHidden = lightPartlyHidden(full, footprint, radius);
+        const double truthAdded =
+            partlyHidden ? truthEnergy - imageEnergy(ref::renderThinLens(without, camera, renderSettings).color.pixels)
+                         : 0.0;
+        removed.push_back({emitter++, radius, std::move(pinhole), std::move(footprint), partlyHidden, truthAdded});
     }
 
     std::vector<SceneLightCase> cases;
@@ -483,7 +497,7 @@ std::vector<SceneLightCase> runSceneLightCases(vkrun::Device& device, const std:
             light.inputAdded = inputEnergy - imageEnergy(entry.pinhole.color.pixels);
             const std::vector<float> oursWithout = runOnPinhole(device, entry.pinhole, settings);
             light.oursAdded = oursEnergy - imageEnergy(oursWithout);
-            light.oursAddedOwnDisc = ownDiscEnergyAdded(full, entry.pinhole, entry.radius, oursWith, oursWithout);
+            light.oursAddedOwnDisc = ownDiscEnergyAdded(full, entry.footprint, entry.radius, oursWith, oursWithout);
             light.truthAdded = entry.truthAdded;
             cases.push_back(light);
         }

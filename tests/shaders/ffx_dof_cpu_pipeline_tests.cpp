@@ -441,3 +441,115 @@ TEST_CASE("A small light far in front of its background keeps its energy at a ra
         CHECK(light.energyAdded / light.inputEnergy == Approx(1.0).epsilon(0.05));
     }
 }
+
+namespace {
+
+// Issue 17's small far light (value 50 in front of a background of 0.05) with an anti-aliased rim: the
+// ring of pixels around `light` that the light covers in part, at the background's depth (a depth
+// buffer holds one surface per pixel).
+constexpr float kRimBackgroundRadius = 16.0f, kRimLightRadius = 6.0f;  // far field, half-res px
+constexpr float kRimBackgroundValue = 0.05f, kRimLightValue = 50.0f;
+
+Scene makeRimBackground() {
+    const glm::vec4 background(kRimBackgroundValue, kRimBackgroundValue, kRimBackgroundValue, 1.0f);
+    return makeScene(128, 96, background, -kRimBackgroundRadius);
+}
+
+Scene makeRimmedLightScene(const Rect& light) {
+    Scene scene = makeRimBackground();
+    for (int y = light.y0 - 1; y < light.y1 + 1; ++y)
+        for (int x = light.x0 - 1; x < light.x1 + 1; ++x) {
+            const size_t i = size_t(y) * scene.width + size_t(x);
+            // The light covers a quarter of a pixel beside its edges, a twentieth at its corners.
+            const bool besideEdge = (x >= light.x0 && x < light.x1) || (y >= light.y0 && y < light.y1);
+            const float coverage = light.contains(x, y) ? 1.0f : (besideEdge ? 0.25f : 0.05f);
+            const float value = kRimBackgroundValue + coverage * (kRimLightValue - kRimBackgroundValue);
+            scene.color[i] = glm::vec4(value, value, value, 1.0f);
+            if (light.contains(x, y)) scene.depth[i] = kRimLightRadius;  // radius = -depth: far field
+        }
+    return scene;
+}
+
+// What the light adds to the output (RGB summed) over what it adds to the input, and the centre of
+// what it adds to the output (full-res px, pixel centres at + 0.5). `outWithout`: the output of
+// makeRimBackground.
+struct AddedLight {
+    double energyRatio = 0.0;
+    glm::dvec2 centre{0.0};
+};
+
+AddedLight measureRimmedLight(const Rect& light, const std::vector<glm::vec4>& outWithout, Layers* layers) {
+    const Scene with = makeRimmedLightScene(light), without = makeRimBackground();
+    const std::vector<glm::vec4> outWith = ffxdoftest::runPipeline(with, Settings{}, layers);
+    double inputAdded = 0.0, outputAdded = 0.0;
+    glm::dvec2 moment(0.0);
+    for (size_t i = 0; i < outWith.size(); ++i) {
+        const glm::vec4 added = outWith[i] - outWithout[i], inputChange = with.color[i] - without.color[i];
+        const double sum = double(added.x) + added.y + added.z;
+        inputAdded += double(inputChange.x) + inputChange.y + inputChange.z;
+        outputAdded += sum;
+        moment += sum * glm::dvec2(double(i % with.width) + 0.5, double(i / with.width) + 0.5);
+    }
+    return {outputAdded / inputAdded, moment / outputAdded};
+}
+
+}  // namespace
+
+TEST_CASE("A far light at a tile corner: its anti-aliased rim in the next tiles keeps the light's energy and place",
+          "[pipeline]") {
+    // Pass 2 gives a light's rim the light's radius (ffxDofLightRimCoc), reading the light across a tile
+    // border through its one-pixel border. Pass 1 sees depth only, so a tile that holds the rim but no
+    // pixel of the light holds the background's radius alone while its rim texels carry the light's: the
+    // dilated footprint must still cover them (the blur's tile class and ring merging depend on it).
+    const int tileSide = 2 * FFX_DOF_TILE_SIZE;  // full-res px
+    // 2 x 2 px straddling the vertical tile border at x = 64 and resting on the horizontal one at y = 48:
+    // the bottom rim row lies in tiles without a pixel of the light.
+    const Rect light{4 * tileSide - 1, 3 * tileSide - 2, 4 * tileSide + 1, 3 * tileSide};
+    const std::vector<glm::vec4> outWithout = ffxdoftest::runPipeline(makeRimBackground(), Settings{});
+    Layers layers;
+    const AddedLight atBorder = measureRimmedLight(light, outWithout, &layers);
+
+    // The premise: the rim texels below the light, in tiles of the background's radius only, took the
+    // light's nearer radius.
+    const uint32_t rimY = uint32_t(light.y1 / 2);
+    for (const uint32_t rimX : {uint32_t(light.x0 / 2), uint32_t(light.x1 / 2)}) {
+        const size_t tile = size_t(rimY / FFX_DOF_TILE_SIZE) * layers.tilesX + rimX / FFX_DOF_TILE_SIZE;
+        const float rimCoc = layers.coc0[size_t(rimY) * layers.halfWidth + rimX];
+        const glm::vec4 dilated = layers.dilatedTiles[tile];
+        INFO("rim texel (" << rimX << ", " << rimY << "): radius " << rimCoc << ", own tile " << layers.tiles[tile].x
+                           << " to " << layers.tiles[tile].y << ", footprint " << dilated.z << " to " << dilated.w);
+        CHECK(layers.tiles[tile] == glm::vec2(-kRimBackgroundRadius, -kRimBackgroundRadius));
+        CHECK(rimCoc > -kRimBackgroundRadius + 1.0f);
+    }
+    // Every texel's radius lies within its tile's footprint range (up to the rounding of pass 2's
+    // luminance-weighted mean of radii).
+    size_t outsideFootprint = 0;
+    for (uint32_t y = 0; y < layers.halfHeight; ++y)
+        for (uint32_t x = 0; x < layers.halfWidth; ++x) {
+            const glm::vec4 dilated =
+                layers.dilatedTiles[size_t(y / FFX_DOF_TILE_SIZE) * layers.tilesX + x / FFX_DOF_TILE_SIZE];
+            const float coc = layers.coc0[size_t(y) * layers.halfWidth + x];
+            outsideFootprint += coc < dilated.z - 1e-4f || coc > dilated.w + 1e-4f;
+        }
+    CHECK(outsideFootprint == 0u);
+
+    // Where the disc goes: across the vertical border, on the light (left and right of it are mirror
+    // images, and so are the MIP texels read). Along y, the background's kernels read the light from merged
+    // rings of coarse texels (4 half-res px) and draw its disc about their centre (ffx_dof_blur.h, before
+    // ffxDofMergedRingsResolve), up to 4 full-res px from the light; so the reference is the same light one
+    // such texel higher, its rim inside the tiles that hold the light: the tile border must not move the disc.
+    const Rect inside{light.x0, light.y0 - 8, light.x1, light.y1 - 8};
+    const AddedLight inTile = measureRimmedLight(inside, outWithout, nullptr);
+    const glm::dvec2 lightCentre(0.5 * (light.x0 + light.x1), 0.5 * (light.y0 + light.y1));
+    INFO("at the border: energy added " << atBorder.energyRatio << " of the input's, disc centre " << atBorder.centre.x
+                                        << ", " << atBorder.centre.y << " (light " << lightCentre.x << ", "
+                                        << lightCentre.y << "); 8 px higher: energy added " << inTile.energyRatio
+                                        << ", disc centre moved down by 8 px " << inTile.centre.x << ", "
+                                        << inTile.centre.y + 8.0);
+    CHECK(atBorder.energyRatio == Approx(1.0).epsilon(0.05));  // issue 17's gate
+    CHECK(inTile.energyRatio == Approx(1.0).epsilon(0.05));
+    CHECK(std::abs(atBorder.centre.x - lightCentre.x) <= 1.0);
+    // A tenth of a pixel: the bottom rim row alone drawn with the background's radius (pass 2 blind to
+    // the tile above) moved the disc by 0.17 px.
+    CHECK(glm::length(atBorder.centre - (inTile.centre + glm::dvec2(0.0, 8.0))) <= 0.1);
+}
