@@ -201,28 +201,35 @@ void writeSmallLights(std::ostream& md, vkrun::Device& device) {
           "case at 85 mm f/2, focus 1.5 m, background 25 m), 160 x 128 px. Energy added: the output with the "
           "light less the output without it, over what the light adds to the input (gate: within 5%). Centre: the "
           "output at the light's centre over the truth's (the light's share of the disc about it at 50, the "
-          "background's at the rest; gate: within 20%). Worst over the sizes:\n\n"
-       << "| radius (px) | precision | energy added | centre / truth |\n|---:|---|---|---|\n";
-    bool energyOk = true, centreOk = true;
+          "background's at the rest; gate: within 20%). Each light at three places: offsets (0, 0), (3, 1) and (6, 5) "
+          "px from the frame's centre, a corner of the coarsest MIP's texels. Disc shift: how far the centre of "
+          "what the light adds to the output lies from the light's centre (no gate; merged rings read a light "
+          "from a coarse texel and draw it about that texel's centre). Worst over the sizes and places:\n\n"
+       << "| radius (px) | precision | energy added | centre / truth | disc shift (px) |\n|---:|---|---|---|---:|\n";
+    size_t energyWithin = 0;
+    bool centreOk = true;
     for (bool float32 : {false, true}) {
         for (double radius : quality::kSmallLightRadii) {
-            double energyLow = 1e30, energyHigh = 0.0, centreLow = 1e30, centreHigh = 0.0;
+            double energyLow = 1e30, energyHigh = 0.0, centreLow = 1e30, centreHigh = 0.0, shift = 0.0;
             for (const quality::SmallLightCase& light : cases) {
                 if (light.float32 != float32 || light.radius != radius) continue;
                 energyLow = std::min(energyLow, light.energyRatio);
                 energyHigh = std::max(energyHigh, light.energyRatio);
                 centreLow = std::min(centreLow, light.centre / light.truthCentre);
                 centreHigh = std::max(centreHigh, light.centre / light.truthCentre);
-                energyOk = energyOk && light.energyOk();
+                shift = std::max(shift, light.discShift);
+                energyWithin += light.energyOk();
                 centreOk = centreOk && light.centreOk();
             }
             md << "| " << number(radius, "%g") << " | " << (float32 ? "32-bit" : "16-bit") << " | "
                << number(energyLow, "%.3f") << " to " << number(energyHigh, "%.3f") << " | "
-               << number(centreLow, "%.3f") << " to " << number(centreHigh, "%.3f") << " |\n";
+               << number(centreLow, "%.3f") << " to " << number(centreHigh, "%.3f") << " | " << number(shift, "%.2f")
+               << " |\n";
         }
     }
     md << "\n| gate (issue 17) | result |\n|---|---|\n"
-       << "| energy added within 5% | " << (energyOk ? "pass" : "**FAIL**") << " |\n"
+       << "| energy added within 5% | " << energyWithin << " of " << cases.size()
+       << (energyWithin == cases.size() ? " (pass)" : " (**known failure**: a ratchet)") << " |\n"
        << "| centre within 20% of the truth's | " << (centreOk ? "pass" : "**FAIL**") << " |\n\n"
        << "Before 2026-11-27 (726c6e3) the light's samples were normalised with the background texels' own in "
           "one far layer, so a light lost up to a fifth of its energy to the background's weights: 0.71 to "
@@ -232,7 +239,12 @@ void writeSmallLights(std::ostream& md, vkrun::Device& device) {
           "merged rings of 4 half-res px texels, which draw a disc around the texel's centre, up to 2.8 px from "
           "the light, while the light's own texels gather it where it is; the background's texels then took "
           "more of its disc than theirs. Rings merge now only where a texel of the coarse MIP is no larger "
-          "than the smallest radius the tile's kernels read (`ffxDofMergedRingsResolve`, docs/technique.md).\n\n";
+          "than the smallest radius the tile's kernels read (`ffxDofMergedRingsResolve`, docs/technique.md). That "
+          "still "
+          "lets a merged ring read a light from a texel up to its radius wide: the disc-shift column is how far "
+          "the light's disc then moves toward the texel's centre, largest for lights of a few pixels, which no "
+          "texel of their own size carries. Moving the sample to the light's place in the texel would need the "
+          "texel's light centroid in the MIPs (not stored).\n\n";
 }
 
 // Issue 17's light-kept gate in the mid-lights scene itself (tests/quality/test_small_lights.cpp).

@@ -345,9 +345,9 @@ std::vector<ThinBarCase> runThinBarCases(vkrun::Device& device) {
 
 std::string SmallLightCase::describe() const {
     std::ostringstream text;
-    text << "light " << size << " px at radius " << radius << " px, " << (float32 ? "32" : "16")
-         << "-bit: energy added " << energyRatio << " of the input's, centre " << centre << " (truth " << truthCentre
-         << ")";
+    text << "light " << size << " px at radius " << radius << " px, offset (" << offsetX << ", " << offsetY << "), "
+         << (float32 ? "32" : "16") << "-bit: energy added " << energyRatio << " of the input's, centre " << centre
+         << " (truth " << truthCentre << "), disc " << discShift << " px from the light";
     return text.str();
 }
 
@@ -508,10 +508,10 @@ std::vector<SceneLightCase> runSceneLightCases(vkrun::Device& device, const std:
 std::vector<SmallLightCase> runSmallLightCases(vkrun::Device& device) {
     constexpr uint32_t kWidth = 160, kHeight = 128;
     constexpr double kBackground = 0.05, kLight = 50.0, kBackgroundRadius = 32.0;
-    // Radius (half-res px) = depth * cocScale: depth is the full-res radius, negative (far).
-    const auto run = [&](int size, double radius, bool float32) {
+    // Radius (half-res px) = depth * cocScale: depth is the full-res radius, negative (far). The light's
+    // first pixel is `x0, y0`.
+    const auto run = [&](int size, int x0, int y0, double radius, bool float32) {
         vkrun::HostImage color(kWidth, kHeight, 4), depth(kWidth, kHeight, 1);
-        const int x0 = int(kWidth) / 2 - size / 2, y0 = int(kHeight) / 2 - size / 2;
         for (uint32_t y = 0; y < kHeight; ++y) {
             for (uint32_t x = 0; x < kWidth; ++x) {
                 const bool light = int(x) >= x0 && int(x) < x0 + size && int(y) >= y0 && int(y) < y0 + size;
@@ -532,37 +532,55 @@ std::vector<SmallLightCase> runSmallLightCases(vkrun::Device& device) {
         settings.forceFloat32 = float32;
         return vkrun::runEffect(device, color, depth, settings).output;
     };
+    // The truth's centre: the light's share of the disc about its centre (64 x 64 points per pixel of the
+    // square), at the light's value, the background's at the rest.
+    const auto truthCentre = [&](int size, double radius) {
+        const double half = 0.5 * size;
+        constexpr int kSteps = 64;
+        double covered = 0.0;
+        for (int j = 0; j < size * kSteps; ++j)
+            for (int i = 0; i < size * kSteps; ++i) {
+                const double dx = -half + (i + 0.5) / kSteps, dy = -half + (j + 0.5) / kSteps;
+                if (dx * dx + dy * dy <= radius * radius) covered += 1.0 / (kSteps * kSteps);
+            }
+        const double share = covered / (kPi * radius * radius);
+        return kLight * share + kBackground * (1.0 - share);
+    };
     std::vector<SmallLightCase> cases;
     for (bool float32 : {false, true}) {
-        const vkrun::HostImage without = run(0, kBackgroundRadius, float32);
-        for (double radius : kSmallLightRadii) {
-            for (int size : kSmallLightSizes) {
-                const vkrun::HostImage with = run(size, radius, float32);
-                SmallLightCase light;
-                light.size = size;
-                light.radius = radius;
-                light.float32 = float32;
-                double added = 0.0;
-                for (size_t i = 0; i < with.pixels.size(); i += 4) added += with.pixels[i + 1] - without.pixels[i + 1];
-                light.energyRatio = added / (double(size) * size * (kLight - kBackground));
-                // The light's centre: between pixels for an even size; the mean of the 2 x 2 there.
-                const uint32_t cx = kWidth / 2 - (size % 2 == 0 ? 1 : 0), cy = kHeight / 2 - (size % 2 == 0 ? 1 : 0);
-                const uint32_t span = size % 2 == 0 ? 2 : 1;
-                double centre = 0.0, covered = 0.0;
-                for (uint32_t y = cy; y < cy + span; ++y)
-                    for (uint32_t x = cx; x < cx + span; ++x) centre += with.at(x, y)[1];
-                light.centre = centre / (span * span);
-                // The light's share of the disc about its centre (64 x 64 points per pixel of the square).
-                const double half = 0.5 * size;
-                constexpr int kSteps = 64;
-                for (int j = 0; j < size * kSteps; ++j)
-                    for (int i = 0; i < size * kSteps; ++i) {
-                        const double dx = -half + (i + 0.5) / kSteps, dy = -half + (j + 0.5) / kSteps;
-                        if (dx * dx + dy * dy <= radius * radius) covered += 1.0 / (kSteps * kSteps);
-                    }
-                const double share = covered / (kPi * radius * radius);
-                light.truthCentre = kLight * share + kBackground * (1.0 - share);
-                cases.push_back(light);
+        const vkrun::HostImage without = run(0, 0, 0, kBackgroundRadius, float32);
+        for (const auto& offset : kSmallLightOffsets) {
+            for (double radius : kSmallLightRadii) {
+                for (int size : kSmallLightSizes) {
+                    const int x0 = int(kWidth) / 2 - size / 2 + offset[0], y0 = int(kHeight) / 2 - size / 2 + offset[1];
+                    const vkrun::HostImage with = run(size, x0, y0, radius, float32);
+                    SmallLightCase light;
+                    light.size = size;
+                    light.radius = radius;
+                    light.offsetX = offset[0];
+                    light.offsetY = offset[1];
+                    light.float32 = float32;
+                    double added = 0.0, momentX = 0.0, momentY = 0.0;
+                    for (uint32_t y = 0; y < kHeight; ++y)
+                        for (uint32_t x = 0; x < kWidth; ++x) {
+                            const double change = double(with.at(x, y)[1]) - without.at(x, y)[1];
+                            added += change;
+                            momentX += change * (x + 0.5);
+                            momentY += change * (y + 0.5);
+                        }
+                    light.energyRatio = added / (double(size) * size * (kLight - kBackground));
+                    const double lightX = x0 + 0.5 * size, lightY = y0 + 0.5 * size;
+                    light.discShift = std::hypot(momentX / added - lightX, momentY / added - lightY);
+                    // The light's centre: between pixels for an even size; the mean of the 2 x 2 there.
+                    const uint32_t span = size % 2 == 0 ? 2 : 1;
+                    const uint32_t cx = uint32_t(x0 + (size - 1) / 2), cy = uint32_t(y0 + (size - 1) / 2);
+                    double centre = 0.0;
+                    for (uint32_t y = cy; y < cy + span; ++y)
+                        for (uint32_t x = cx; x < cx + span; ++x) centre += with.at(x, y)[1];
+                    light.centre = centre / (span * span);
+                    light.truthCentre = truthCentre(size, radius);
+                    cases.push_back(light);
+                }
             }
         }
     }

@@ -152,14 +152,20 @@ std::vector<ThinBarCase> runThinBarCases(vkrun::Device& device);
 // 16- and 32-bit. Energy added: output with the light less output without it, over what the light
 // adds to the input. The truth's centre: the light's share of the disc around it at the light's
 // value, the background's at the rest.
+// Every light at three places: its centre on a corner of the coarsest MIP's texels (16 full-res px) and at two
+// other phases of every MIP's grid, since merged rings read a light from a coarse texel.
 constexpr int kSmallLightSizes[] = {1, 2, 3, 4, 5, 7, 9, 11, 13, 15};
-constexpr double kSmallLightRadii[] = {6.0, 12.0, 20.8, 28.0};  // full-res px, far field
+constexpr double kSmallLightRadii[] = {6.0, 12.0, 20.8, 28.0};     // full-res px, far field
+constexpr int kSmallLightOffsets[][2] = {{0, 0}, {3, 1}, {6, 5}};  // full-res px from the frame's centre
 struct SmallLightCase {
     int size = 0;
     double radius = 0.0;
+    int offsetX = 0, offsetY = 0;
     bool float32 = false;
     double energyRatio = 0.0;  // added to the output / added to the input
     double centre = 0.0, truthCentre = 0.0;
+    // How far the centre of what the light adds to the output lies from the light's centre (full-res px).
+    double discShift = 0.0;
     std::string describe() const;
     // Issue 17's gates: the energy added within 5% of the input's, the centre within 20% of the truth's.
     bool energyOk() const { return std::abs(energyRatio - 1.0) <= 0.05; }
