@@ -328,19 +328,25 @@ FFX_DOF_INLINE FfxBoolean ffxDofFootprintFlat(FfxFloat32x4 dilated)
     return dilated.w - dilated.z <= FFX_DOF_RING_MERGE_NOT_FLAT_SPREAD;
 }
 
+// The smallest far radius a tile's kernels read, in texels of the coarse MIP, for its rings to merge.
+// A merged ring draws a sample's disc around the centre of the coarse texel holding it, up to 0.71 of
+// that texel away from the light it holds: with two texels per radius, at most 0.35 of the radius.
+#define FFX_DOF_RING_MERGE_MIN_RADIUS_TEXELS 2.0f
+
 // Whether merged rings can stand for every radius the kernels of a tile read (`dilated`: its
 // DILATED_TILES texel, footprint min and max in z and w): where those radii are flat (within
-// FFX_DOF_RING_MERGE_NOT_FLAT_SPREAD), or where the smallest of them is at least a texel of the coarse
-// MIP. A merged ring draws a sample's disc around the centre of the coarse texel holding it, up to
-// 0.71 of that texel away: a disc not much larger than the texel moves by a large part of itself,
-// and the texels of its own radius, which gather it at their own MIP, no longer take the share of it
-// they should (a light of radius 3 half-res px read from 4 px texels in front of a background of 16
-// gained up to 22% of its energy). In-focus and near-field radii in the footprint count as 0.
+// FFX_DOF_RING_MERGE_NOT_FLAT_SPREAD), or where the smallest of them spans
+// FFX_DOF_RING_MERGE_MIN_RADIUS_TEXELS texels of the coarse MIP. A disc not much larger than the texel
+// moves by a large part of itself, and the texels of its own radius, which gather it at their own MIP,
+// no longer take the share of it they should (a light of radius 3 half-res px read from 4 px texels in
+// front of a background of 16 gained up to 22% of its energy; with one texel per radius, lights of a few
+// px were drawn up to 5 px from where they are). In-focus and near-field radii in the footprint count as 0.
 FFX_DOF_INLINE FfxBoolean ffxDofMergedRingsResolve(FfxFloat32x4 dilated, FfxUInt32 baseMip)
 {
     FfxUInt32 coarseMip = min(baseMip + FfxUInt32(FFX_DOF_RING_MERGE_LOG), FfxUInt32(FFX_DOF_OPTION_MAX_MIP - 1));
     FfxFloat32 smallestRadius = dilated.w < -FFX_DOF_IN_FOCUS_RADIUS ? -dilated.w : 0.0f;
-    return ffxDofFootprintFlat(dilated) || smallestRadius >= FfxFloat32(1u << coarseMip);
+    return ffxDofFootprintFlat(dilated) ||
+           smallestRadius >= FFX_DOF_RING_MERGE_MIN_RADIUS_TEXELS * FfxFloat32(1u << coarseMip);
 }
 
 // How much of the merged-ring path a texel takes (0: all rings at full resolution, 1: merged), from

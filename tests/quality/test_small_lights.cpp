@@ -51,15 +51,15 @@ TEST_CASE("small lights: the value at a light's centre within 20% of the truth's
 }
 
 // Issue 17: "for every light, the energy it adds ... within 5%", in the scene itself (docs/quality.md,
-// "lights of the mid-lights scene"). Measured 2026-11-28: 5 of 14 lights pass since the light rims (3
-// before). Lights 1 and 2 hold their energy within their own discs (0.99, 1.00) but change a brighter
-// light's rim nearby (0.75, 0.26 over the frame); light 0 (3 px) keeps 0.87, light 10 0.93; the partly
-// hidden ones add 1.06 to 1.83 times the truth's. Until every light passes, the count of passing lights
-// is a ratchet: it may rise (raise kLightsWithinFivePercent with it), never fall. One test case, so the
-// 28 runs happen once.
+// "lights of the mid-lights scene"). Measured 2026-11-28: 7 of 14 lights pass since rings merge only
+// where the smallest radius spans two coarse texels (5 with one texel, 3 before the light rims). Lights 1 and 2 hold
+// their energy within their own discs (0.99, 1.00) but change a brighter light's rim nearby (0.75, 0.26 over the
+// frame); light 0 (3 px) keeps 0.87, light 10 0.93; the partly hidden ones add 1.06 to 1.83 times the truth's. Until
+// every light passes, the count of passing lights is a ratchet: it may rise (raise kLightsWithinFivePercent with it),
+// never fall. One test case, so the 28 runs happen once.
 TEST_CASE("mid-lights: every light measured alone, and no fewer lights within 5% than measured",
           "[quality][vulkan][lights]") {
-    constexpr size_t kLightsWithinFivePercent = 5;  // of 14, in both precisions
+    constexpr size_t kLightsWithinFivePercent = 7;  // of 14, in both precisions
     quality::validatedDevice().clearValidationMessages();
     const std::vector<quality::SceneLightCase> lights =
         quality::runSceneLightCases(quality::validatedDevice(), "mid-lights");

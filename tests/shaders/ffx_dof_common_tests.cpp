@@ -304,16 +304,18 @@ TEST_CASE("Ring radii: ring k spans (k - 1/2) s to (k + 1/2) s, ring 0 the centr
     CHECK(ffxDofRingInnerRadius(4, 0.8f) == Approx(2.8f));
 }
 
-TEST_CASE("Merged rings stand for a tile's radii where they are flat or no smaller than a coarse texel", "[kernel]") {
+TEST_CASE("Merged rings stand for a tile's radii where they are flat or span two coarse texels", "[kernel]") {
     // (far, near, footprint min, footprint max) as DILATED_TILES holds them; base MIP 1: coarse texels of
     // 4 half-res px.
     CHECK(ffxDofMergedRingsResolve(FfxFloat32x4(-16.0f, 0.0f, -16.0f, -15.2f), 1u));       // flat
-    CHECK(ffxDofMergedRingsResolve(FfxFloat32x4(-16.0f, 0.0f, -16.0f, -5.2f), 1u));        // smallest 5.2 >= 4
-    CHECK(ffxDofMergedRingsResolve(FfxFloat32x4(-16.0f, 0.0f, -16.0f, -4.0f), 1u));        // exactly a texel
+    CHECK(ffxDofMergedRingsResolve(FfxFloat32x4(-16.0f, 0.0f, -16.0f, -9.2f), 1u));        // smallest 9.2 >= 8
+    CHECK(ffxDofMergedRingsResolve(FfxFloat32x4(-16.0f, 0.0f, -16.0f, -8.0f), 1u));        // exactly two texels
+    CHECK_FALSE(ffxDofMergedRingsResolve(FfxFloat32x4(-16.0f, 0.0f, -16.0f, -7.5f), 1u));  // a light of 7.5
     CHECK_FALSE(ffxDofMergedRingsResolve(FfxFloat32x4(-16.0f, 0.0f, -16.0f, -3.0f), 1u));  // a light of 3
     CHECK_FALSE(ffxDofMergedRingsResolve(FfxFloat32x4(-16.0f, 0.0f, -16.0f, 0.2f), 1u));   // in focus
     CHECK_FALSE(ffxDofMergedRingsResolve(FfxFloat32x4(-16.0f, 6.0f, -16.0f, 6.0f), 1u));   // near field
-    CHECK(ffxDofMergedRingsResolve(FfxFloat32x4(-16.0f, 0.0f, -16.0f, -3.0f), 0u));        // coarse texels of 2
+    CHECK(ffxDofMergedRingsResolve(FfxFloat32x4(-16.0f, 0.0f, -16.0f, -4.0f), 0u));        // coarse texels of 2
+    CHECK_FALSE(ffxDofMergedRingsResolve(FfxFloat32x4(-16.0f, 0.0f, -16.0f, -3.0f), 0u));
 }
 
 TEST_CASE("Walk borders: only the rim border judged by coarse texels moves in, never below 0", "[kernel]") {
