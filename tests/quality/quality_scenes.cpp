@@ -505,33 +505,61 @@ std::vector<SceneLightCase> runSceneLightCases(vkrun::Device& device, const std:
     return cases;
 }
 
-std::vector<SmallLightCase> runSmallLightCases(vkrun::Device& device) {
-    constexpr uint32_t kWidth = 160, kHeight = 128;
-    constexpr double kBackground = 0.05, kLight = 50.0, kBackgroundRadius = 32.0;
-    // Radius (half-res px) = depth * cocScale: depth is the full-res radius, negative (far). The light's
-    // first pixel is `x0, y0`.
-    const auto run = [&](int size, int x0, int y0, double radius, bool float32) {
-        vkrun::HostImage color(kWidth, kHeight, 4), depth(kWidth, kHeight, 1);
-        for (uint32_t y = 0; y < kHeight; ++y) {
-            for (uint32_t x = 0; x < kWidth; ++x) {
-                const bool light = int(x) >= x0 && int(x) < x0 + size && int(y) >= y0 && int(y) < y0 + size;
-                float* p = color.at(x, y);
-                p[0] = p[1] = p[2] = float(light ? kLight : kBackground);
-                p[3] = 1.0f;
-                depth.at(x, y)[0] = float(light ? radius : kBackgroundRadius);
-            }
+namespace {
+
+// Issue 17's minimal case: square lights on a background of 0.05 at far radius 32 full-res px, 160 x 128 px.
+constexpr uint32_t kLightsWidth = 160, kLightsHeight = 128;
+constexpr double kLightsBackground = 0.05, kLightsBackgroundRadius = 32.0;
+
+struct SquareLight {
+    int x0 = 0, y0 = 0, size = 0;      // first pixel, px per side
+    double value = 0.0, radius = 0.0;  // radius: full-res px, far field
+};
+
+// The effect's output (RGBA32F) for the lights on the background. Radius (half-res px) = depth * cocScale:
+// the depth is the full-res radius.
+vkrun::HostImage runSquareLights(vkrun::Device& device, const std::vector<SquareLight>& lights, bool float32,
+                                 uint32_t contextFlags = 0) {
+    vkrun::HostImage color(kLightsWidth, kLightsHeight, 4), depth(kLightsWidth, kLightsHeight, 1);
+    for (uint32_t y = 0; y < kLightsHeight; ++y) {
+        for (uint32_t x = 0; x < kLightsWidth; ++x) {
+            float* p = color.at(x, y);
+            p[0] = p[1] = p[2] = float(kLightsBackground);
+            p[3] = 1.0f;
+            depth.at(x, y)[0] = float(kLightsBackgroundRadius);
+            for (const SquareLight& light : lights)
+                if (int(x) >= light.x0 && int(x) < light.x0 + light.size && int(y) >= light.y0 &&
+                    int(y) < light.y0 + light.size) {
+                    p[0] = p[1] = p[2] = float(light.value);
+                    depth.at(x, y)[0] = float(light.radius);
+                }
         }
-        vkrun::RunSettings settings;
-        settings.colorFormat = VK_FORMAT_R32G32B32A32_SFLOAT;
-        settings.depthFormat = VK_FORMAT_R32_SFLOAT;
-        settings.outputFormat = VK_FORMAT_R32G32B32A32_SFLOAT;
-        settings.quality = kEffectQuality;
-        settings.cocScale = -0.5f;
-        settings.cocBias = 0.0f;
-        settings.cocLimitFactor = float(kBackgroundRadius / kHeight) * 1.02f;
-        settings.forceFloat32 = float32;
-        return vkrun::runEffect(device, color, depth, settings).output;
-    };
+    }
+    vkrun::RunSettings settings;
+    settings.colorFormat = VK_FORMAT_R32G32B32A32_SFLOAT;
+    settings.depthFormat = VK_FORMAT_R32_SFLOAT;
+    settings.outputFormat = VK_FORMAT_R32G32B32A32_SFLOAT;
+    settings.quality = kEffectQuality;
+    settings.cocScale = -0.5f;
+    settings.cocBias = 0.0f;
+    settings.cocLimitFactor = float(kLightsBackgroundRadius / kLightsHeight) * 1.02f;
+    settings.forceFloat32 = float32;
+    settings.contextFlags = contextFlags;
+    return vkrun::runEffect(device, color, depth, settings).output;
+}
+
+// The green channel of a - b, summed.
+double addedGreen(const vkrun::HostImage& a, const vkrun::HostImage& b) {
+    double added = 0.0;
+    for (size_t i = 1; i < a.pixels.size(); i += 4) added += double(a.pixels[i]) - b.pixels[i];
+    return added;
+}
+
+}  // namespace
+
+std::vector<SmallLightCase> runSmallLightCases(vkrun::Device& device) {
+    constexpr uint32_t kWidth = kLightsWidth, kHeight = kLightsHeight;
+    constexpr double kBackground = kLightsBackground, kLight = 50.0;
     // The truth's centre: the light's share of the disc about its centre (64 x 64 points per pixel of the
     // square), at the light's value, the background's at the rest.
     const auto truthCentre = [&](int size, double radius) {
@@ -548,12 +576,12 @@ std::vector<SmallLightCase> runSmallLightCases(vkrun::Device& device) {
     };
     std::vector<SmallLightCase> cases;
     for (bool float32 : {false, true}) {
-        const vkrun::HostImage without = run(0, 0, 0, kBackgroundRadius, float32);
+        const vkrun::HostImage without = runSquareLights(device, {}, float32);
         for (const auto& offset : kSmallLightOffsets) {
             for (double radius : kSmallLightRadii) {
                 for (int size : kSmallLightSizes) {
                     const int x0 = int(kWidth) / 2 - size / 2 + offset[0], y0 = int(kHeight) / 2 - size / 2 + offset[1];
-                    const vkrun::HostImage with = run(size, x0, y0, radius, float32);
+                    const vkrun::HostImage with = runSquareLights(device, {{x0, y0, size, kLight, radius}}, float32);
                     SmallLightCase light;
                     light.size = size;
                     light.radius = radius;
@@ -585,6 +613,41 @@ std::vector<SmallLightCase> runSmallLightCases(vkrun::Device& device) {
         }
     }
     return cases;
+}
+
+std::vector<LightPairCase> runLightPairCases(vkrun::Device& device) {
+    // The bright light: 3 x 3 px of 1000 at radius 18.2 px, as mid-lights' light 3 (value and radius); the
+    // dim one: 2 x 2 px of 50, `distance` px to its left and 3 px higher.
+    const SquareLight bright{80, 60, 3, 1000.0, 18.2};
+    std::vector<LightPairCase> cases;
+    for (bool ringMerge : {true, false}) {
+        const uint32_t flags = ringMerge ? 0u : uint32_t(FFX_DOF_DISABLE_RING_MERGE);
+        const vkrun::HostImage none = runSquareLights(device, {}, false, flags);
+        const vkrun::HostImage brightOnly = runSquareLights(device, {bright}, false, flags);
+        for (double dimRadius : kLightPairDimRadii) {
+            for (int distance : kLightPairDistances) {
+                const SquareLight dim{bright.x0 - distance, bright.y0 - 3, 2, 50.0, dimRadius};
+                const double dimInput = dim.size * dim.size * (dim.value - kLightsBackground);
+                LightPairCase pair;
+                pair.dimRadius = dimRadius;
+                pair.distance = distance;
+                pair.ringMerge = ringMerge;
+                pair.aloneRatio = addedGreen(runSquareLights(device, {dim}, false, flags), none) / dimInput;
+                pair.besideRatio =
+                    addedGreen(runSquareLights(device, {bright, dim}, false, flags), brightOnly) / dimInput;
+                cases.push_back(pair);
+            }
+        }
+    }
+    return cases;
+}
+
+std::string LightPairCase::describe() const {
+    std::ostringstream text;
+    text << "dim light at radius " << dimRadius << " px, " << distance << " px from the bright one, ring merging "
+         << (ringMerge ? "on" : "off") << ": adds " << aloneRatio << " of its input alone, " << besideRatio
+         << " beside the bright light";
+    return text.str();
 }
 
 }  // namespace ffxdof::quality

@@ -21,12 +21,10 @@ const std::vector<quality::SmallLightCase>& allSmallLights() {
 
 TEST_CASE("small lights: the energy a light adds within 5% of what it adds to the input, radii 6 to 28 px",
           "[quality][vulkan][lights]") {
-    // Measured 2026-11-28: 0.951 to 1.042 with the light's centre on a corner of the coarsest MIP's
-    // texels, every case within 5%. With the two other places 239 of 240 cases in all: a 7 px light at radius
-    // 6 px (3 half-res px) 16-bit, offset (6, 5), adds 1.051: off the coarse grid the light's disc is drawn
-    // about the centre of the coarse texels the background's merged rings read it from (docs/quality.md,
-    // disc shift), the mechanism of the 22% gain at radius 6 before 703cd49. Until
-    // every case passes, the count is a ratchet: it may rise (raise kWithinFivePercent), never fall.
+    // Measured 2026-11-28 (docs/quality.md, small lights): every case within 5% with the light's centre on a
+    // corner of the coarsest MIP's texels; with the two other places 239 of 240: a 7 px light at radius 6 px
+    // (3 half-res px), 16-bit, offset (6, 5), adds 1.051. Until every case passes, the count is a ratchet: it
+    // may rise (raise kWithinFivePercent), never fall.
     constexpr size_t kWithinFivePercent = 239;
     size_t within = 0, cases = 0;
     for (const quality::SmallLightCase& light : allSmallLights()) {
@@ -80,5 +78,25 @@ TEST_CASE("mid-lights: every light measured alone, and no fewer lights within 5%
         }
     }
     CHECK(passing >= kLightsWithinFivePercent);
+    CHECK(quality::validatedDevice().validationMessages().empty());
+}
+
+// The mid-lights scene's non-locality in its minimal case (quality_scenes.h, LightPairCase). Measured
+// 2026-11-28: alone the dim light adds 0.998 to 1.001 of its input; beside the bright light 0.81 to 0.93
+// with ring merging, and with merging off 0.88 at 16 px (their discs overlap most) and within 1% from 24 px.
+// Until every case passes, the count is a ratchet: it may rise (raise kWithinFivePercent), never fall.
+TEST_CASE("small lights: a dim light beside a bright one adds its energy within 5%, and no fewer cases than measured",
+          "[quality][vulkan][lights]") {
+    constexpr size_t kWithinFivePercent = 4;  // of 12
+    quality::validatedDevice().clearValidationMessages();
+    const std::vector<quality::LightPairCase> pairs = quality::runLightPairCases(quality::validatedDevice());
+    REQUIRE(pairs.size() == 12);
+    size_t within = 0;
+    for (const quality::LightPairCase& pair : pairs) {
+        INFO(pair.describe());
+        CHECK(std::abs(pair.aloneRatio - 1.0) <= 0.05);
+        within += pair.energyOk();
+    }
+    CHECK(within >= kWithinFivePercent);
     CHECK(quality::validatedDevice().validationMessages().empty());
 }
