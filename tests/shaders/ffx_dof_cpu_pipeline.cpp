@@ -80,8 +80,8 @@ GroupBarrier g_barrier;
 
 // The 64 invocations of a workgroup as threads that live as long as the process and run one group
 // after another. Creating 64 threads per group cost more than the passes themselves: most of the CPU
-// pipeline tests' time, five times more under the sanitizers. Like a thread of its own, an invocation
-// that throws ends the process.
+// pipeline tests' time, in Release and more so under the sanitizers. Like a thread of its own, an
+// invocation that throws ends the process.
 class InvocationPool {
 public:
     using Pass = std::function<void(FfxUInt32x2, FfxUInt32)>;
