@@ -270,10 +270,11 @@ void writeLightPairs(std::ostream& md, vkrun::Device& device) {
           "fewer cases than measured`, a ratchet). Each light alone keeps its energy, so a shortfall beside the "
           "bright light is a change in how one of the two is drawn while the other is there (in the mid-lights "
           "scene, the bright light's disc loses light: next section). With ring merging off, nothing changes from "
-          "24 px on; with it on, the change does not need the discs to meet: the tiles around the bright light read "
-          "the dim light's radius in their kernels' footprint (dilate), from which they decide whether and how "
-          "much their rings merge (`ffxDofMergedRingsResolve`, the merge amount). Where the discs overlap most "
-          "(16 px) the change happens without merging too.\n\n";
+          "24 px on; with it on, the change does not need the discs to meet. The likely path (not isolated yet): "
+          "the texels around the bright light read the dim light's radius in their kernels, from which each "
+          "decides how much its rings merge (`ffxDofMergedRingsResolve`, the merge amount), and merged texels "
+          "draw the bright disc about coarse texel centres. Where the discs overlap most (16 px) the change "
+          "happens without merging too.\n\n";
 }
 
 // Issue 17's light-kept gate in the mid-lights scene itself (tests/quality/test_small_lights.cpp).
@@ -312,9 +313,11 @@ void writeSceneLights(std::ostream& md, vkrun::Device& device) {
                        "radius + 3 px; most so light "
                     << changesOthers->emitter << ", 16-bit: " << number(ownDiscRatio(*changesOthers), "%.2f")
                     << " in its disc, " << number(changesOthers->energyRatio(), "%.2f")
-                    << " in the frame), the difference is other content drawn differently while the light is there, "
-                       "such as a brighter light's rim nearby (2026-11-28: light 3, of 1000, 24 px from light 2, "
-                       "drawn with less light while light 2 was there).";
+                    << " in the frame), the difference is other content drawn differently while the light is there: "
+                       "the disc of light "
+                    << changesOthers->mostChangedOther << " changes by "
+                    << number(changesOthers->mostChangedOtherAdded, "%.0f") << " (outside light "
+                    << changesOthers->emitter << "'s own disc) while light " << changesOthers->emitter << " is there.";
     else
         ownDiscText << "What every light adds over the frame is within 5% of what it adds within its own disc (its "
                        "radius + 3 px; 16-bit): no light changes other content.";

@@ -381,7 +381,7 @@ std::vector<float> runOnPinhole(vkrun::Device& device, const ref::PinholeImages&
 
 // Where the input changes with a light: its own pixels, anti-aliased rim included, and their centre
 // weighted by how much each changes. The two reaches from it differ on purpose: lightPartlyHidden asks
-// whether the disc of any changed pixel (|radius| + 1) meets an in-focus pixel, ownDiscEnergyAdded sums
+// whether the disc of any changed pixel (|radius| + 1) meets an in-focus pixel, discEnergyAdded sums
 // the light's own disc about its centre (|radius| + 3, the "own disc" of docs/quality.md).
 struct LightFootprint {
     std::vector<std::pair<uint32_t, uint32_t>> changedPixels;
@@ -429,17 +429,28 @@ bool lightPartlyHidden(const SceneRender& full, const LightFootprint& footprint,
     return false;
 }
 
-// The RGB sum of with - without over the pixels within |radius| + 3 px of the footprint's centre.
-double ownDiscEnergyAdded(const SceneRender& full, const LightFootprint& footprint, double radius,
-                          const std::vector<float>& with, const std::vector<float>& withoutOutput) {
-    if (!(footprint.totalChange > 0.0)) return 0.0;
-    const uint32_t width = full.pinhole.color.width, height = full.pinhole.color.height;
-    const double cx = footprint.centreX, cy = footprint.centreY;
+// A light's own disc: |radius| + 3 px about its footprint's centre.
+bool inOwnDisc(const LightFootprint& footprint, double radius, uint32_t x, uint32_t y) {
     const double reach = std::abs(radius) + 3.0;
+    const double dx = x - footprint.centreX, dy = y - footprint.centreY;
+    return dx * dx + dy * dy <= reach * reach;
+}
+
+// The RGB sum of with - without over the own disc of the light `inside`, less the pixels of the own disc
+// of `outside` (nullptr: none).
+struct LightDisc {
+    const LightFootprint* footprint;
+    double radius;
+};
+double discEnergyAdded(const SceneRender& full, LightDisc inside, const LightDisc* outside,
+                       const std::vector<float>& with, const std::vector<float>& withoutOutput) {
+    if (!(inside.footprint->totalChange > 0.0)) return 0.0;
+    const uint32_t width = full.pinhole.color.width, height = full.pinhole.color.height;
     double added = 0.0;
     for (uint32_t y = 0; y < height; ++y)
         for (uint32_t x = 0; x < width; ++x) {
-            if ((x - cx) * (x - cx) + (y - cy) * (y - cy) > reach * reach) continue;
+            if (!inOwnDisc(*inside.footprint, inside.radius, x, y)) continue;
+            if (outside != nullptr && inOwnDisc(*outside->footprint, outside->radius, x, y)) continue;
             const size_t i = (size_t(y) * width + x) * 4;
             for (size_t c = 0; c < 3; ++c) added += double(with[i + c]) - withoutOutput[i + c];
         }
@@ -497,7 +508,18 @@ std::vector<SceneLightCase> runSceneLightCases(vkrun::Device& device, const std:
             light.inputAdded = inputEnergy - imageEnergy(entry.pinhole.color.pixels);
             const std::vector<float> oursWithout = runOnPinhole(device, entry.pinhole, settings);
             light.oursAdded = oursEnergy - imageEnergy(oursWithout);
-            light.oursAddedOwnDisc = ownDiscEnergyAdded(full, entry.footprint, entry.radius, oursWith, oursWithout);
+            const LightDisc own{&entry.footprint, entry.radius};
+            light.oursAddedOwnDisc = discEnergyAdded(full, own, nullptr, oursWith, oursWithout);
+            // Which other light's disc (outside this one's) changes most while this light is there.
+            for (const Removed& other : removed) {
+                if (other.emitter == entry.emitter) continue;
+                const double changed =
+                    discEnergyAdded(full, {&other.footprint, other.radius}, &own, oursWith, oursWithout);
+                if (std::abs(changed) > std::abs(light.mostChangedOtherAdded)) {
+                    light.mostChangedOther = other.emitter;
+                    light.mostChangedOtherAdded = changed;
+                }
+            }
             light.truthAdded = entry.truthAdded;
             cases.push_back(light);
         }

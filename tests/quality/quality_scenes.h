@@ -208,6 +208,10 @@ struct SceneLightCase {
     // What ffx-dof adds within the light's own disc (its radius + 3 px around the input's change): the
     // rest is what the light changes elsewhere, in the blur of other content near it.
     double oursAddedOwnDisc = 0.0;
+    // The other emitter whose own disc (outside this light's) ffx-dof changes most while this light is
+    // there, and by how much (RGB summed; 0 when no other disc changes).
+    size_t mostChangedOther = 0;
+    double mostChangedOtherAdded = 0.0;
     double truthAdded = 0.0;  // measured only for partly hidden lights
     // What the light must add: the input's share, or the truth's where an in-focus object in front
     // hides part of its disc (there the thin lens itself adds less than the pinhole input).
