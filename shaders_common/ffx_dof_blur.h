@@ -52,6 +52,7 @@ FfxDofConstants ffxDofGetConstants();
 FfxFloat32x4 ffxDofLoadDilatedTile(FfxUInt32x2 tile);
 FfxDofFloat3 ffxDofLoadColorMip(FfxInt32x2 texel, FfxUInt32 mip);
 FfxFloat32 ffxDofLoadCocMip(FfxInt32x2 texel, FfxUInt32 mip);
+FfxFloat32x2 ffxDofLoadLightOffsetMip(FfxInt32x2 texel, FfxUInt32 mip);
 void ffxDofStoreNearColor(FfxUInt32x2 texel, FfxDofFloat3 color);
 void ffxDofStoreFarColor(FfxUInt32x2 texel, FfxDofFloat3 color);
 void ffxDofStoreLayerAlpha(FfxUInt32x2 texel, FfxFloat32x2 nearOpacityFarValidity);
@@ -526,9 +527,11 @@ FFX_DOF_INLINE void ffxDofGatherRing(FFX_DOF_INOUT(FfxDofGather) gather, FfxDofK
             coc = ffxDofLoadCocMip(FfxInt32x2(sampleTexel), mip);
         if (trackSpread)
             gather.cocSpread = max(gather.cocSpread, abs(coc - kernel.centerCoc) * valid);
-        // Reach is judged from the centre of the texel actually read (at the image border, the
-        // clamped one).
+        // Reach is judged from where the light of the texel actually read lies (at the image border, the
+        // clamped one): its centre at MIP 0, its light offset above (LIGHT_OFFSETS).
         FfxFloat32x2 toTexel = sampleTexel - centerToCorner;
+        if (mip > 0u)
+            toTexel += ffxDofLoadLightOffsetMip(FfxInt32x2(sampleTexel), mip);
         FfxBoolean nearSample = coc >= FFX_DOF_NEAR_THRESHOLD;
         FfxFloat32 gauge = sqrt(dot(toTexel, toTexel));
         if (parts.shaped)

@@ -38,6 +38,15 @@ FFX_DOF_BINDING_SRV(FFX_DOF_SRV_COC_MIPS) uniform texture2D ffxDofCocMips;
 FfxFloat32 ffxDofLoadCocMip(FfxInt32x2 texel, FfxUInt32 mip) { return texelFetch(ffxDofCocMips, texel, int(mip)).x; }
 #endif
 
+#if FFX_DOF_USES_LIGHT_OFFSETS
+FFX_DOF_BINDING_SRV(FFX_DOF_SRV_LIGHT_OFFSETS) uniform texture2D ffxDofLightOffsets;
+// `mip` of COLOR_MIPS, 1 or more: LIGHT_OFFSETS starts at MIP 1 and stores twice the offset.
+FfxFloat32x2 ffxDofLoadLightOffsetMip(FfxInt32x2 texel, FfxUInt32 mip)
+{
+    return texelFetch(ffxDofLightOffsets, texel, int(mip) - 1).xy * 0.5f;
+}
+#endif
+
 #if FFX_DOF_USES_TILES
 FFX_DOF_BINDING_SRV(FFX_DOF_SRV_TILES) uniform texture2D ffxDofTiles;
 FfxFloat32x2 ffxDofLoadTile(FfxUInt32x2 tile) { return texelFetch(ffxDofTiles, ivec2(tile), 0).xy; }
@@ -71,14 +80,17 @@ FFX_DOF_BINDING_UAV_IMAGE(FFX_DOF_UAV_COC_MIP0, r16f) uniform writeonly image2D 
 #if FFX_DOF_OPTION_MAX_MIP > 1
 FFX_DOF_BINDING_UAV_IMAGE(FFX_DOF_UAV_COLOR_MIP1, r11f_g11f_b10f) uniform writeonly image2D ffxDofColorMip1;
 FFX_DOF_BINDING_UAV_IMAGE(FFX_DOF_UAV_COC_MIP1, r16f) uniform writeonly image2D ffxDofCocMip1;
+FFX_DOF_BINDING_UAV_IMAGE(FFX_DOF_UAV_LIGHT_OFFSET_MIP1, rg8_snorm) uniform writeonly image2D ffxDofLightOffsetMip1;
 #endif
 #if FFX_DOF_OPTION_MAX_MIP > 2
 FFX_DOF_BINDING_UAV_IMAGE(FFX_DOF_UAV_COLOR_MIP2, r11f_g11f_b10f) uniform writeonly image2D ffxDofColorMip2;
 FFX_DOF_BINDING_UAV_IMAGE(FFX_DOF_UAV_COC_MIP2, r16f) uniform writeonly image2D ffxDofCocMip2;
+FFX_DOF_BINDING_UAV_IMAGE(FFX_DOF_UAV_LIGHT_OFFSET_MIP2, rg8_snorm) uniform writeonly image2D ffxDofLightOffsetMip2;
 #endif
 #if FFX_DOF_OPTION_MAX_MIP > 3
 FFX_DOF_BINDING_UAV_IMAGE(FFX_DOF_UAV_COLOR_MIP3, r11f_g11f_b10f) uniform writeonly image2D ffxDofColorMip3;
 FFX_DOF_BINDING_UAV_IMAGE(FFX_DOF_UAV_COC_MIP3, r16f) uniform writeonly image2D ffxDofCocMip3;
+FFX_DOF_BINDING_UAV_IMAGE(FFX_DOF_UAV_LIGHT_OFFSET_MIP3, rg8_snorm) uniform writeonly image2D ffxDofLightOffsetMip3;
 #endif
 void ffxDofStoreColorMip(FfxUInt32 mip, FfxUInt32x2 texel, FfxDofFloat3 color)
 {
@@ -114,6 +126,23 @@ void ffxDofStoreCocMip(FfxUInt32 mip, FfxUInt32x2 texel, FfxFloat32 coc)
 #if FFX_DOF_OPTION_MAX_MIP > 3
     else
         imageStore(ffxDofCocMip3, ivec2(texel), value);
+#endif
+}
+// `mip` 1 or more (MIP 0 keeps no offset).
+void ffxDofStoreLightOffsetMip(FfxUInt32 mip, FfxUInt32x2 texel, FfxFloat32x2 offset)
+{
+    vec4 value = vec4(offset.x * 2.0f, offset.y * 2.0f, 0.0f, 0.0f);
+#if FFX_DOF_OPTION_MAX_MIP > 1
+    if (mip == 1u)
+        imageStore(ffxDofLightOffsetMip1, ivec2(texel), value);
+#endif
+#if FFX_DOF_OPTION_MAX_MIP > 2
+    if (mip == 2u)
+        imageStore(ffxDofLightOffsetMip2, ivec2(texel), value);
+#endif
+#if FFX_DOF_OPTION_MAX_MIP > 3
+    if (mip == 3u)
+        imageStore(ffxDofLightOffsetMip3, ivec2(texel), value);
 #endif
 }
 #endif

@@ -64,6 +64,16 @@ Texture2D<float> ffxDofCocMips : FFX_DOF_HLSL_REGISTER(t, FFX_DOF_SRV_COC_MIPS);
 FfxFloat32 ffxDofLoadCocMip(FfxInt32x2 texel, FfxUInt32 mip) { return ffxDofCocMips.Load(int3(texel, int(mip))); }
 #endif
 
+#if FFX_DOF_USES_LIGHT_OFFSETS
+FFX_DOF_BINDING_SRV(FFX_DOF_SRV_LIGHT_OFFSETS)
+Texture2D<float2> ffxDofLightOffsets : FFX_DOF_HLSL_REGISTER(t, FFX_DOF_SRV_LIGHT_OFFSETS);
+// `mip` of COLOR_MIPS, 1 or more: LIGHT_OFFSETS starts at MIP 1 and stores twice the offset.
+FfxFloat32x2 ffxDofLoadLightOffsetMip(FfxInt32x2 texel, FfxUInt32 mip)
+{
+    return ffxDofLightOffsets.Load(int3(texel, int(mip) - 1)) * 0.5f;
+}
+#endif
+
 #if FFX_DOF_USES_TILES
 FFX_DOF_BINDING_SRV(FFX_DOF_SRV_TILES) Texture2D<float2> ffxDofTiles : FFX_DOF_HLSL_REGISTER(t, FFX_DOF_SRV_TILES);
 FfxFloat32x2 ffxDofLoadTile(FfxUInt32x2 tile) { return ffxDofTiles.Load(int3(tile, 0)); }
@@ -97,18 +107,24 @@ FFX_DOF_BINDING_UAV_IMAGE(FFX_DOF_UAV_COLOR_MIP1)
 RWTexture2D<float3> ffxDofColorMip1 : FFX_DOF_HLSL_REGISTER(u, FFX_DOF_UAV_COLOR_MIP1);
 FFX_DOF_BINDING_UAV_IMAGE(FFX_DOF_UAV_COC_MIP1)
 RWTexture2D<float> ffxDofCocMip1 : FFX_DOF_HLSL_REGISTER(u, FFX_DOF_UAV_COC_MIP1);
+FFX_DOF_BINDING_UAV_IMAGE(FFX_DOF_UAV_LIGHT_OFFSET_MIP1)
+RWTexture2D<float2> ffxDofLightOffsetMip1 : FFX_DOF_HLSL_REGISTER(u, FFX_DOF_UAV_LIGHT_OFFSET_MIP1);
 #endif
 #if FFX_DOF_OPTION_MAX_MIP > 2
 FFX_DOF_BINDING_UAV_IMAGE(FFX_DOF_UAV_COLOR_MIP2)
 RWTexture2D<float3> ffxDofColorMip2 : FFX_DOF_HLSL_REGISTER(u, FFX_DOF_UAV_COLOR_MIP2);
 FFX_DOF_BINDING_UAV_IMAGE(FFX_DOF_UAV_COC_MIP2)
 RWTexture2D<float> ffxDofCocMip2 : FFX_DOF_HLSL_REGISTER(u, FFX_DOF_UAV_COC_MIP2);
+FFX_DOF_BINDING_UAV_IMAGE(FFX_DOF_UAV_LIGHT_OFFSET_MIP2)
+RWTexture2D<float2> ffxDofLightOffsetMip2 : FFX_DOF_HLSL_REGISTER(u, FFX_DOF_UAV_LIGHT_OFFSET_MIP2);
 #endif
 #if FFX_DOF_OPTION_MAX_MIP > 3
 FFX_DOF_BINDING_UAV_IMAGE(FFX_DOF_UAV_COLOR_MIP3)
 RWTexture2D<float3> ffxDofColorMip3 : FFX_DOF_HLSL_REGISTER(u, FFX_DOF_UAV_COLOR_MIP3);
 FFX_DOF_BINDING_UAV_IMAGE(FFX_DOF_UAV_COC_MIP3)
 RWTexture2D<float> ffxDofCocMip3 : FFX_DOF_HLSL_REGISTER(u, FFX_DOF_UAV_COC_MIP3);
+FFX_DOF_BINDING_UAV_IMAGE(FFX_DOF_UAV_LIGHT_OFFSET_MIP3)
+RWTexture2D<float2> ffxDofLightOffsetMip3 : FFX_DOF_HLSL_REGISTER(u, FFX_DOF_UAV_LIGHT_OFFSET_MIP3);
 #endif
 void ffxDofStoreColorMip(FfxUInt32 mip, FfxUInt32x2 texel, FfxDofFloat3 color)
 {
@@ -143,6 +159,23 @@ void ffxDofStoreCocMip(FfxUInt32 mip, FfxUInt32x2 texel, FfxFloat32 coc)
 #if FFX_DOF_OPTION_MAX_MIP > 3
     else
         ffxDofCocMip3[texel] = coc;
+#endif
+}
+// `mip` 1 or more (MIP 0 keeps no offset).
+void ffxDofStoreLightOffsetMip(FfxUInt32 mip, FfxUInt32x2 texel, FfxFloat32x2 offset)
+{
+    float2 value = offset * 2.0f;
+#if FFX_DOF_OPTION_MAX_MIP > 1
+    if (mip == 1u)
+        ffxDofLightOffsetMip1[texel] = value;
+#endif
+#if FFX_DOF_OPTION_MAX_MIP > 2
+    if (mip == 2u)
+        ffxDofLightOffsetMip2[texel] = value;
+#endif
+#if FFX_DOF_OPTION_MAX_MIP > 3
+    if (mip == 3u)
+        ffxDofLightOffsetMip3[texel] = value;
 #endif
 }
 #endif

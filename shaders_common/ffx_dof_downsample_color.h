@@ -7,7 +7,8 @@
 // full-res pixels and a border of one (a light's anti-aliased rim takes the light's radius:
 // ffxDofLightRimCoc; 2,592 bytes), its 64 invocations make the 8 x 8 texels of MIP 0, then the group
 // reduces them in group-shared memory to 4 x 4, 2 x 2 and 1 x 1 (MIPs 1..3), so no global
-// synchronisation is needed. Every level uses ffxDofBilateralReduce.
+// synchronisation is needed. Every level uses ffxDofBilateralReduceLight, which also tells where in
+// each texel of MIPs 1..3 its light lies (LIGHT_OFFSETS, read by the blur).
 #ifndef FFX_DOF_DOWNSAMPLE_COLOR_H
 #define FFX_DOF_DOWNSAMPLE_COLOR_H
 
@@ -20,6 +21,7 @@ FfxFloat32 ffxDofLoadInputDepth(FfxUInt32x2 pixel);
 FfxFloat32x4 ffxDofLoadInputColor(FfxUInt32x2 pixel);
 void ffxDofStoreColorMip(FfxUInt32 mip, FfxUInt32x2 texel, FfxDofFloat3 color);
 void ffxDofStoreCocMip(FfxUInt32 mip, FfxUInt32x2 texel, FfxFloat32 coc);
+void ffxDofStoreLightOffsetMip(FfxUInt32 mip, FfxUInt32x2 texel, FfxFloat32x2 offset);
 FfxFloat32 ffxDofLoadColorPeak();
 void ffxDofStoreColorScale(FfxFloat32 scale);
 #endif
@@ -99,13 +101,35 @@ FFX_DOF_INLINE FfxFloat32 ffxDofLightKeep(FfxDofFloat3 color, FfxFloat32 coc, Ff
     return max(brighter, darkerBehind);
 }
 
-// Reduces a 2x2 quad (0: top-left, 1: top-right, 2: bottom-left, 3: bottom-right). The same kernel
-// makes every MIP level. The radius is averaged with the color's luminance as an extra weight: the
-// texel's light spreads with the radius of the pixels it comes from (a bright point keeps its own
-// radius among darker pixels of a slightly different one).
-FFX_DOF_INLINE void ffxDofBilateralReduce(FfxDofFloat3 color0, FfxDofFloat3 color1, FfxDofFloat3 color2,
-                                          FfxDofFloat3 color3, FfxFloat32 coc0, FfxFloat32 coc1, FfxFloat32 coc2,
-                                          FfxFloat32 coc3, FFX_DOF_OUT(FfxDofFloat3) color, FFX_DOF_OUT(FfxFloat32) coc)
+// The light offset of a reduced texel: where its light lies, as the offset of the luminance-weighted
+// centre of its four sources (`light0..3`: their weights in the reduction times their luminance) from
+// the texel's centre, in texels of its level (each axis within +-0.5). `offset0..3` are the sources'
+// own offsets in their level's texels (0 for full-resolution pixels). The blur judges the reach of a
+// sample from a coarse MIP from this point instead of the texel's centre: a light of a few pixels
+// read from a MIP-1 texel was drawn about that texel's centre, up to 1.4 full-res px from its place.
+FFX_DOF_INLINE FfxFloat32x2 ffxDofReduceLightOffset(FfxFloat32 light0, FfxFloat32 light1, FfxFloat32 light2,
+                                                    FfxFloat32 light3, FfxFloat32x2 offset0, FfxFloat32x2 offset1,
+                                                    FfxFloat32x2 offset2, FfxFloat32x2 offset3)
+{
+    // A source's centre lies a quarter of the reduced texel from its centre; its offset is halved.
+    FfxFloat32x2 sum = (FfxFloat32x2(-0.25f, -0.25f) + offset0 * 0.5f) * light0 +
+                       (FfxFloat32x2(0.25f, -0.25f) + offset1 * 0.5f) * light1 +
+                       (FfxFloat32x2(-0.25f, 0.25f) + offset2 * 0.5f) * light2 +
+                       (FfxFloat32x2(0.25f, 0.25f) + offset3 * 0.5f) * light3;
+    return sum / (light0 + light1 + light2 + light3);
+}
+
+// Reduces a 2x2 quad (0: top-left, 1: top-right, 2: bottom-left, 3: bottom-right) with the light
+// offsets of its sources (ffxDofReduceLightOffset). The same kernel makes every MIP level. The radius
+// is averaged with the color's luminance as an extra weight: the texel's light spreads with the radius
+// of the pixels it comes from (a bright point keeps its own radius among darker pixels of a slightly
+// different one).
+FFX_DOF_INLINE void ffxDofBilateralReduceLight(FfxDofFloat3 color0, FfxDofFloat3 color1, FfxDofFloat3 color2,
+                                               FfxDofFloat3 color3, FfxFloat32 coc0, FfxFloat32 coc1, FfxFloat32 coc2,
+                                               FfxFloat32 coc3, FfxFloat32x2 offset0, FfxFloat32x2 offset1,
+                                               FfxFloat32x2 offset2, FfxFloat32x2 offset3,
+                                               FFX_DOF_OUT(FfxDofFloat3) color, FFX_DOF_OUT(FfxFloat32) coc,
+                                               FFX_DOF_OUT(FfxFloat32x2) offset)
 {
     FfxFloat32 reference = ffxDofQuadReferenceCoc(coc0, coc1, coc2, coc3);
     FfxFloat32 range = max(max(coc0, coc1), max(coc2, coc3)) - min(min(coc0, coc1), min(coc2, coc3));
@@ -129,6 +153,18 @@ FFX_DOF_INLINE void ffxDofBilateralReduce(FfxDofFloat3 color0, FfxDofFloat3 colo
     FfxFloat32 light2 = weight2 * (ffxDofLuminance(color2) + 1e-3f);
     FfxFloat32 light3 = weight3 * (ffxDofLuminance(color3) + 1e-3f);
     coc = (coc0 * light0 + coc1 * light1 + coc2 * light2 + coc3 * light3) / (light0 + light1 + light2 + light3);
+    offset = ffxDofReduceLightOffset(light0, light1, light2, light3, offset0, offset1, offset2, offset3);
+}
+
+// ffxDofBilateralReduceLight of four full-resolution pixels (no offsets of their own), the offset dropped.
+FFX_DOF_INLINE void ffxDofBilateralReduce(FfxDofFloat3 color0, FfxDofFloat3 color1, FfxDofFloat3 color2,
+                                          FfxDofFloat3 color3, FfxFloat32 coc0, FfxFloat32 coc1, FfxFloat32 coc2,
+                                          FfxFloat32 coc3, FFX_DOF_OUT(FfxDofFloat3) color, FFX_DOF_OUT(FfxFloat32) coc)
+{
+    FfxFloat32x2 none = FfxFloat32x2(0.0f, 0.0f);
+    FfxFloat32x2 offset;
+    ffxDofBilateralReduceLight(color0, color1, color2, color3, coc0, coc1, coc2, coc3, none, none, none, none, color,
+                               coc, offset);
 }
 
 // ---- Light rims -------------------------------------------------------------------------------------
@@ -190,6 +226,7 @@ FFX_DOF_INLINE FfxFloat32 ffxDofColorRangeScale(FfxFloat32 peak)
 
 FFX_DOF_GROUPSHARED FfxDofFloat3 ffxDofSharedMipColor[FFX_DOF_GROUP_THREADS];
 FFX_DOF_GROUPSHARED FfxFloat32 ffxDofSharedMipCoc[FFX_DOF_GROUP_THREADS];
+FFX_DOF_GROUPSHARED FfxFloat32x2 ffxDofSharedMipLightOffset[FFX_DOF_GROUP_THREADS];
 
 // The group's full-resolution pixels and a one-pixel border: (luminance, radius) for the light rims.
 #define FFX_DOF_RIM_SIDE (2u * FFX_DOF_TILE_SIZE + 2u)
@@ -287,8 +324,10 @@ FFX_DOF_INLINE void ffxDofDownsampleColor(FfxUInt32x2 groupId, FfxUInt32 localIn
 
     FfxDofFloat3 color;
     FfxFloat32 coc;
-    ffxDofBilateralReduce(ffxDofRgb(input0), ffxDofRgb(input1), ffxDofRgb(input2), ffxDofRgb(input3), coc0, coc1, coc2,
-                          coc3, color, coc);
+    FfxFloat32x2 lightOffset;
+    FfxFloat32x2 pixelOffset = FfxFloat32x2(0.0f, 0.0f);  // a full-resolution pixel is a point
+    ffxDofBilateralReduceLight(ffxDofRgb(input0), ffxDofRgb(input1), ffxDofRgb(input2), ffxDofRgb(input3), coc0, coc1,
+                               coc2, coc3, pixelOffset, pixelOffset, pixelOffset, pixelOffset, color, coc, lightOffset);
     if (texel.x < constants.halfSize.x && texel.y < constants.halfSize.y)
     {
         ffxDofStoreColorMip(0u, texel, ffxDofRoundForPackedColor(color));
@@ -296,6 +335,7 @@ FFX_DOF_INLINE void ffxDofDownsampleColor(FfxUInt32x2 groupId, FfxUInt32 localIn
     }
     ffxDofSharedMipColor[localIndex] = color;
     ffxDofSharedMipCoc[localIndex] = coc;
+    ffxDofSharedMipLightOffset[localIndex] = lightOffset;
 
     // Level m is kept at the top-left texel of each 2^m block: a thread only overwrites a slot it
     // has read itself, so one barrier per level suffices.
@@ -311,11 +351,14 @@ FFX_DOF_INLINE void ffxDofDownsampleColor(FfxUInt32x2 groupId, FfxUInt32 localIn
             FfxUInt32 i1 = localIndex + halfStep;
             FfxUInt32 i2 = localIndex + halfStep * FfxUInt32(FFX_DOF_GROUP_SIDE);
             FfxUInt32 i3 = i2 + halfStep;
-            ffxDofBilateralReduce(ffxDofSharedMipColor[i0], ffxDofSharedMipColor[i1], ffxDofSharedMipColor[i2],
-                                  ffxDofSharedMipColor[i3], ffxDofSharedMipCoc[i0], ffxDofSharedMipCoc[i1],
-                                  ffxDofSharedMipCoc[i2], ffxDofSharedMipCoc[i3], color, coc);
+            ffxDofBilateralReduceLight(ffxDofSharedMipColor[i0], ffxDofSharedMipColor[i1], ffxDofSharedMipColor[i2],
+                                       ffxDofSharedMipColor[i3], ffxDofSharedMipCoc[i0], ffxDofSharedMipCoc[i1],
+                                       ffxDofSharedMipCoc[i2], ffxDofSharedMipCoc[i3], ffxDofSharedMipLightOffset[i0],
+                                       ffxDofSharedMipLightOffset[i1], ffxDofSharedMipLightOffset[i2],
+                                       ffxDofSharedMipLightOffset[i3], color, coc, lightOffset);
             ffxDofSharedMipColor[i0] = color;
             ffxDofSharedMipCoc[i0] = coc;
+            ffxDofSharedMipLightOffset[i0] = lightOffset;
             FfxUInt32x2 mipTexel =
                 groupId * (FfxUInt32(FFX_DOF_TILE_SIZE) >> mip) + FfxUInt32x2(local.x >> mip, local.y >> mip);
             FfxUInt32x2 mipSize = ffxDofMipSize(constants.halfSize, mip);
@@ -323,6 +366,7 @@ FFX_DOF_INLINE void ffxDofDownsampleColor(FfxUInt32x2 groupId, FfxUInt32 localIn
             {
                 ffxDofStoreColorMip(mip, mipTexel, ffxDofRoundForPackedColor(color));
                 ffxDofStoreCocMip(mip, mipTexel, coc);
+                ffxDofStoreLightOffsetMip(mip, mipTexel, lightOffset);
             }
         }
     }

@@ -13,6 +13,10 @@
 // tiles = ceil(half / FFX_DOF_TILE_SIZE)); see docs/technique.md for who writes and reads each:
 //   COLOR_MIPS     half, FFX_DOF_OPTION_MAX_MIP levels, B10G11R11 float   bilateral color chain
 //   COC_MIPS       half, FFX_DOF_OPTION_MAX_MIP levels, R16 float         CoC chain, signed half-res px
+//   LIGHT_OFFSETS  quarter (MIP 1 of half), FFX_DOF_OPTION_MAX_MIP - 1 levels, R8G8 snorm: level l
+//                                            belongs to MIP l + 1 of COLOR_MIPS; where in the texel its
+//                                            light lies (luminance-weighted), twice the offset from its
+//                                            centre in its own texels (ffxDofReduceLightOffset)
 //   TILES          tiles, R16G16 float       (min, max) signed CoC per tile
 //   DILATED_TILES  tiles, R16G16B16A16 float dilated (far, near) radii per tile, and the (min, max)
 //                                            radius of the tiles its blur kernels read
@@ -53,6 +57,7 @@
 #define FFX_DOF_SRV_NEAR_COLOR 6
 #define FFX_DOF_SRV_FAR_COLOR 7
 #define FFX_DOF_SRV_LAYER_ALPHA 8
+#define FFX_DOF_SRV_LIGHT_OFFSETS 9
 
 // Storage images (one slot per MIP level written)
 #define FFX_DOF_UAV_COLOR_MIP0 0
@@ -69,6 +74,9 @@
 #define FFX_DOF_UAV_FAR_COLOR 11
 #define FFX_DOF_UAV_LAYER_ALPHA 12
 #define FFX_DOF_UAV_OUTPUT 13
+#define FFX_DOF_UAV_LIGHT_OFFSET_MIP1 14  // level 0 of LIGHT_OFFSETS
+#define FFX_DOF_UAV_LIGHT_OFFSET_MIP2 15
+#define FFX_DOF_UAV_LIGHT_OFFSET_MIP3 16
 
 // Storage buffers
 #define FFX_DOF_UAV_BUFFER_GLOBALS 0

@@ -23,53 +23,62 @@ constexpr uint32_t kMipCount = 4;
 
 // The internal images, API-neutral: the one table both backends create from (each maps the format
 // to its API's enum). Names, formats and slots follow shaders_common/ffx_dof_resources.h.
-enum class InternalFormat : uint32_t { R11G11B10Float, R16Float, R16G16Float, R16G16B16A16Float, R8G8Unorm };
+enum class InternalFormat : uint32_t {
+    R11G11B10Float,
+    R16Float,
+    R16G16Float,
+    R16G16B16A16Float,
+    R8G8Unorm,
+    R8G8Snorm
+};
 
 enum class ImageExtent : uint32_t {
-    Half,   // ceil(W / 2) x ceil(H / 2)
-    Tiles,  // ceil(half / FFX_DOF_TILE_SIZE)
+    Half,     // ceil(W / 2) x ceil(H / 2)
+    Quarter,  // MIP 1 of the half-resolution image: max(half / 2, 1), rounded down
+    Tiles,    // ceil(half / FFX_DOF_TILE_SIZE)
 };
 
 struct InternalImageSpec {
     const char* name;
     InternalFormat format;
     ImageExtent extent;
-    bool mipChain;         // kMipCount levels (fewer where the half-resolution image is too small)
+    uint32_t levels;       // MIP levels (fewer where the image is too small for a full chain)
     uint32_t sampledSlot;  // FFX_DOF_SRV_*: all levels, sampled
     uint32_t storageSlot;  // FFX_DOF_UAV_*: level 0; a mip chain has one consecutive slot per level
 };
 
 constexpr InternalImageSpec kInternalImages[] = {
-    {"COLOR_MIPS", InternalFormat::R11G11B10Float, ImageExtent::Half, true, FFX_DOF_SRV_COLOR_MIPS,
+    {"COLOR_MIPS", InternalFormat::R11G11B10Float, ImageExtent::Half, kMipCount, FFX_DOF_SRV_COLOR_MIPS,
      FFX_DOF_UAV_COLOR_MIP0},
-    {"COC_MIPS", InternalFormat::R16Float, ImageExtent::Half, true, FFX_DOF_SRV_COC_MIPS, FFX_DOF_UAV_COC_MIP0},
-    {"TILES", InternalFormat::R16G16Float, ImageExtent::Tiles, false, FFX_DOF_SRV_TILES, FFX_DOF_UAV_TILES},
-    {"DILATED_TILES", InternalFormat::R16G16B16A16Float, ImageExtent::Tiles, false, FFX_DOF_SRV_DILATED_TILES,
+    {"COC_MIPS", InternalFormat::R16Float, ImageExtent::Half, kMipCount, FFX_DOF_SRV_COC_MIPS, FFX_DOF_UAV_COC_MIP0},
+    // MIPs 1.. of COLOR_MIPS, level for level.
+    {"LIGHT_OFFSETS", InternalFormat::R8G8Snorm, ImageExtent::Quarter, kMipCount - 1, FFX_DOF_SRV_LIGHT_OFFSETS,
+     FFX_DOF_UAV_LIGHT_OFFSET_MIP1},
+    {"TILES", InternalFormat::R16G16Float, ImageExtent::Tiles, 1, FFX_DOF_SRV_TILES, FFX_DOF_UAV_TILES},
+    {"DILATED_TILES", InternalFormat::R16G16B16A16Float, ImageExtent::Tiles, 1, FFX_DOF_SRV_DILATED_TILES,
      FFX_DOF_UAV_DILATED_TILES},
-    {"NEAR_COLOR", InternalFormat::R11G11B10Float, ImageExtent::Half, false, FFX_DOF_SRV_NEAR_COLOR,
+    {"NEAR_COLOR", InternalFormat::R11G11B10Float, ImageExtent::Half, 1, FFX_DOF_SRV_NEAR_COLOR,
      FFX_DOF_UAV_NEAR_COLOR},
-    {"FAR_COLOR", InternalFormat::R11G11B10Float, ImageExtent::Half, false, FFX_DOF_SRV_FAR_COLOR,
-     FFX_DOF_UAV_FAR_COLOR},
-    {"LAYER_ALPHA", InternalFormat::R8G8Unorm, ImageExtent::Half, false, FFX_DOF_SRV_LAYER_ALPHA,
+    {"FAR_COLOR", InternalFormat::R11G11B10Float, ImageExtent::Half, 1, FFX_DOF_SRV_FAR_COLOR, FFX_DOF_UAV_FAR_COLOR},
+    {"LAYER_ALPHA", InternalFormat::R8G8Unorm, ImageExtent::Half, 1, FFX_DOF_SRV_LAYER_ALPHA,
      FFX_DOF_UAV_LAYER_ALPHA},
 };
 constexpr uint32_t kInternalImageCount = sizeof(kInternalImages) / sizeof(kInternalImages[0]);
 
 // Shader slots per class (ffx_dof_resources.h): sampled images, storage images, storage buffers.
-constexpr uint32_t kSampledSlotCount = FFX_DOF_SRV_LAYER_ALPHA + 1;
-constexpr uint32_t kStorageImageSlotCount = FFX_DOF_UAV_OUTPUT + 1;
+constexpr uint32_t kSampledSlotCount = FFX_DOF_SRV_LIGHT_OFFSETS + 1;
+constexpr uint32_t kStorageImageSlotCount = FFX_DOF_UAV_LIGHT_OFFSET_MIP3 + 1;
 constexpr uint32_t kStorageBufferSlotCount = FFX_DOF_UAV_BUFFER_GLOBALS + 1;
 
 // The GLOBALS storage buffer (FFX_DOF_UAV_BUFFER_GLOBALS): 32-bit words.
 constexpr uint32_t kGlobalsWordCount = FFX_DOF_GLOBALS_WORD_COUNT;
 constexpr uint32_t kGlobalsBufferBytes = kGlobalsWordCount * 4;
 
-// Levels of an image of this size: kMipCount for a mip chain, clamped to the full chain of a
-// small image (a 4x3 half-resolution image has 3 levels).
+// Levels of an image of this size: the spec's, clamped to the full chain of a small image (a 4x3
+// half-resolution image has 3 levels, its quarter-resolution image 2x1 has 2).
 inline uint32_t mipLevelsFor(const InternalImageSpec& spec, uint32_t width, uint32_t height) {
-    if (!spec.mipChain) return 1;
     uint32_t levels = 1;
-    for (uint32_t largest = width > height ? width : height; largest > 1 && levels < kMipCount; largest /= 2) {
+    for (uint32_t largest = width > height ? width : height; largest > 1 && levels < spec.levels; largest /= 2) {
         ++levels;
     }
     return levels;

@@ -58,8 +58,7 @@ void mapSlots(ContextPlan* plan) {
         SlotTarget& sampled = plan->sampledSlots[spec.sampledSlot];
         sampled.resource = internalImageResource(i);
         sampled.mipCount = image.mipLevels;
-        const uint32_t storageSlots = spec.mipChain ? kMipCount : 1;
-        for (uint32_t level = 0; level < storageSlots; ++level) {
+        for (uint32_t level = 0; level < spec.levels; ++level) {
             SlotTarget& storage = plan->storageImageSlots[spec.storageSlot + level];
             storage.resource = internalImageResource(i);
             storage.firstMip = level < image.mipLevels ? level : image.mipLevels - 1;
@@ -185,8 +184,20 @@ FfxDofErrorCode buildContextPlan(const ContextConfig& config, const BackendCapab
         const InternalImageSpec& spec = kInternalImages[i];
         PlannedImage& image = plan->images[i];
         image.spec = &spec;
-        image.width = spec.extent == ImageExtent::Half ? c.halfSize.x : c.tileCount.x;
-        image.height = spec.extent == ImageExtent::Half ? c.halfSize.y : c.tileCount.y;
+        switch (spec.extent) {
+            case ImageExtent::Half:
+                image.width = c.halfSize.x;
+                image.height = c.halfSize.y;
+                break;
+            case ImageExtent::Quarter:
+                image.width = c.halfSize.x / 2 > 0 ? c.halfSize.x / 2 : 1;
+                image.height = c.halfSize.y / 2 > 0 ? c.halfSize.y / 2 : 1;
+                break;
+            case ImageExtent::Tiles:
+                image.width = c.tileCount.x;
+                image.height = c.tileCount.y;
+                break;
+        }
         image.mipLevels = mipLevelsFor(spec, image.width, image.height);
     }
     mapSlots(plan);

@@ -52,6 +52,9 @@ const ShaderImage kStorageImages[] = {
     {"ffxDofCocMip1", "COC_MIPS", 1},
     {"ffxDofCocMip2", "COC_MIPS", 2},
     {"ffxDofCocMip3", "COC_MIPS", 3},
+    {"ffxDofLightOffsetMip1", "LIGHT_OFFSETS", 0},
+    {"ffxDofLightOffsetMip2", "LIGHT_OFFSETS", 1},
+    {"ffxDofLightOffsetMip3", "LIGHT_OFFSETS", 2},
     {"ffxDofRwTiles", "TILES", 0},
     {"ffxDofRwDilatedTiles", "DILATED_TILES", 0},
     {"ffxDofRwNearColor", "NEAR_COLOR", 0},
@@ -60,20 +63,18 @@ const ShaderImage kStorageImages[] = {
 };
 
 const ShaderImage kSampledImages[] = {
-    {"ffxDofColorMips", "COLOR_MIPS", 0},
-    {"ffxDofCocMips", "COC_MIPS", 0},
-    {"ffxDofTiles", "TILES", 0},
-    {"ffxDofDilatedTiles", "DILATED_TILES", 0},
-    {"ffxDofNearColor", "NEAR_COLOR", 0},
-    {"ffxDofFarColor", "FAR_COLOR", 0},
-    {"ffxDofLayerAlpha", "LAYER_ALPHA", 0},
+    {"ffxDofColorMips", "COLOR_MIPS", 0},       {"ffxDofCocMips", "COC_MIPS", 0},
+    {"ffxDofLightOffsets", "LIGHT_OFFSETS", 0}, {"ffxDofTiles", "TILES", 0},
+    {"ffxDofDilatedTiles", "DILATED_TILES", 0}, {"ffxDofNearColor", "NEAR_COLOR", 0},
+    {"ffxDofFarColor", "FAR_COLOR", 0},         {"ffxDofLayerAlpha", "LAYER_ALPHA", 0},
 };
 
 // The engine's images: not internal, bound wherever the engine's are.
 const std::set<std::string> kEngineStorageImages = {"ffxDofOutput"};
 const std::set<std::string> kEngineSampledImages = {"ffxDofInputColor", "ffxDofInputDepth"};
 
-const char* const kFormatNames[] = {"R11G11B10Float", "R16Float", "R16G16Float", "R16G16B16A16Float", "R8G8Unorm"};
+const char* const kFormatNames[] = {"R11G11B10Float",    "R16Float",  "R16G16Float",
+                                    "R16G16B16A16Float", "R8G8Unorm", "R8G8Snorm"};
 
 SpvImageFormat spirvFormat(InternalFormat format) {
     switch (format) {
@@ -87,6 +88,8 @@ SpvImageFormat spirvFormat(InternalFormat format) {
             return SpvImageFormatRgba16f;
         case InternalFormat::R8G8Unorm:
             return SpvImageFormatRg8;
+        case InternalFormat::R8G8Snorm:
+            return SpvImageFormatRg8Snorm;
     }
     FAIL("unknown InternalFormat " << uint32_t(format));
     return SpvImageFormatUnknown;
@@ -107,6 +110,8 @@ std::string spirvFormatName(SpvImageFormat format) {
             return "Rgba16f";
         case SpvImageFormatRg8:
             return "Rg8";
+        case SpvImageFormatRg8Snorm:
+            return "Rg8Snorm";
         default:
             return "ImageFormat " + std::to_string(uint32_t(format));
     }
@@ -239,7 +244,7 @@ Coverage checkTables(const shaders::PassTable* const* tables, size_t tableCount,
 void checkCoverage(const Coverage& coverage) {
     for (const InternalImageSpec& spec : kInternalImages) {
         CAPTURE(spec.name);
-        const uint32_t levels = spec.mipChain ? kMipCount : 1u;
+        const uint32_t levels = spec.levels;
         for (uint32_t level = 0; level < levels; ++level) {
             CAPTURE(level);
             CHECK(coverage.written.count({spec.name, level}) == 1u);
@@ -260,7 +265,7 @@ TEST_CASE("the C++ table of internal images names each image once with its own s
         CAPTURE(spec.name);
         CHECK(names.insert(spec.name).second);
         CHECK(sampledSlots.insert(spec.sampledSlot).second);
-        for (uint32_t level = 0; level < (spec.mipChain ? kMipCount : 1u); ++level) {
+        for (uint32_t level = 0; level < spec.levels; ++level) {
             CHECK(storageSlots.insert(spec.storageSlot + level).second);
         }
         CHECK(uint32_t(spec.format) < sizeof(kFormatNames) / sizeof(kFormatNames[0]));
@@ -288,4 +293,5 @@ TEST_CASE("kMipCount is FFX_DOF_OPTION_MAX_MIP, the levels the shaders declare",
     const Coverage coverage = checkTables(shaders::glsl::kPassTables, shaders::glsl::kPassTableCount, true);
     CHECK(coverage.levelsDeclared.at("COLOR_MIPS") == kMipCount);
     CHECK(coverage.levelsDeclared.at("COC_MIPS") == kMipCount);
+    CHECK(coverage.levelsDeclared.at("LIGHT_OFFSETS") == kMipCount - 1);  // MIPs 1..
 }

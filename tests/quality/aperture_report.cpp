@@ -197,8 +197,6 @@ int main(int argc, char** argv) {
            << number(quality::kPointMinElongation, "%.1f") << " on (to within "
            << number(quality::kPointMaxAxisDegrees, "%.0f") << " degrees and "
            << number(100.0 * quality::kPointMaxElongationError, "%.0f") << "%).\n\n"
-           << "A position FAIL is the first known failure above (ring merging): its tests expect it "
-              "([!shouldfail]).\n\n"
            << pointPictures.str();
 
         // ---- scenes ----

@@ -242,9 +242,9 @@ void writeSmallLights(std::ostream& md, vkrun::Device& device) {
           "the smallest radius the tile's kernels read, which still drew a light of a few pixels up to 5 px "
           "from its place (its disc about the coarse texel's centre: no texel of the light's own size carries "
           "it). Since 2026-11-28 the smallest radius must span two coarse texels "
-          "(`FFX_DOF_RING_MERGE_MIN_RADIUS_TEXELS`, docs/technique.md): the disc-shift column is what remains. "
-          "Moving the sample to the light's place in the texel would need the texel's light centroid in the "
-          "MIPs (not stored).\n\n";
+          "(`FFX_DOF_RING_MERGE_MIN_RADIUS_TEXELS`, docs/technique.md): discs moved by up to 2.12 px then. Since "
+          "a coarse texel's light is drawn about where it lies in the texel (LIGHT_OFFSETS, docs/technique.md "
+          "\"Light offsets\"), the disc-shift column is what remains.\n\n";
 }
 
 // The mid-lights scene's lights change each other: its minimal case (tests/quality/test_small_lights.cpp).
@@ -272,9 +272,11 @@ void writeLightPairs(std::ostream& md, vkrun::Device& device) {
           "scene, the bright light's disc loses light: next section). With ring merging off, nothing changes from "
           "24 px on; with it on, the change does not need the discs to meet. The likely path (not isolated yet): "
           "the texels around the bright light read the dim light's radius in their kernels, from which each "
-          "decides how much its rings merge (`ffxDofMergedRingsResolve`, the merge amount), and merged texels "
-          "draw the bright disc about coarse texel centres. Where the discs overlap most (16 px) the change "
-          "happens without merging too.\n\n";
+          "decides how much its rings merge (`ffxDofMergedRingsResolve`, the merge amount), and the merged and "
+          "the unmerged texels draw the bright disc differently. Until 2026-11-28 merged texels drew it about "
+          "coarse texel centres and the dim light lost 7 to 19% beside it; since they draw a texel's light where "
+          "it lies (LIGHT_OFFSETS) it gains 23 to 49% instead, in either case about 1% of the bright light's "
+          "energy. Where the discs overlap most (16 px) the change happens without merging too.\n\n";
 }
 
 // Issue 17's light-kept gate in the mid-lights scene itself (tests/quality/test_small_lights.cpp).
@@ -346,7 +348,10 @@ void writeSceneLights(std::ostream& md, vkrun::Device& device) {
           "surface behind (the pinhole depth is traced through pixel centres), which the minimal case above, whole "
           "pixels at the light's depth, does not have. Since 2026-11-28 such a rim takes the light's radius in the "
           "downsample (docs/technique.md, light rims): 3 lights passed before, light 3 added 1.24 times its "
-          "energy, and the scene gained 3.0 dB against the truth. The worst figure now is light "
+          "energy, and the scene gained 3.0 dB against the truth. Since a coarse texel's light is drawn about "
+          "where it lies in the texel (LIGHT_OFFSETS, docs/technique.md) the scene gained 4.6 dB more (23.71 -> "
+          "28.29), and light 2, which changed light 3's disc by -1191 while it was there, changes it less. The "
+          "worst figure now is light "
        << worst->emitter << "'s (" << (worst->float32 ? "32" : "16") << "-bit: " << number(worst->energyRatio(), "%.3f")
        << "). " << ownDiscText.str()
        << " Ring merging and the rim inset are decided per tile from the radii its kernels read (dilate's footprint), "

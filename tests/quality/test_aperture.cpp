@@ -15,12 +15,7 @@ using namespace ffxdof;
 
 namespace {
 
-// What a test case checks of a point: everything, or its split into the disc's position (overlap with
-// the truth's and centroid) and its shape (area and orientation), for the points whose position is a
-// known failure.
-enum class PointPart { All, Shape, Position };
-
-void checkPoint(const std::string& name, PointPart part = PointPart::All) {
+void checkPoint(const std::string& name) {
     const quality::PointCase* point = nullptr;
     for (const quality::PointCase& candidate : quality::pointCases()) {
         if (candidate.name() == name) point = &candidate;
@@ -32,53 +27,37 @@ void checkPoint(const std::string& name, PointPart part = PointPart::All) {
     INFO(r.summary());
     CHECK(device.validationMessages().empty());
     REQUIRE(r.truth.area > 0);
-    if (part != PointPart::Shape) {
-        CHECK(r.iouOk());
-        CHECK(r.centroidDistance <= quality::kPointMaxCentroidDistancePixels);
-        CHECK(r.positionOk());
+    CHECK(r.iouOk());
+    CHECK(r.centroidDistance <= quality::kPointMaxCentroidDistancePixels);
+    CHECK(r.positionOk());
+    CHECK(r.areaOk());
+    if (point->aperture.shape.bladeCount >= 3) {
+        // The truth follows the definition (docs/aperture-reference.md), and ffx-dof the truth.
+        CHECK(std::abs(r.truthVertexDifference) <= quality::kPointMaxVertexAngleDegrees);
+        CHECK(std::abs(r.vertexDifference) <= quality::kPointMaxVertexAngleDegrees);
     }
-    if (part != PointPart::Position) {
-        CHECK(r.areaOk());
-        if (point->aperture.shape.bladeCount >= 3) {
-            // The truth follows the definition (docs/aperture-reference.md), and ffx-dof the truth.
-            CHECK(std::abs(r.truthVertexDifference) <= quality::kPointMaxVertexAngleDegrees);
-            CHECK(std::abs(r.vertexDifference) <= quality::kPointMaxVertexAngleDegrees);
-        }
-        if (r.truth.elongation >= quality::kPointMinElongation) {
-            CHECK(std::abs(r.axisDifference) <= quality::kPointMaxAxisDegrees);
-            CHECK(std::abs(r.elongationError) <= quality::kPointMaxElongationError);
-        }
-        CHECK(r.shapeOk());
+    if (r.truth.elongation >= quality::kPointMinElongation) {
+        CHECK(std::abs(r.axisDifference) <= quality::kPointMaxAxisDegrees);
+        CHECK(std::abs(r.elongationError) <= quality::kPointMaxElongationError);
     }
-    if (part == PointPart::All) CHECK(r.ok());
+    CHECK(r.shapeOk());
+    CHECK(r.ok());
 }
 
 }  // namespace
 
-// Known failure, the disc's position: with ring merging (the default) a lone far light's disc is
-// centred on the centre of the MIP-1 texel that holds it instead of its own half-res texel's, 1 full-res
-// px further in x and in y, so the circle's, the hexagon's and the anamorphic disc lie 1.4 to 1.6 px
-// from the truth's (the bar is 1 px: the half-res texel alone moves a disc by 0.7 px at most) and the
-// anamorphic disc's IoU is 0.88. With FFX_DOF_DISABLE_RING_MERGE they lie 0.7 px away, IoU 0.95 to
-// 0.96. These position checks are marked [!shouldfail] so that the suite stays green while the failure
-// stands and turns red once it is fixed (then drop the tag); the shape checks of the same points stay
-// ordinary gates.
-TEST_CASE("aperture point circle-far: area against the truth", "[quality][vulkan][aperture]") {
-    checkPoint("circle-far", PointPart::Shape);
+// The far points' position: with ring merging (the default) a lone far light's disc was centred on the
+// centre of the MIP-1 texel that held it, 1 full-res px further in x and in y, so the circle's, the
+// hexagon's and the anamorphic disc lay 1.4 to 1.6 px from the truth's and the anamorphic disc's IoU was
+// 0.88 (known failures until 2026-11-28). A coarse texel's light is now drawn about where it lies in the
+// texel (LIGHT_OFFSETS, docs/technique.md "Light offsets"): 0.05 px for the circle.
+TEST_CASE("aperture point circle-far: position, overlap and area against the truth", "[quality][vulkan][aperture]") {
+    checkPoint("circle-far");
 }
 
-TEST_CASE("aperture point circle-far: position and overlap - known failure with ring merging",
-          "[quality][vulkan][aperture][!shouldfail]") {
-    checkPoint("circle-far", PointPart::Position);
-}
-
-TEST_CASE("aperture point hexagon-far: area and orientation against the shaped truth", "[quality][vulkan][aperture]") {
-    checkPoint("hexagon-far", PointPart::Shape);
-}
-
-TEST_CASE("aperture point hexagon-far: position and overlap - known failure with ring merging",
-          "[quality][vulkan][aperture][!shouldfail]") {
-    checkPoint("hexagon-far", PointPart::Position);
+TEST_CASE("aperture point hexagon-far: position, overlap, area and orientation against the shaped truth",
+          "[quality][vulkan][aperture]") {
+    checkPoint("hexagon-far");
 }
 
 TEST_CASE("aperture point pentagon-far: an odd blade count keeps its rotation", "[quality][vulkan][aperture]") {
@@ -93,13 +72,9 @@ TEST_CASE("aperture point triangle-near: the near-field disc is turned by 180 de
     checkPoint("triangle-near");
 }
 
-TEST_CASE("aperture point anamorphic-far: area and a disc 1.5 times taller than wide", "[quality][vulkan][aperture]") {
-    checkPoint("anamorphic-far", PointPart::Shape);
-}
-
-TEST_CASE("aperture point anamorphic-far: position and overlap - known failure with ring merging",
-          "[quality][vulkan][aperture][!shouldfail]") {
-    checkPoint("anamorphic-far", PointPart::Position);
+TEST_CASE("aperture point anamorphic-far: position, overlap, area and a disc 1.5 times taller than wide",
+          "[quality][vulkan][aperture]") {
+    checkPoint("anamorphic-far");
 }
 
 TEST_CASE("aperture point cat-eye-far: the off-axis disc is a lens of the truth's size and axis",

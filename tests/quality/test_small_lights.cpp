@@ -15,32 +15,27 @@ TEST_CASE(
     "small lights: the energy a light adds within 5% of what it adds to the input, and its centre within 20% "
     "of the truth's, radii 6 to 28 px",
     "[quality][vulkan][lights]") {
-    // Energy, measured 2026-11-28 (docs/quality.md, small lights): every case within 5% with the light's
-    // centre on a corner of the coarsest MIP's texels; with the two other places 239 of 240: a 7 px light at
-    // radius 6 px (3 half-res px), 16-bit, offset (6, 5), adds 1.051. Until every case passes, the count is a
-    // ratchet: it may rise (raise kWithinFivePercent), never fall.
-    constexpr size_t kWithinFivePercent = 239;
+    // Every case, since a coarse texel's light is drawn about where it lies in the texel (LIGHT_OFFSETS,
+    // docs/technique.md "Light offsets"): 0.95 to 1.03 (docs/quality.md, small lights). Drawn about the
+    // coarse texel's centre, one case of 240 failed (a 7 px light at radius 6 px, 16-bit, offset (6, 5): 1.051).
     quality::validatedDevice().clearValidationMessages();
     const std::vector<quality::SmallLightCase> lights = quality::runSmallLightCases(quality::validatedDevice());
     REQUIRE(lights.size() == 240);
-    size_t within = 0;
     for (const quality::SmallLightCase& light : lights) {
         INFO(light.describe());
-        within += light.energyOk();
-        if (light.offsetX == 0 && light.offsetY == 0) CHECK(light.energyOk());
+        CHECK(light.energyOk());
         CHECK(light.centreOk());
     }
-    CHECK(within >= kWithinFivePercent);
     CHECK(quality::validatedDevice().validationMessages().empty());
 }
 
 // Issue 17: "for every light, the energy it adds ... within 5%", in the scene itself (docs/quality.md,
-// "lights of the mid-lights scene"). Measured 2026-11-28: 7 of 14 lights pass since rings merge only
-// where the smallest radius spans two coarse texels (5 with one texel, 3 before the light rims). Lights 1 and 2 hold
-// their energy within their own discs (0.99, 1.00) but change a brighter light's rim nearby (0.75, 0.26 over the
-// frame); light 0 (3 px) keeps 0.87, light 10 0.93; the partly hidden ones add 1.06 to 1.83 times the truth's. Until
-// every light passes, the count of passing lights is a ratchet: it may rise (raise kLightsWithinFivePercent with it),
-// never fall. One test case, so the 28 runs happen once.
+// "lights of the mid-lights scene"). Measured 2026-11-28: 7 of 14 lights pass since rings merge only where the
+// smallest radius spans two coarse texels (5 with one texel, 3 before the light rims). Since a coarse texel's light
+// is drawn about where it lies in the texel (LIGHT_OFFSETS) light 2 keeps 1.01 within its own disc and 0.91 over the
+// frame (-1.62 before: it changes light 3's disc less); light 0 (3 px) keeps 0.86; the partly hidden ones add 1.06
+// to 2.10 times the truth's. Until every light passes, the count of passing lights is a ratchet: it may rise (raise
+// kLightsWithinFivePercent with it), never fall. One test case, so the 28 runs happen once.
 TEST_CASE("mid-lights: every light measured alone, and no fewer lights within 5% than measured",
           "[quality][vulkan][lights]") {
     constexpr size_t kLightsWithinFivePercent = 7;  // of 14, in both precisions
@@ -68,8 +63,9 @@ TEST_CASE("mid-lights: every light measured alone, and no fewer lights within 5%
 }
 
 // The mid-lights scene's non-locality in its minimal case (quality_scenes.h, LightPairCase). Measured
-// 2026-11-28: alone the dim light adds 0.998 to 1.001 of its input; beside the bright light 0.81 to 0.93
-// with ring merging, and with merging off 0.88 at 16 px (their discs overlap most) and within 1% from 24 px.
+// 2026-11-28: alone the dim light adds 1.00 to 1.02 of its input; beside the bright light 1.23 to 1.49 with
+// ring merging (0.81 to 0.93 while coarse texels were drawn about their centres), and with merging off 0.76
+// at 16 px (their discs overlap most) and within 2% from 24 px.
 // Until every case passes, the count is a ratchet: it may rise (raise kWithinFivePercent), never fall.
 TEST_CASE("small lights: a dim light beside a bright one adds its energy within 5%, and no fewer cases than measured",
           "[quality][vulkan][lights]") {

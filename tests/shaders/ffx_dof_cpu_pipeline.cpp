@@ -43,6 +43,7 @@ struct State {
     const ffxdoftest::Scene* scene = nullptr;
     Image<glm::vec3> colorMips[FFX_DOF_OPTION_MAX_MIP];
     Image<float> cocMips[FFX_DOF_OPTION_MAX_MIP];
+    Image<glm::vec2> lightOffsetMips[FFX_DOF_OPTION_MAX_MIP];  // LIGHT_OFFSETS, by COLOR_MIPS level (0 unused)
     Image<glm::vec2> tiles, layerAlpha;
     Image<glm::vec4> dilatedTiles;
     Image<glm::vec3> nearColor, farColor;
@@ -182,12 +183,21 @@ FfxFloat32x2 ffxDofLoadFocusCocLine() {
 }
 void ffxDofStoreColorMip(FfxUInt32 mip, FfxUInt32x2 t, FfxDofFloat3 c) { g_state->colorMips[mip].store(t.x, t.y, c); }
 void ffxDofStoreCocMip(FfxUInt32 mip, FfxUInt32x2 t, FfxFloat32 c) { g_state->cocMips[mip].store(t.x, t.y, c); }
+void ffxDofStoreLightOffsetMip(FfxUInt32 mip, FfxUInt32x2 t, FfxFloat32x2 offset) {
+    // LIGHT_OFFSETS is R8G8 SNORM holding twice the offset: within half a texel, rounded as the GPU does.
+    if (mip == 0 || std::abs(offset.x) > 0.5f || std::abs(offset.y) > 0.5f) throw std::range_error("light offset");
+    g_state->lightOffsetMips[mip].store(t.x, t.y, glm::round(offset * 254.0f) / 254.0f);
+}
 FfxFloat32 ffxDofLoadGlobalMaxRadius() { return ffxDofAsFloat(g_state->globals[FFX_DOF_GLOBALS_MAX_RADIUS].load()); }
 FfxFloat32x2 ffxDofLoadTile(FfxUInt32x2 t) { return g_state->tiles.at(int32_t(t.x), int32_t(t.y)); }
 void ffxDofStoreDilatedTile(FfxUInt32x2 t, FfxFloat32x4 v) { g_state->dilatedTiles.store(t.x, t.y, v); }
 FfxFloat32x4 ffxDofLoadDilatedTile(FfxUInt32x2 t) { return g_state->dilatedTiles.at(int32_t(t.x), int32_t(t.y)); }
 FfxDofFloat3 ffxDofLoadColorMip(FfxInt32x2 t, FfxUInt32 mip) { return g_state->colorMips[mip].at(t.x, t.y); }
 FfxFloat32 ffxDofLoadCocMip(FfxInt32x2 t, FfxUInt32 mip) { return g_state->cocMips[mip].at(t.x, t.y); }
+FfxFloat32x2 ffxDofLoadLightOffsetMip(FfxInt32x2 t, FfxUInt32 mip) {
+    if (mip == 0) throw std::out_of_range("LIGHT_OFFSETS has no MIP 0");
+    return g_state->lightOffsetMips[mip].at(t.x, t.y);
+}
 void ffxDofStoreNearColor(FfxUInt32x2 t, FfxDofFloat3 c) { g_state->nearColor.store(t.x, t.y, c); }
 void ffxDofStoreFarColor(FfxUInt32x2 t, FfxDofFloat3 c) { g_state->farColor.store(t.x, t.y, c); }
 void ffxDofStoreLayerAlpha(FfxUInt32x2 t, FfxFloat32x2 a) {
@@ -222,6 +232,7 @@ std::vector<glm::vec4> runPipeline(const Scene& scene, const Settings& settings,
         FfxUInt32x2 size = ffxDofMipSize(k.halfSize, mip);
         state.colorMips[mip].resize(size.x, size.y);
         state.cocMips[mip].resize(size.x, size.y);
+        if (mip > 0) state.lightOffsetMips[mip].resize(size.x, size.y);
     }
     state.tiles.resize(k.tileCount.x, k.tileCount.y);
     state.dilatedTiles.resize(k.tileCount.x, k.tileCount.y);
