@@ -111,6 +111,56 @@ float lightRimCoc(float luminance, float coc, const std::vector<std::pair<float,
 
 }  // namespace
 
+TEST_CASE("Light offsets: the luminance-weighted centre of a quad's sources, their own offsets carried up",
+          "[downsample]") {
+    const FfxFloat32x2 none(0.0f, 0.0f);
+    // Equal light everywhere: the texel's centre.
+    FfxFloat32x2 offset = ffxDofReduceLightOffset(1.0f, 1.0f, 1.0f, 1.0f, none, none, none, none);
+    CHECK(offset.x == Approx(0.0f).margin(1e-6));
+    CHECK(offset.y == Approx(0.0f).margin(1e-6));
+    // All the light in one source: that source's centre, a quarter of the texel from its centre.
+    offset = ffxDofReduceLightOffset(0.0f, 5.0f, 0.0f, 0.0f, none, none, none, none);
+    CHECK(offset.x == Approx(0.25f));
+    CHECK(offset.y == Approx(-0.25f));
+    // A source's own offset (in its texels) counts half in the reduced texel's.
+    offset = ffxDofReduceLightOffset(0.0f, 0.0f, 2.0f, 0.0f, none, none, FfxFloat32x2(0.5f, -0.5f), none);
+    CHECK(offset.x == Approx(0.0f).margin(1e-6));
+    CHECK(offset.y == Approx(0.0f).margin(1e-6));
+}
+
+TEST_CASE("Light offsets: two levels of reduction place a lone bright pixel exactly", "[downsample]") {
+    // A 4 x 4 px block (one MIP-1 texel) of black pixels with one bright pixel, all at one far radius:
+    // MIP 0 from the four quads, then MIP 1 from MIP 0 with their offsets. The MIP-1 offset is the
+    // pixel's centre relative to the block's, in MIP-1 texels (4 px), whichever pixel it is.
+    for (int bright = 0; bright < 16; ++bright) {
+        const int bx = bright % 4, by = bright / 4;
+        FfxFloat32x3 mip0Color[4];
+        float mip0Coc[4];
+        FfxFloat32x2 mip0Offset[4];
+        for (int q = 0; q < 4; ++q) {
+            const int qx = (q % 2) * 2, qy = (q / 2) * 2;
+            FfxFloat32x3 colors[4];
+            for (int p = 0; p < 4; ++p) {
+                const bool lit = qx + p % 2 == bx && qy + p / 2 == by;
+                colors[p] = FfxFloat32x3(lit ? 1000.0f : 0.0f);
+            }
+            const FfxFloat32x2 none(0.0f, 0.0f);
+            ffxDofBilateralReduceLight(colors[0], colors[1], colors[2], colors[3], -6.0f, -6.0f, -6.0f, -6.0f, none,
+                                       none, none, none, mip0Color[q], mip0Coc[q], mip0Offset[q]);
+        }
+        FfxFloat32x3 color;
+        float coc;
+        FfxFloat32x2 offset;
+        ffxDofBilateralReduceLight(mip0Color[0], mip0Color[1], mip0Color[2], mip0Color[3], mip0Coc[0], mip0Coc[1],
+                                   mip0Coc[2], mip0Coc[3], mip0Offset[0], mip0Offset[1], mip0Offset[2], mip0Offset[3],
+                                   color, coc, offset);
+        INFO("bright pixel (" << bx << ", " << by << ")");
+        CHECK(color.x == Approx(1000.0f / 16.0f));
+        CHECK(offset.x == Approx((bx + 0.5f) / 4.0f - 0.5f).margin(1e-4));
+        CHECK(offset.y == Approx((by + 0.5f) / 4.0f - 0.5f).margin(1e-4));
+    }
+}
+
 TEST_CASE("Light rims: a bright rim pixel at the background's depth takes the light's radius", "[downsample]") {
     // A rim pixel (250) at the background's radius -14, beside the light (1000 at -9) and the
     // background (0.05 at -14): the brightness the light gives it must spread with the light's disc.

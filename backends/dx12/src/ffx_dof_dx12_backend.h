@@ -18,9 +18,9 @@ namespace ffxdof::dx12 {
 using Microsoft::WRL::ComPtr;
 
 // Every dispatch binds one contiguous block of descriptors through one descriptor table:
-//   [0, 9)    SRVs t0..t8               (FFX_DOF_SRV_*)
-//   [9, 23)   image UAVs u0..u13        (FFX_DOF_UAV_*)
-//   [23, 24)  buffer UAV u0, space 1    (FFX_DOF_UAV_BUFFER_*)
+//   [0, 10)   SRVs t0..t9               (FFX_DOF_SRV_*)
+//   [10, 27)  image UAVs u0..u16        (FFX_DOF_UAV_*)
+//   [27, 28)  buffer UAV u0, space 1    (FFX_DOF_UAV_BUFFER_*)
 // HLSL has one u# namespace for images and buffers, so the buffers take register space 1
 // (shaders_common/ffx_dof_callbacks_hlsl.h declares them there).
 constexpr uint32_t kSrvCount = kSampledSlotCount;
