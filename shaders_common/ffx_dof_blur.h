@@ -68,8 +68,10 @@ FfxFloat32 ffxDofLoadColorScale();
 #define FFX_DOF_RING_MERGE_FLAT_SPREAD 0.5f
 #define FFX_DOF_RING_MERGE_NOT_FLAT_SPREAD 1.0f
 // How far the outermost ring's inner border moves in where merged rings meet it, in texels of the
-// kernel's MIP (ffxDofWalkBorderRadius).
-#define FFX_DOF_RING_MERGE_RIM_INSET 0.5f
+// kernel's MIP (ffxDofWalkBorderRadius). A whole texel since merged samples are drawn from their light
+// offsets (docs/technique.md, "Light offsets"): with half a texel a small far light lost up to 1.1% of
+// its energy, and a point's rim lay up to 0.60 px off the circle instead of 0.33.
+#define FFX_DOF_RING_MERGE_RIM_INSET 1.0f
 // A blur tile whose kernels read only radii within this of each other (half-res px) takes the
 // equal-weight path, where every sample weighs what the texel's own radius gives. Small: bright
 // highlights a fraction of a pixel nearer than their background must keep their own radius
@@ -152,10 +154,11 @@ FFX_DOF_INLINE FfxFloat32 ffxDofRingInnerRadius(FfxUInt32 ring, FfxFloat32 spaci
 
 // Radius of the border at the inner edge of ring `ring` (rings `spacing` apart) as a walk sees it.
 // The rim border -- the outermost ring's inner edge, `rimRing` -- moves inward by `rimInset` where it
-// is judged by coarse texels (`coarseBorder`): inside it, merged rings read a light from the centre
-// of the coarse texel that holds it, up to 0.71 of the kernel's texels away, and gave it full reach
-// there, so its disc bulged past its radius toward that centre (a point's rim up to 1.3 px off the
-// circle). Both walks sharing the border compute it from the same figures.
+// is judged by coarse texels (`coarseBorder`): inside it, merged rings read a light from the coarse
+// texel that holds it, whose centre lies up to 1.41 of the kernel's texels from the light. Drawn about
+// that centre, a light's disc bulged past its radius toward it (a point's rim up to 1.3 px off the
+// circle, before the inset); drawn from its light offset, it is in place, and the rim's reach ramp is
+// left to the outermost ring's own texels. Both walks sharing the border compute it from the same figures.
 FFX_DOF_INLINE FfxFloat32 ffxDofWalkBorderRadius(FfxUInt32 ring, FfxFloat32 spacing, FfxUInt32 rimRing,
                                                  FfxBoolean coarseBorder, FfxFloat32 rimInset)
 {
