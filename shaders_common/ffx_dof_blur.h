@@ -70,7 +70,7 @@ FfxFloat32 ffxDofLoadColorScale();
 // How far the outermost ring's inner border moves in where merged rings meet it, in texels of the
 // kernel's MIP (ffxDofWalkBorderRadius). A whole texel since merged samples are drawn from their light
 // offsets (docs/technique.md, "Light offsets"): with half a texel a small far light lost up to 1.1% of
-// its energy, and a point's rim lay up to 0.60 px off the circle instead of 0.33.
+// its energy, and a point's rim at radius 12 lay 0.60 px off the circle instead of 0.33.
 #define FFX_DOF_RING_MERGE_RIM_INSET 1.0f
 // A blur tile whose kernels read only radii within this of each other (half-res px) takes the
 // equal-weight path, where every sample weighs what the texel's own radius gives. Small: bright

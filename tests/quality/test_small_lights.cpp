@@ -63,13 +63,14 @@ TEST_CASE("mid-lights: every light measured alone, and no fewer lights within 5%
 }
 
 // The mid-lights scene's non-locality in its minimal case (quality_scenes.h, LightPairCase). Measured
-// 2026-11-28: alone the dim light adds 1.00 to 1.02 of its input; beside the bright light 1.23 to 1.49 with
-// ring merging (0.81 to 0.93 while coarse texels were drawn about their centres), and with merging off 0.76
-// at 16 px (their discs overlap most) and within 2% from 24 px.
+// 2026-11-28: alone the dim light adds 1.00 to 1.02 of its input; beside the bright light 0.73 to 0.95 with
+// ring merging (0.81 to 0.93 while coarse texels were drawn about their centres, 1.23 to 1.49 with light
+// offsets and a half-texel rim inset), and with merging off 0.80 at 16 px (their discs overlap most) and
+// within 2.5% from 24 px: 6 of 12 (4 before the whole-texel rim inset).
 // Until every case passes, the count is a ratchet: it may rise (raise kWithinFivePercent), never fall.
 TEST_CASE("small lights: a dim light beside a bright one adds its energy within 5%, and no fewer cases than measured",
           "[quality][vulkan][lights]") {
-    constexpr size_t kWithinFivePercent = 4;  // of 12
+    constexpr size_t kWithinFivePercent = 6;  // of 12
     quality::validatedDevice().clearValidationMessages();
     const std::vector<quality::LightPairCase> pairs = quality::runLightPairCases(quality::validatedDevice());
     REQUIRE(pairs.size() == 12);
