@@ -50,9 +50,9 @@
 #if defined(FFX_CPU)
 FfxDofConstants ffxDofGetConstants();
 FfxFloat32x4 ffxDofLoadDilatedTile(FfxUInt32x2 tile);
-FfxDofFloat3 ffxDofLoadColorMip(FfxInt32x2 texel, FfxUInt32 mip);
-FfxFloat32 ffxDofLoadCocMip(FfxInt32x2 texel, FfxUInt32 mip);
-FfxFloat32x2 ffxDofLoadLightOffsetMip(FfxInt32x2 texel, FfxUInt32 mip);
+FfxDofFloat3 ffxDofLoadHalfColor(FfxInt32x2 texel);
+FfxFloat32 ffxDofLoadHalfCoc(FfxInt32x2 texel);
+FfxUInt32x2 ffxDofLoadCoarseMip(FfxInt32x2 texel, FfxUInt32 mip);
 void ffxDofStoreNearColor(FfxUInt32x2 texel, FfxDofFloat3 color);
 void ffxDofStoreFarColor(FfxUInt32x2 texel, FfxDofFloat3 color);
 void ffxDofStoreLayerAlpha(FfxUInt32x2 texel, FfxFloat32x2 nearOpacityFarValidity);
@@ -476,80 +476,75 @@ struct FfxDofGatherParts
     FfxBoolean shaped;        // the aperture is not round (ffx_dof_aperture.h); round discs run the circle's code
 };
 
-// Gathers rings firstRing..lastRing from MIP `mip`: every texel of that MIP whose centre lies in
-// the rings' annulus around the kernel origin, once. A sample weighs the texel's area (4^mip
-// half-res px^2), so rings from different MIPs add up, and the whole ring counts `presence` (0..1)
-// times. trackSpread (a literal at every call, so it compiles away) records the radius spread of
-// the samples for the ring-merge decision: only the outermost ring needs it. Hole filling needs both
-// fields (a near texel with background samples around it): only the mixed path has it.
-// The sample loop is written for devices that run both sides of every branch (lavapipe, which runs
-// groups of 8 lanes under masks): near and far samples are added with 0/1 shares instead of a
-// branch, and a step of the walk that lands on an empty row counts with weight 0 (`valid`) rather
-// than looping on to the next row.
-FFX_DOF_INLINE void ffxDofGatherRing(FFX_DOF_INOUT(FfxDofGather) gather, FfxDofKernel kernel, FfxUInt32 firstRing,
-                                     FfxUInt32 lastRing, FfxUInt32 mip, FfxUInt32 innerBorderMip,
-                                     FfxUInt32 outerBorderMip, FfxFloat32 presence, FfxBoolean trackSpread,
-                                     FfxDofGatherParts parts, FfxDofConstants constants)
+// What a ring walk shares with its sample loop (ffxDofGatherRing, ffxDofWalkSamples).
+struct FfxDofRingWalk
+{
+    FfxUInt32 mip;
+    FfxFloat32 texelSize;         // half-res px per texel of `mip`
+    FfxFloat32 sampleWeight;      // the texel's area (4^mip half-res px^2) x the ring's presence
+    FfxFloat32 levelScale;        // luminance x this = the highlight level's squared radius
+    FfxFloat32x2 centerToCorner;  // the kernel centre less half a texel, in texels of `mip`
+    FfxFloat32x2 lastTexel;       // the last texel of `mip`
+    FfxBoolean trackSpread;       // literal at every call: record the radius spread
+};
+
+// The sample loop of one ring walk: every texel of `annulus` at the walk's MIP, once, added to the
+// gather (the ring's hole fill to ringFillSum / ringFillCount). `coarse` is a literal at both calls: MIP
+// 0 reads HALF_COLOR and HALF_COC, MIPs 1 and up read COARSE_MIPS, colour, radius and light offset in
+// one fetch. Two loops rather than a choice per sample because on devices that run both sides of every
+// branch (lavapipe) a per-sample choice fetches from both images; a loop no lane is in costs one pass.
+// Written for such devices: near and far samples are added with 0/1 shares instead of a branch, and a
+// step of the walk that lands on an empty row counts with weight 0 (`valid`) rather than looping on to
+// the next row.
+FFX_DOF_INLINE void ffxDofWalkSamples(FFX_DOF_INOUT(FfxDofGather) gather, FFX_DOF_INOUT(FfxFloat32x3) ringFillSum,
+                                      FFX_DOF_INOUT(FfxFloat32) ringFillCount, FfxDofKernel kernel, FfxDofRingWalk ring,
+                                      FfxDofAnnulus annulus, FfxBoolean coarse, FfxDofGatherParts parts)
 {
     FfxBoolean holeFill = parts.nearField && parts.farField;
-    FfxFloat32 texelSize = FfxFloat32(1u << mip);
-    FfxFloat32 sampleWeight = texelSize * texelSize * presence;
-    // A sample's luminance x this = the squared radius over which its light would be at the highlight
-    // level (ffxDofHighlightSpreadRadius): texel area x area scale / (pi x level), in input units.
-    FfxFloat32 levelScale = texelSize * texelSize * kernel.aperture.areaScale * kernel.inverseColorScale *
-                            (1.0f / (FFX_DOF_PI * FFX_DOF_HIGHLIGHT_LEVEL));
     FfxFloat32 centerAbsCoc = abs(kernel.centerCoc);
-    FfxFloat32x3 ringFillSum = FfxFloat32x3(0.0f, 0.0f, 0.0f);
-    FfxFloat32 ringFillCount = 0.0f;
-    FfxFloat32 mipScale = 1.0f / texelSize;
-    FfxFloat32 spacing = kernel.spacing * mipScale;
-    // In units of MIP texels: the kernel centre less half a texel, so that (texel - centre) is the
-    // offset of the texel's centre.
-    FfxFloat32x2 centerToCorner = kernel.center * mipScale - FfxFloat32x2(0.5f, 0.5f);
-    FfxFloat32x2 lastTexel = FfxFloat32x2(ffxDofMipSize(constants.halfSize, mip) - FfxUInt32x2(1u, 1u));
-    // Borders shared with a walk at a coarser MIP are judged by its texels (FfxDofAnnulus).
-    FfxFloat32 rimInset = kernel.rimInset * mipScale;
-    FfxFloat32 innerRadius =
-        ffxDofWalkBorderRadius(firstRing, spacing, kernel.rings, innerBorderMip != kernel.baseMip, rimInset);
-    FfxFloat32 outerRadius =
-        ffxDofWalkBorderRadius(lastRing + 1u, spacing, kernel.rings, outerBorderMip != kernel.baseMip, rimInset);
-    FfxFloat32 innerBlock = FfxFloat32(1u << (innerBorderMip - mip));
-    FfxFloat32 outerBlock = FfxFloat32(1u << (outerBorderMip - mip));
-    FfxDofAnnulus annulus = ffxDofMakeAnnulus(kernel.origin * mipScale, innerRadius, outerRadius, innerBlock,
-                                              outerBlock, parts.shaped ? 1.0f / kernel.aperture.anamorphicRatio : 1.0f);
     FfxDofAnnulusWalk walk = ffxDofAnnulusBegin(annulus);
     FFX_DOF_LOOP
     while (ffxDofAnnulusRowsLeft(annulus, walk))
     {
-        FfxFloat32x2 sampleTexel = clamp(walk.texel, FfxFloat32x2(0.0f, 0.0f), lastTexel);
+        FfxFloat32x2 sampleTexel = clamp(walk.texel, FfxFloat32x2(0.0f, 0.0f), ring.lastTexel);
         FfxFloat32 valid = ffxDofAnnulusValid(walk) ? 1.0f : 0.0f;
         walk = ffxDofAnnulusNext(annulus, walk);
-        FfxFloat32x3 color = ffxDofToFloat32x3(ffxDofLoadColorMip(FfxInt32x2(sampleTexel), mip));
-        FfxFloat32 coc = kernel.centerCoc;
-        if (!parts.equalWeights)
-            coc = ffxDofLoadCocMip(FfxInt32x2(sampleTexel), mip);
-        if (trackSpread)
-            gather.cocSpread = max(gather.cocSpread, abs(coc - kernel.centerCoc) * valid);
         // Reach is judged from where the light of the texel actually read lies (at the image border, the
-        // clamped one): its centre at MIP 0, its light offset above (LIGHT_OFFSETS).
-        FfxFloat32x2 toTexel = sampleTexel - centerToCorner;
-        if (mip > 0u)
-            toTexel += ffxDofLoadLightOffsetMip(FfxInt32x2(sampleTexel), mip);
+        // clamped one): its centre at MIP 0, its light offset above.
+        FfxFloat32x2 toTexel = sampleTexel - ring.centerToCorner;
+        FfxFloat32x3 color;
+        FfxFloat32 coc = kernel.centerCoc;
+        if (coarse)
+        {
+            FfxUInt32x2 packed = ffxDofLoadCoarseMip(FfxInt32x2(sampleTexel), ring.mip);
+            color = ffxDofCoarseTexelColor(packed);
+            if (!parts.equalWeights)
+                coc = ffxDofCoarseTexelCoc(packed);
+            toTexel += ffxDofCoarseTexelLightOffset(packed);
+        }
+        else
+        {
+            color = ffxDofToFloat32x3(ffxDofLoadHalfColor(FfxInt32x2(sampleTexel)));
+            if (!parts.equalWeights)
+                coc = ffxDofLoadHalfCoc(FfxInt32x2(sampleTexel));
+        }
+        if (ring.trackSpread)
+            gather.cocSpread = max(gather.cocSpread, abs(coc - kernel.centerCoc) * valid);
         FfxBoolean nearSample = coc >= FFX_DOF_NEAR_THRESHOLD;
         FfxFloat32 gauge = sqrt(dot(toTexel, toTexel));
         if (parts.shaped)
             gauge = ffxDofApertureDistance(kernel.aperture, toTexel, nearSample);
-        FfxFloat32 distance = gauge * texelSize;
+        FfxFloat32 distance = gauge * ring.texelSize;
         // Near and far samples weigh alike (reach times inverse area).
         FfxFloat32 absCoc = abs(coc);
-        FfxFloat32 levelRadiusSquared = ffxDofLuminance32(color) * levelScale;
+        FfxFloat32 levelRadiusSquared = ffxDofLuminance32(color) * ring.levelScale;
         FfxFloat32 spreadRadius =
             nearSample ? absCoc : ffxDofHighlightSpreadRadius(absCoc, levelRadiusSquared, kernel.highlightRampScale);
         FfxFloat32 areaWeight = parts.shaped ? ffxDofApertureAreaWeight(kernel.aperture, spreadRadius)
                                              : ffxDofRoundAreaWeight(spreadRadius);
         FfxFloat32 reach = ffxDofReach(spreadRadius, distance);
         reach *= valid;
-        FfxFloat32 weight = reach * areaWeight * sampleWeight;
+        FfxFloat32 weight = reach * areaWeight * ring.sampleWeight;
         FfxFloat32 farShare = nearSample ? 0.0f : valid;
         if (!parts.nearField)
             farShare = valid;
@@ -581,8 +576,52 @@ FFX_DOF_INLINE void ffxDofGatherRing(FFX_DOF_INOUT(FfxDofGather) gather, FfxDofK
             ringFillCount += farShare;
         }
     }
-    gather.fillSum += ringFillSum * sampleWeight;
-    gather.fillCount += ringFillCount * sampleWeight;
+}
+
+// Gathers rings firstRing..lastRing from MIP `mip`: every texel of that MIP whose centre lies in
+// the rings' annulus around the kernel origin, once. A sample weighs the texel's area (4^mip
+// half-res px^2), so rings from different MIPs add up, and the whole ring counts `presence` (0..1)
+// times. trackSpread (a literal at every call, so it compiles away) records the radius spread of
+// the samples for the ring-merge decision: only the outermost ring needs it. Hole filling needs both
+// fields (a near texel with background samples around it): only the mixed path has it.
+FFX_DOF_INLINE void ffxDofGatherRing(FFX_DOF_INOUT(FfxDofGather) gather, FfxDofKernel kernel, FfxUInt32 firstRing,
+                                     FfxUInt32 lastRing, FfxUInt32 mip, FfxUInt32 innerBorderMip,
+                                     FfxUInt32 outerBorderMip, FfxFloat32 presence, FfxBoolean trackSpread,
+                                     FfxDofGatherParts parts, FfxDofConstants constants)
+{
+    FfxDofRingWalk ring;
+    ring.mip = mip;
+    ring.texelSize = FfxFloat32(1u << mip);
+    ring.sampleWeight = ring.texelSize * ring.texelSize * presence;
+    ring.trackSpread = trackSpread;
+    // A sample's luminance x this = the squared radius over which its light would be at the highlight
+    // level (ffxDofHighlightSpreadRadius): texel area x area scale / (pi x level), in input units.
+    ring.levelScale = ring.texelSize * ring.texelSize * kernel.aperture.areaScale * kernel.inverseColorScale *
+                      (1.0f / (FFX_DOF_PI * FFX_DOF_HIGHLIGHT_LEVEL));
+    FfxFloat32 mipScale = 1.0f / ring.texelSize;
+    FfxFloat32 spacing = kernel.spacing * mipScale;
+    // In units of MIP texels: the kernel centre less half a texel, so that (texel - centre) is the
+    // offset of the texel's centre.
+    ring.centerToCorner = kernel.center * mipScale - FfxFloat32x2(0.5f, 0.5f);
+    ring.lastTexel = FfxFloat32x2(ffxDofMipSize(constants.halfSize, mip) - FfxUInt32x2(1u, 1u));
+    // Borders shared with a walk at a coarser MIP are judged by its texels (FfxDofAnnulus).
+    FfxFloat32 rimInset = kernel.rimInset * mipScale;
+    FfxFloat32 innerRadius =
+        ffxDofWalkBorderRadius(firstRing, spacing, kernel.rings, innerBorderMip != kernel.baseMip, rimInset);
+    FfxFloat32 outerRadius =
+        ffxDofWalkBorderRadius(lastRing + 1u, spacing, kernel.rings, outerBorderMip != kernel.baseMip, rimInset);
+    FfxFloat32 innerBlock = FfxFloat32(1u << (innerBorderMip - mip));
+    FfxFloat32 outerBlock = FfxFloat32(1u << (outerBorderMip - mip));
+    FfxDofAnnulus annulus = ffxDofMakeAnnulus(kernel.origin * mipScale, innerRadius, outerRadius, innerBlock,
+                                              outerBlock, parts.shaped ? 1.0f / kernel.aperture.anamorphicRatio : 1.0f);
+    FfxFloat32x3 ringFillSum = FfxFloat32x3(0.0f, 0.0f, 0.0f);
+    FfxFloat32 ringFillCount = 0.0f;
+    if (mip == 0u)
+        ffxDofWalkSamples(gather, ringFillSum, ringFillCount, kernel, ring, annulus, false, parts);
+    else
+        ffxDofWalkSamples(gather, ringFillSum, ringFillCount, kernel, ring, annulus, true, parts);
+    gather.fillSum += ringFillSum * ring.sampleWeight;
+    gather.fillCount += ringFillCount * ring.sampleWeight;
 }
 
 // Gathers every ring inside the outermost one, from the outside in. Rings 1 .. rings - 1 form groups
@@ -749,11 +788,11 @@ FFX_DOF_INLINE FfxDofBlurResult ffxDofBlurTexel(FfxUInt32x2 texel, FfxFloat32x4 
 {
     FfxDofBlurResult result;
     result.nearColor = FfxDofFloat3(0.0f, 0.0f, 0.0f);
-    result.farColor = ffxDofLoadColorMip(FfxInt32x2(texel), 0u);
+    result.farColor = ffxDofLoadHalfColor(FfxInt32x2(texel));
     result.alpha = FfxFloat32x2(0.0f, 1.0f);
 
     FfxDofKernel kernel;
-    kernel.centerCoc = ffxDofLoadCocMip(FfxInt32x2(texel), 0u);
+    kernel.centerCoc = ffxDofLoadHalfCoc(FfxInt32x2(texel));
     FfxFloat32 nearRadius = max(dilated.y, 0.0f);
     FfxFloat32 kernelRadius = max(nearRadius, abs(kernel.centerCoc));
     kernel.rings = ffxDofRingCount(kernelRadius, constants.maxRings);

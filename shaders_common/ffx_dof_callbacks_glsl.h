@@ -24,26 +24,26 @@ FFX_DOF_BINDING_SRV(FFX_DOF_SRV_INPUT_DEPTH) uniform texture2D ffxDofInputDepth;
 FfxFloat32 ffxDofLoadInputDepth(FfxUInt32x2 pixel) { return texelFetch(ffxDofInputDepth, ivec2(pixel), 0).x; }
 #endif
 
-#if FFX_DOF_USES_COLOR_MIPS
-FFX_DOF_BINDING_SRV(FFX_DOF_SRV_COLOR_MIPS) uniform texture2D ffxDofColorMips;
-FfxDofFloat3 ffxDofLoadColorMip(FfxInt32x2 texel, FfxUInt32 mip)
+#if FFX_DOF_USES_HALF_COLOR
+FFX_DOF_BINDING_SRV(FFX_DOF_SRV_HALF_COLOR) uniform texture2D ffxDofHalfColor;
+FfxDofFloat3 ffxDofLoadHalfColor(FfxInt32x2 texel)
 {
-    vec4 color = texelFetch(ffxDofColorMips, texel, int(mip));
+    vec4 color = texelFetch(ffxDofHalfColor, texel, 0);
     return FfxDofFloat3(color.x, color.y, color.z);
 }
 #endif
 
-#if FFX_DOF_USES_COC_MIPS
-FFX_DOF_BINDING_SRV(FFX_DOF_SRV_COC_MIPS) uniform texture2D ffxDofCocMips;
-FfxFloat32 ffxDofLoadCocMip(FfxInt32x2 texel, FfxUInt32 mip) { return texelFetch(ffxDofCocMips, texel, int(mip)).x; }
+#if FFX_DOF_USES_HALF_COC
+FFX_DOF_BINDING_SRV(FFX_DOF_SRV_HALF_COC) uniform texture2D ffxDofHalfCoc;
+FfxFloat32 ffxDofLoadHalfCoc(FfxInt32x2 texel) { return texelFetch(ffxDofHalfCoc, texel, 0).x; }
 #endif
 
-#if FFX_DOF_USES_LIGHT_OFFSETS
-FFX_DOF_BINDING_SRV(FFX_DOF_SRV_LIGHT_OFFSETS) uniform texture2D ffxDofLightOffsets;
-// `mip` of COLOR_MIPS, 1 or more: LIGHT_OFFSETS starts at MIP 1 and stores twice the offset.
-FfxFloat32x2 ffxDofLoadLightOffsetMip(FfxInt32x2 texel, FfxUInt32 mip)
+#if FFX_DOF_USES_COARSE_MIPS
+FFX_DOF_BINDING_SRV(FFX_DOF_SRV_COARSE_MIPS) uniform utexture2D ffxDofCoarseMips;
+// `mip` of the half-res chain, 1 or more: COARSE_MIPS starts at MIP 1 (ffxDofPackCoarseTexel).
+FfxUInt32x2 ffxDofLoadCoarseMip(FfxInt32x2 texel, FfxUInt32 mip)
 {
-    return texelFetch(ffxDofLightOffsets, texel, int(mip) - 1).xy * 0.5f;
+    return texelFetch(ffxDofCoarseMips, texel, int(mip) - 1).xy;
 }
 #endif
 
@@ -75,74 +75,40 @@ FfxFloat32x2 ffxDofLoadLayerAlpha(FfxInt32x2 texel) { return texelFetch(ffxDofLa
 #endif
 
 #if FFX_DOF_USES_RW_MIPS
-FFX_DOF_BINDING_UAV_IMAGE(FFX_DOF_UAV_COLOR_MIP0, r11f_g11f_b10f) uniform writeonly image2D ffxDofColorMip0;
-FFX_DOF_BINDING_UAV_IMAGE(FFX_DOF_UAV_COC_MIP0, r16f) uniform writeonly image2D ffxDofCocMip0;
+FFX_DOF_BINDING_UAV_IMAGE(FFX_DOF_UAV_HALF_COLOR, r11f_g11f_b10f) uniform writeonly image2D ffxDofRwHalfColor;
+FFX_DOF_BINDING_UAV_IMAGE(FFX_DOF_UAV_HALF_COC, r16f) uniform writeonly image2D ffxDofRwHalfCoc;
 #if FFX_DOF_OPTION_MAX_MIP > 1
-FFX_DOF_BINDING_UAV_IMAGE(FFX_DOF_UAV_COLOR_MIP1, r11f_g11f_b10f) uniform writeonly image2D ffxDofColorMip1;
-FFX_DOF_BINDING_UAV_IMAGE(FFX_DOF_UAV_COC_MIP1, r16f) uniform writeonly image2D ffxDofCocMip1;
-FFX_DOF_BINDING_UAV_IMAGE(FFX_DOF_UAV_LIGHT_OFFSET_MIP1, rg8_snorm) uniform writeonly image2D ffxDofLightOffsetMip1;
+FFX_DOF_BINDING_UAV_IMAGE(FFX_DOF_UAV_COARSE_MIP1, rg32ui) uniform writeonly uimage2D ffxDofCoarseMip1;
 #endif
 #if FFX_DOF_OPTION_MAX_MIP > 2
-FFX_DOF_BINDING_UAV_IMAGE(FFX_DOF_UAV_COLOR_MIP2, r11f_g11f_b10f) uniform writeonly image2D ffxDofColorMip2;
-FFX_DOF_BINDING_UAV_IMAGE(FFX_DOF_UAV_COC_MIP2, r16f) uniform writeonly image2D ffxDofCocMip2;
-FFX_DOF_BINDING_UAV_IMAGE(FFX_DOF_UAV_LIGHT_OFFSET_MIP2, rg8_snorm) uniform writeonly image2D ffxDofLightOffsetMip2;
+FFX_DOF_BINDING_UAV_IMAGE(FFX_DOF_UAV_COARSE_MIP2, rg32ui) uniform writeonly uimage2D ffxDofCoarseMip2;
 #endif
 #if FFX_DOF_OPTION_MAX_MIP > 3
-FFX_DOF_BINDING_UAV_IMAGE(FFX_DOF_UAV_COLOR_MIP3, r11f_g11f_b10f) uniform writeonly image2D ffxDofColorMip3;
-FFX_DOF_BINDING_UAV_IMAGE(FFX_DOF_UAV_COC_MIP3, r16f) uniform writeonly image2D ffxDofCocMip3;
-FFX_DOF_BINDING_UAV_IMAGE(FFX_DOF_UAV_LIGHT_OFFSET_MIP3, rg8_snorm) uniform writeonly image2D ffxDofLightOffsetMip3;
+FFX_DOF_BINDING_UAV_IMAGE(FFX_DOF_UAV_COARSE_MIP3, rg32ui) uniform writeonly uimage2D ffxDofCoarseMip3;
 #endif
-void ffxDofStoreColorMip(FfxUInt32 mip, FfxUInt32x2 texel, FfxDofFloat3 color)
+void ffxDofStoreHalfColor(FfxUInt32x2 texel, FfxDofFloat3 color)
 {
-    vec4 value = vec4(color.x, color.y, color.z, 1.0f);
-    if (mip == 0u)
-        imageStore(ffxDofColorMip0, ivec2(texel), value);
-#if FFX_DOF_OPTION_MAX_MIP > 1
-    else if (mip == 1u)
-        imageStore(ffxDofColorMip1, ivec2(texel), value);
-#endif
-#if FFX_DOF_OPTION_MAX_MIP > 2
-    else if (mip == 2u)
-        imageStore(ffxDofColorMip2, ivec2(texel), value);
-#endif
-#if FFX_DOF_OPTION_MAX_MIP > 3
-    else
-        imageStore(ffxDofColorMip3, ivec2(texel), value);
-#endif
+    imageStore(ffxDofRwHalfColor, ivec2(texel), vec4(color.x, color.y, color.z, 1.0f));
 }
-void ffxDofStoreCocMip(FfxUInt32 mip, FfxUInt32x2 texel, FfxFloat32 coc)
+void ffxDofStoreHalfCoc(FfxUInt32x2 texel, FfxFloat32 coc)
 {
-    vec4 value = vec4(coc, 0.0f, 0.0f, 0.0f);
-    if (mip == 0u)
-        imageStore(ffxDofCocMip0, ivec2(texel), value);
-#if FFX_DOF_OPTION_MAX_MIP > 1
-    else if (mip == 1u)
-        imageStore(ffxDofCocMip1, ivec2(texel), value);
-#endif
-#if FFX_DOF_OPTION_MAX_MIP > 2
-    else if (mip == 2u)
-        imageStore(ffxDofCocMip2, ivec2(texel), value);
-#endif
-#if FFX_DOF_OPTION_MAX_MIP > 3
-    else
-        imageStore(ffxDofCocMip3, ivec2(texel), value);
-#endif
+    imageStore(ffxDofRwHalfCoc, ivec2(texel), vec4(coc, 0.0f, 0.0f, 0.0f));
 }
-// `mip` 1 or more (MIP 0 keeps no offset).
-void ffxDofStoreLightOffsetMip(FfxUInt32 mip, FfxUInt32x2 texel, FfxFloat32x2 offset)
+// `mip` 1 or more (ffxDofPackCoarseTexel).
+void ffxDofStoreCoarseMip(FfxUInt32 mip, FfxUInt32x2 texel, FfxUInt32x2 packed)
 {
-    vec4 value = vec4(offset.x * 2.0f, offset.y * 2.0f, 0.0f, 0.0f);
+    uvec4 value = uvec4(packed.x, packed.y, 0u, 0u);
 #if FFX_DOF_OPTION_MAX_MIP > 1
     if (mip == 1u)
-        imageStore(ffxDofLightOffsetMip1, ivec2(texel), value);
+        imageStore(ffxDofCoarseMip1, ivec2(texel), value);
 #endif
 #if FFX_DOF_OPTION_MAX_MIP > 2
     if (mip == 2u)
-        imageStore(ffxDofLightOffsetMip2, ivec2(texel), value);
+        imageStore(ffxDofCoarseMip2, ivec2(texel), value);
 #endif
 #if FFX_DOF_OPTION_MAX_MIP > 3
     if (mip == 3u)
-        imageStore(ffxDofLightOffsetMip3, ivec2(texel), value);
+        imageStore(ffxDofCoarseMip3, ivec2(texel), value);
 #endif
 }
 #endif

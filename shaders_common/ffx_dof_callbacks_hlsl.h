@@ -49,28 +49,25 @@ Texture2D<float> ffxDofInputDepth : FFX_DOF_HLSL_REGISTER(t, FFX_DOF_SRV_INPUT_D
 FfxFloat32 ffxDofLoadInputDepth(FfxUInt32x2 pixel) { return ffxDofInputDepth.Load(int3(pixel, 0)); }
 #endif
 
-#if FFX_DOF_USES_COLOR_MIPS
-FFX_DOF_BINDING_SRV(FFX_DOF_SRV_COLOR_MIPS)
-Texture2D<float3> ffxDofColorMips : FFX_DOF_HLSL_REGISTER(t, FFX_DOF_SRV_COLOR_MIPS);
-FfxDofFloat3 ffxDofLoadColorMip(FfxInt32x2 texel, FfxUInt32 mip)
-{
-    return FfxDofFloat3(ffxDofColorMips.Load(int3(texel, int(mip))));
-}
+#if FFX_DOF_USES_HALF_COLOR
+FFX_DOF_BINDING_SRV(FFX_DOF_SRV_HALF_COLOR)
+Texture2D<float3> ffxDofHalfColor : FFX_DOF_HLSL_REGISTER(t, FFX_DOF_SRV_HALF_COLOR);
+FfxDofFloat3 ffxDofLoadHalfColor(FfxInt32x2 texel) { return FfxDofFloat3(ffxDofHalfColor.Load(int3(texel, 0))); }
 #endif
 
-#if FFX_DOF_USES_COC_MIPS
-FFX_DOF_BINDING_SRV(FFX_DOF_SRV_COC_MIPS)
-Texture2D<float> ffxDofCocMips : FFX_DOF_HLSL_REGISTER(t, FFX_DOF_SRV_COC_MIPS);
-FfxFloat32 ffxDofLoadCocMip(FfxInt32x2 texel, FfxUInt32 mip) { return ffxDofCocMips.Load(int3(texel, int(mip))); }
+#if FFX_DOF_USES_HALF_COC
+FFX_DOF_BINDING_SRV(FFX_DOF_SRV_HALF_COC)
+Texture2D<float> ffxDofHalfCoc : FFX_DOF_HLSL_REGISTER(t, FFX_DOF_SRV_HALF_COC);
+FfxFloat32 ffxDofLoadHalfCoc(FfxInt32x2 texel) { return ffxDofHalfCoc.Load(int3(texel, 0)); }
 #endif
 
-#if FFX_DOF_USES_LIGHT_OFFSETS
-FFX_DOF_BINDING_SRV(FFX_DOF_SRV_LIGHT_OFFSETS)
-Texture2D<float2> ffxDofLightOffsets : FFX_DOF_HLSL_REGISTER(t, FFX_DOF_SRV_LIGHT_OFFSETS);
-// `mip` of COLOR_MIPS, 1 or more: LIGHT_OFFSETS starts at MIP 1 and stores twice the offset.
-FfxFloat32x2 ffxDofLoadLightOffsetMip(FfxInt32x2 texel, FfxUInt32 mip)
+#if FFX_DOF_USES_COARSE_MIPS
+FFX_DOF_BINDING_SRV(FFX_DOF_SRV_COARSE_MIPS)
+Texture2D<uint2> ffxDofCoarseMips : FFX_DOF_HLSL_REGISTER(t, FFX_DOF_SRV_COARSE_MIPS);
+// `mip` of the half-res chain, 1 or more: COARSE_MIPS starts at MIP 1 (ffxDofPackCoarseTexel).
+FfxUInt32x2 ffxDofLoadCoarseMip(FfxInt32x2 texel, FfxUInt32 mip)
 {
-    return ffxDofLightOffsets.Load(int3(texel, int(mip) - 1)) * 0.5f;
+    return ffxDofCoarseMips.Load(int3(texel, int(mip) - 1));
 }
 #endif
 
@@ -98,84 +95,38 @@ FfxFloat32x2 ffxDofLoadLayerAlpha(FfxInt32x2 texel) { return ffxDofLayerAlpha.Lo
 #endif
 
 #if FFX_DOF_USES_RW_MIPS
-FFX_DOF_BINDING_UAV_IMAGE(FFX_DOF_UAV_COLOR_MIP0)
-RWTexture2D<float3> ffxDofColorMip0 : FFX_DOF_HLSL_REGISTER(u, FFX_DOF_UAV_COLOR_MIP0);
-FFX_DOF_BINDING_UAV_IMAGE(FFX_DOF_UAV_COC_MIP0)
-RWTexture2D<float> ffxDofCocMip0 : FFX_DOF_HLSL_REGISTER(u, FFX_DOF_UAV_COC_MIP0);
+FFX_DOF_BINDING_UAV_IMAGE(FFX_DOF_UAV_HALF_COLOR)
+RWTexture2D<float3> ffxDofRwHalfColor : FFX_DOF_HLSL_REGISTER(u, FFX_DOF_UAV_HALF_COLOR);
+FFX_DOF_BINDING_UAV_IMAGE(FFX_DOF_UAV_HALF_COC)
+RWTexture2D<float> ffxDofRwHalfCoc : FFX_DOF_HLSL_REGISTER(u, FFX_DOF_UAV_HALF_COC);
 #if FFX_DOF_OPTION_MAX_MIP > 1
-FFX_DOF_BINDING_UAV_IMAGE(FFX_DOF_UAV_COLOR_MIP1)
-RWTexture2D<float3> ffxDofColorMip1 : FFX_DOF_HLSL_REGISTER(u, FFX_DOF_UAV_COLOR_MIP1);
-FFX_DOF_BINDING_UAV_IMAGE(FFX_DOF_UAV_COC_MIP1)
-RWTexture2D<float> ffxDofCocMip1 : FFX_DOF_HLSL_REGISTER(u, FFX_DOF_UAV_COC_MIP1);
-FFX_DOF_BINDING_UAV_IMAGE(FFX_DOF_UAV_LIGHT_OFFSET_MIP1)
-RWTexture2D<float2> ffxDofLightOffsetMip1 : FFX_DOF_HLSL_REGISTER(u, FFX_DOF_UAV_LIGHT_OFFSET_MIP1);
+FFX_DOF_BINDING_UAV_IMAGE(FFX_DOF_UAV_COARSE_MIP1)
+RWTexture2D<uint2> ffxDofCoarseMip1 : FFX_DOF_HLSL_REGISTER(u, FFX_DOF_UAV_COARSE_MIP1);
 #endif
 #if FFX_DOF_OPTION_MAX_MIP > 2
-FFX_DOF_BINDING_UAV_IMAGE(FFX_DOF_UAV_COLOR_MIP2)
-RWTexture2D<float3> ffxDofColorMip2 : FFX_DOF_HLSL_REGISTER(u, FFX_DOF_UAV_COLOR_MIP2);
-FFX_DOF_BINDING_UAV_IMAGE(FFX_DOF_UAV_COC_MIP2)
-RWTexture2D<float> ffxDofCocMip2 : FFX_DOF_HLSL_REGISTER(u, FFX_DOF_UAV_COC_MIP2);
-FFX_DOF_BINDING_UAV_IMAGE(FFX_DOF_UAV_LIGHT_OFFSET_MIP2)
-RWTexture2D<float2> ffxDofLightOffsetMip2 : FFX_DOF_HLSL_REGISTER(u, FFX_DOF_UAV_LIGHT_OFFSET_MIP2);
+FFX_DOF_BINDING_UAV_IMAGE(FFX_DOF_UAV_COARSE_MIP2)
+RWTexture2D<uint2> ffxDofCoarseMip2 : FFX_DOF_HLSL_REGISTER(u, FFX_DOF_UAV_COARSE_MIP2);
 #endif
 #if FFX_DOF_OPTION_MAX_MIP > 3
-FFX_DOF_BINDING_UAV_IMAGE(FFX_DOF_UAV_COLOR_MIP3)
-RWTexture2D<float3> ffxDofColorMip3 : FFX_DOF_HLSL_REGISTER(u, FFX_DOF_UAV_COLOR_MIP3);
-FFX_DOF_BINDING_UAV_IMAGE(FFX_DOF_UAV_COC_MIP3)
-RWTexture2D<float> ffxDofCocMip3 : FFX_DOF_HLSL_REGISTER(u, FFX_DOF_UAV_COC_MIP3);
-FFX_DOF_BINDING_UAV_IMAGE(FFX_DOF_UAV_LIGHT_OFFSET_MIP3)
-RWTexture2D<float2> ffxDofLightOffsetMip3 : FFX_DOF_HLSL_REGISTER(u, FFX_DOF_UAV_LIGHT_OFFSET_MIP3);
+FFX_DOF_BINDING_UAV_IMAGE(FFX_DOF_UAV_COARSE_MIP3)
+RWTexture2D<uint2> ffxDofCoarseMip3 : FFX_DOF_HLSL_REGISTER(u, FFX_DOF_UAV_COARSE_MIP3);
 #endif
-void ffxDofStoreColorMip(FfxUInt32 mip, FfxUInt32x2 texel, FfxDofFloat3 color)
+void ffxDofStoreHalfColor(FfxUInt32x2 texel, FfxDofFloat3 color) { ffxDofRwHalfColor[texel] = float3(color); }
+void ffxDofStoreHalfCoc(FfxUInt32x2 texel, FfxFloat32 coc) { ffxDofRwHalfCoc[texel] = coc; }
+// `mip` 1 or more (ffxDofPackCoarseTexel).
+void ffxDofStoreCoarseMip(FfxUInt32 mip, FfxUInt32x2 texel, FfxUInt32x2 packed)
 {
-    float3 value = float3(color);
-    if (mip == 0u)
-        ffxDofColorMip0[texel] = value;
-#if FFX_DOF_OPTION_MAX_MIP > 1
-    else if (mip == 1u)
-        ffxDofColorMip1[texel] = value;
-#endif
-#if FFX_DOF_OPTION_MAX_MIP > 2
-    else if (mip == 2u)
-        ffxDofColorMip2[texel] = value;
-#endif
-#if FFX_DOF_OPTION_MAX_MIP > 3
-    else
-        ffxDofColorMip3[texel] = value;
-#endif
-}
-void ffxDofStoreCocMip(FfxUInt32 mip, FfxUInt32x2 texel, FfxFloat32 coc)
-{
-    if (mip == 0u)
-        ffxDofCocMip0[texel] = coc;
-#if FFX_DOF_OPTION_MAX_MIP > 1
-    else if (mip == 1u)
-        ffxDofCocMip1[texel] = coc;
-#endif
-#if FFX_DOF_OPTION_MAX_MIP > 2
-    else if (mip == 2u)
-        ffxDofCocMip2[texel] = coc;
-#endif
-#if FFX_DOF_OPTION_MAX_MIP > 3
-    else
-        ffxDofCocMip3[texel] = coc;
-#endif
-}
-// `mip` 1 or more (MIP 0 keeps no offset).
-void ffxDofStoreLightOffsetMip(FfxUInt32 mip, FfxUInt32x2 texel, FfxFloat32x2 offset)
-{
-    float2 value = offset * 2.0f;
 #if FFX_DOF_OPTION_MAX_MIP > 1
     if (mip == 1u)
-        ffxDofLightOffsetMip1[texel] = value;
+        ffxDofCoarseMip1[texel] = packed;
 #endif
 #if FFX_DOF_OPTION_MAX_MIP > 2
     if (mip == 2u)
-        ffxDofLightOffsetMip2[texel] = value;
+        ffxDofCoarseMip2[texel] = packed;
 #endif
 #if FFX_DOF_OPTION_MAX_MIP > 3
     if (mip == 3u)
-        ffxDofLightOffsetMip3[texel] = value;
+        ffxDofCoarseMip3[texel] = packed;
 #endif
 }
 #endif

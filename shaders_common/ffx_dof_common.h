@@ -19,8 +19,9 @@
 #ifndef FFX_DOF_OPTION_MAX_RINGS
 #define FFX_DOF_OPTION_MAX_RINGS 32
 #endif
-// Number of MIP levels of COLOR_MIPS / COC_MIPS that exist and may be sampled (1..4: a tile of
-// 8 x 8 half-res px reduces to 1 x 1 at level 3 inside one workgroup).
+// Number of MIP levels of the half-res colour and radius that exist and may be sampled: MIP 0
+// (HALF_COLOR, HALF_COC) and MIPs 1 .. MAX_MIP - 1 (COARSE_MIPS); 1..4: a tile of 8 x 8 half-res px
+// reduces to 1 x 1 at level 3 inside one workgroup.
 #ifndef FFX_DOF_OPTION_MAX_MIP
 #define FFX_DOF_OPTION_MAX_MIP 4
 #endif
@@ -104,6 +105,59 @@ FFX_DOF_INLINE FfxDofFloat3 ffxDofRoundForPackedColor(FfxDofFloat3 color)
     return FfxDofFloat3(FfxDofFloat(ffxDofRoundMantissa(FfxFloat32(color.x), 6u)),
                         FfxDofFloat(ffxDofRoundMantissa(FfxFloat32(color.y), 6u)),
                         FfxDofFloat(ffxDofRoundMantissa(FfxFloat32(color.z), 5u)));
+}
+
+// A texel of COARSE_MIPS (MIPs 1 to 3 of the half-res colour and radius): everything the blur reads of
+// a coarse sample in one 64-bit fetch (x: its colour as B10G11R11 float bits; y: its radius as a half
+// in bits 0..15, its light offset as two snorm8 in bits 16..31, twice the offset in its own texels).
+// On lavapipe every fetch of the blur's sample loop costs about as much as the rest of the sample: a
+// sample read from three images (colour, radius, light offset) made the blur up to 1.35 times as long
+// as one read from two (docs/performance.md, "Coarse texels in one fetch").
+// A B10G11R11 float is a half with its sign and low mantissa bits dropped, so the packing goes through
+// the half conversion: exact for the colours ffxDofRoundForPackedColor gives, rounded to nearest
+// otherwise, and clamped to the format's largest finite value (65024).
+FFX_DOF_INLINE FfxUInt32 ffxDofPackR11G11B10(FfxFloat32x3 color)
+{
+    FfxFloat32x3 clamped = clamp(color, FfxFloat32x3(0.0f, 0.0f, 0.0f), FfxFloat32x3(65024.0f, 65024.0f, 65024.0f));
+    FfxUInt32 redGreen = ffxDofPackHalf2(FfxFloat32x2(clamped.x, clamped.y));
+    FfxUInt32 blue = ffxDofPackHalf2(FfxFloat32x2(clamped.z, 0.0f));
+    // Sign bits dropped (a -0 from the clamp); a NaN becomes the largest finite value.
+    FfxUInt32 red = min(((redGreen & 0x7fffu) + 0x8u) >> 4u, 0x7bfu);
+    FfxUInt32 green = min((((redGreen >> 16u) & 0x7fffu) + 0x8u) >> 4u, 0x7bfu);
+    blue = min(((blue & 0x7fffu) + 0x10u) >> 5u, 0x3dfu);
+    return red | (green << 11u) | (blue << 22u);
+}
+FFX_DOF_INLINE FfxFloat32x3 ffxDofUnpackR11G11B10(FfxUInt32 bits)
+{
+    FfxFloat32x2 redGreen = ffxDofUnpackHalf2(((bits & 0x7ffu) << 4u) | (((bits >> 11u) & 0x7ffu) << 20u));
+    FfxFloat32 blue = ffxDofUnpackHalf2((bits >> 22u) << 5u).x;
+    return FfxFloat32x3(redGreen.x, redGreen.y, blue);
+}
+
+// A value in [-1, 1] as a snorm8 (round to nearest, as the UNORM/SNORM conversions of the APIs), in
+// the low byte; and back from the byte at bit `shift`.
+FFX_DOF_INLINE FfxUInt32 ffxDofPackSnorm8(FfxFloat32 value)
+{
+    return FfxUInt32(FfxInt32(floor(clamp(value, -1.0f, 1.0f) * 127.0f + 0.5f))) & 0xffu;
+}
+FFX_DOF_INLINE FfxFloat32 ffxDofUnpackSnorm8(FfxUInt32 bits, FfxUInt32 shift)
+{
+    FfxInt32 value = FfxInt32(bits << (24u - shift)) >> 24;
+    return max(FfxFloat32(value) * (1.0f / 127.0f), -1.0f);
+}
+
+FFX_DOF_INLINE FfxUInt32x2 ffxDofPackCoarseTexel(FfxFloat32x3 color, FfxFloat32 coc, FfxFloat32x2 lightOffset)
+{
+    FfxUInt32 cocBits = ffxDofPackHalf2(FfxFloat32x2(coc, 0.0f)) & 0xffffu;
+    FfxUInt32 offsetBits = ffxDofPackSnorm8(lightOffset.x * 2.0f) | (ffxDofPackSnorm8(lightOffset.y * 2.0f) << 8u);
+    return FfxUInt32x2(ffxDofPackR11G11B10(color), cocBits | (offsetBits << 16u));
+}
+FFX_DOF_INLINE FfxFloat32x3 ffxDofCoarseTexelColor(FfxUInt32x2 texel) { return ffxDofUnpackR11G11B10(texel.x); }
+FFX_DOF_INLINE FfxFloat32 ffxDofCoarseTexelCoc(FfxUInt32x2 texel) { return ffxDofUnpackHalf2(texel.y & 0xffffu).x; }
+// Where in the texel its light lies, in its own texels from its centre (ffxDofReduceLightOffset).
+FFX_DOF_INLINE FfxFloat32x2 ffxDofCoarseTexelLightOffset(FfxUInt32x2 texel)
+{
+    return FfxFloat32x2(ffxDofUnpackSnorm8(texel.y, 16u), ffxDofUnpackSnorm8(texel.y, 24u)) * 0.5f;
 }
 
 // ---- HDR range ---------------------------------------------------------------------------------

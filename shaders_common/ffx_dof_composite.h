@@ -36,10 +36,10 @@
 FfxDofConstants ffxDofGetConstants();
 FfxFloat32 ffxDofLoadInputDepth(FfxUInt32x2 pixel);
 FfxFloat32x4 ffxDofLoadInputColor(FfxUInt32x2 pixel);
-FfxDofFloat3 ffxDofLoadColorMip(FfxInt32x2 texel, FfxUInt32 mip);
+FfxDofFloat3 ffxDofLoadHalfColor(FfxInt32x2 texel);
 FfxFloat32x2 ffxDofLoadTile(FfxUInt32x2 tile);
 FfxFloat32x4 ffxDofLoadDilatedTile(FfxUInt32x2 tile);
-FfxFloat32 ffxDofLoadCocMip(FfxInt32x2 texel, FfxUInt32 mip);
+FfxFloat32 ffxDofLoadHalfCoc(FfxInt32x2 texel);
 FfxDofFloat3 ffxDofLoadNearColor(FfxInt32x2 texel);
 FfxDofFloat3 ffxDofLoadFarColor(FfxInt32x2 texel);
 FfxFloat32x2 ffxDofLoadLayerAlpha(FfxInt32x2 texel);
@@ -266,7 +266,7 @@ FFX_DOF_INLINE FfxFloat32x4 ffxDofCompositeInput(FfxUInt32x2 pixel, FfxUInt32x2 
     if (pixel.x >= tileOrigin.x && pixel.y >= tileOrigin.y && pixel.x < tileOrigin.x + extent &&
         pixel.y < tileOrigin.y + extent)
         return ffxDofSharedInput[(pixel.y - tileOrigin.y) * extent + pixel.x - tileOrigin.x];
-    FfxDofFloat3 color = ffxDofLoadColorMip(FfxInt32x2(pixel / 2u), 0u);
+    FfxDofFloat3 color = ffxDofLoadHalfColor(FfxInt32x2(pixel / 2u));
     return FfxFloat32x4(FfxFloat32(color.x), FfxFloat32(color.y), FfxFloat32(color.z), 1.0f);
 }
 #else
@@ -534,7 +534,7 @@ FFX_DOF_INLINE void ffxDofComposite(FfxUInt32x2 groupId, FfxUInt32 localIndex)
             ffxDofClampHalfTexel(filteredOrigin + FfxInt32x2(FfxInt32(index % FfxUInt32(FFX_DOF_FILTERED_SIDE)),
                                                              FfxInt32(index / FfxUInt32(FFX_DOF_FILTERED_SIDE))),
                                  constants.halfSize);
-        ffxDofSharedCoc[index] = ffxDofLoadCocMip(texel, 0u);
+        ffxDofSharedCoc[index] = ffxDofLoadHalfCoc(texel);
     }
     ffxDofGroupBarrier();
 

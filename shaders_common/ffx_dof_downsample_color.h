@@ -8,7 +8,8 @@
 // ffxDofLightRimCoc; 2,592 bytes), its 64 invocations make the 8 x 8 texels of MIP 0, then the group
 // reduces them in group-shared memory to 4 x 4, 2 x 2 and 1 x 1 (MIPs 1..3), so no global
 // synchronisation is needed. Every level uses ffxDofBilateralReduceLight, which also tells where in
-// each texel of MIPs 1..3 its light lies (LIGHT_OFFSETS, read by the blur).
+// each texel of MIPs 1..3 its light lies. MIP 0 goes to HALF_COLOR and HALF_COC; MIPs 1..3 go to
+// COARSE_MIPS, colour, radius and light offset packed in one texel (ffxDofPackCoarseTexel).
 #ifndef FFX_DOF_DOWNSAMPLE_COLOR_H
 #define FFX_DOF_DOWNSAMPLE_COLOR_H
 
@@ -19,9 +20,9 @@
 FfxDofConstants ffxDofGetConstants();
 FfxFloat32 ffxDofLoadInputDepth(FfxUInt32x2 pixel);
 FfxFloat32x4 ffxDofLoadInputColor(FfxUInt32x2 pixel);
-void ffxDofStoreColorMip(FfxUInt32 mip, FfxUInt32x2 texel, FfxDofFloat3 color);
-void ffxDofStoreCocMip(FfxUInt32 mip, FfxUInt32x2 texel, FfxFloat32 coc);
-void ffxDofStoreLightOffsetMip(FfxUInt32 mip, FfxUInt32x2 texel, FfxFloat32x2 offset);
+void ffxDofStoreHalfColor(FfxUInt32x2 texel, FfxDofFloat3 color);
+void ffxDofStoreHalfCoc(FfxUInt32x2 texel, FfxFloat32 coc);
+void ffxDofStoreCoarseMip(FfxUInt32 mip, FfxUInt32x2 texel, FfxUInt32x2 packed);
 FfxFloat32 ffxDofLoadColorPeak();
 void ffxDofStoreColorScale(FfxFloat32 scale);
 #endif
@@ -330,8 +331,8 @@ FFX_DOF_INLINE void ffxDofDownsampleColor(FfxUInt32x2 groupId, FfxUInt32 localIn
                                coc2, coc3, pixelOffset, pixelOffset, pixelOffset, pixelOffset, color, coc, lightOffset);
     if (texel.x < constants.halfSize.x && texel.y < constants.halfSize.y)
     {
-        ffxDofStoreColorMip(0u, texel, ffxDofRoundForPackedColor(color));
-        ffxDofStoreCocMip(0u, texel, coc);
+        ffxDofStoreHalfColor(texel, ffxDofRoundForPackedColor(color));
+        ffxDofStoreHalfCoc(texel, coc);
     }
     ffxDofSharedMipColor[localIndex] = color;
     ffxDofSharedMipCoc[localIndex] = coc;
@@ -364,9 +365,9 @@ FFX_DOF_INLINE void ffxDofDownsampleColor(FfxUInt32x2 groupId, FfxUInt32 localIn
             FfxUInt32x2 mipSize = ffxDofMipSize(constants.halfSize, mip);
             if (mipTexel.x < mipSize.x && mipTexel.y < mipSize.y)
             {
-                ffxDofStoreColorMip(mip, mipTexel, ffxDofRoundForPackedColor(color));
-                ffxDofStoreCocMip(mip, mipTexel, coc);
-                ffxDofStoreLightOffsetMip(mip, mipTexel, lightOffset);
+                ffxDofStoreCoarseMip(
+                    mip, mipTexel,
+                    ffxDofPackCoarseTexel(ffxDofToFloat32x3(ffxDofRoundForPackedColor(color)), coc, lightOffset));
             }
         }
     }

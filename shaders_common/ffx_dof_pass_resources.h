@@ -14,23 +14,23 @@
 #elif defined(FFX_DOF_PASS_DOWNSAMPLE_COLOR)
 #define FFX_DOF_USES_INPUT_COLOR 1
 #define FFX_DOF_USES_INPUT_DEPTH 1
-#define FFX_DOF_USES_RW_MIPS 1  // COLOR_MIPS, COC_MIPS and LIGHT_OFFSETS
+#define FFX_DOF_USES_RW_MIPS 1  // HALF_COLOR, HALF_COC and COARSE_MIPS
 #define FFX_DOF_USES_GLOBALS 1
 #elif defined(FFX_DOF_PASS_DILATE)
 #define FFX_DOF_USES_TILES 1
 #define FFX_DOF_USES_RW_DILATED_TILES 1
 #define FFX_DOF_USES_GLOBALS 1
 #elif defined(FFX_DOF_PASS_BLUR)
-#define FFX_DOF_USES_COLOR_MIPS 1
-#define FFX_DOF_USES_LIGHT_OFFSETS 1
-#define FFX_DOF_USES_COC_MIPS 1
+#define FFX_DOF_USES_HALF_COLOR 1
+#define FFX_DOF_USES_HALF_COC 1
+#define FFX_DOF_USES_COARSE_MIPS 1
 #define FFX_DOF_USES_DILATED_TILES 1
 #define FFX_DOF_USES_RW_LAYERS 1
 #define FFX_DOF_USES_GLOBALS 1
 #elif defined(FFX_DOF_PASS_COMPOSITE)
 #define FFX_DOF_USES_INPUT_COLOR 1
 #define FFX_DOF_USES_INPUT_DEPTH 1
-#define FFX_DOF_USES_COC_MIPS 1
+#define FFX_DOF_USES_HALF_COC 1
 #define FFX_DOF_USES_TILES 1
 #define FFX_DOF_USES_DILATED_TILES 1
 #define FFX_DOF_USES_LAYERS 1
@@ -39,7 +39,7 @@
 #if FFX_DOF_OPTION_OUTPUT_PRE_INIT
 // In place, the input pixels next to the tile are read from the half-res color (other workgroups
 // write the full-res ones during the pass); see ffx_dof_composite.h.
-#define FFX_DOF_USES_COLOR_MIPS 1
+#define FFX_DOF_USES_HALF_COLOR 1
 #endif
 #else
 #error "define one FFX_DOF_PASS_<NAME> before including a callback header"
@@ -51,14 +51,14 @@
 #ifndef FFX_DOF_USES_INPUT_DEPTH
 #define FFX_DOF_USES_INPUT_DEPTH 0
 #endif
-#ifndef FFX_DOF_USES_COLOR_MIPS
-#define FFX_DOF_USES_COLOR_MIPS 0
+#ifndef FFX_DOF_USES_HALF_COLOR
+#define FFX_DOF_USES_HALF_COLOR 0
 #endif
-#ifndef FFX_DOF_USES_LIGHT_OFFSETS
-#define FFX_DOF_USES_LIGHT_OFFSETS 0
+#ifndef FFX_DOF_USES_HALF_COC
+#define FFX_DOF_USES_HALF_COC 0
 #endif
-#ifndef FFX_DOF_USES_COC_MIPS
-#define FFX_DOF_USES_COC_MIPS 0
+#ifndef FFX_DOF_USES_COARSE_MIPS
+#define FFX_DOF_USES_COARSE_MIPS 0
 #endif
 #ifndef FFX_DOF_USES_TILES
 #define FFX_DOF_USES_TILES 0

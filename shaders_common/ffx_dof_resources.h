@@ -11,12 +11,12 @@
 //
 // Internal images (sizes at full resolution W x H; half = ceil(W/2) x ceil(H/2);
 // tiles = ceil(half / FFX_DOF_TILE_SIZE)); see docs/technique.md for who writes and reads each:
-//   COLOR_MIPS     half, FFX_DOF_OPTION_MAX_MIP levels, B10G11R11 float   bilateral color chain
-//   COC_MIPS       half, FFX_DOF_OPTION_MAX_MIP levels, R16 float         CoC chain, signed half-res px
-//   LIGHT_OFFSETS  quarter (MIP 1 of half), FFX_DOF_OPTION_MAX_MIP - 1 levels, R8G8 snorm: level l
-//                                            belongs to MIP l + 1 of COLOR_MIPS; where in the texel its
-//                                            light lies (luminance-weighted), twice the offset from its
-//                                            centre in its own texels (ffxDofReduceLightOffset)
+//   HALF_COLOR     half, B10G11R11 float     bilateral half-res color (MIP 0 of the color chain)
+//   HALF_COC       half, R16 float           its CoC, signed half-res px
+//   COARSE_MIPS    quarter (MIP 1 of half), FFX_DOF_OPTION_MAX_MIP - 1 levels, R32G32 uint: level l
+//                                            is MIP l + 1 of the chain, each texel its color, CoC and
+//                                            where in the texel its light lies (ffxDofPackCoarseTexel:
+//                                            the blur reads a coarse sample in one fetch)
 //   TILES          tiles, R16G16 float       (min, max) signed CoC per tile
 //   DILATED_TILES  tiles, R16G16B16A16 float dilated (far, near) radii per tile, and the (min, max)
 //                                            radius of the tiles its blur kernels read
@@ -50,33 +50,27 @@
 // Sampled textures
 #define FFX_DOF_SRV_INPUT_COLOR 0
 #define FFX_DOF_SRV_INPUT_DEPTH 1
-#define FFX_DOF_SRV_COLOR_MIPS 2
-#define FFX_DOF_SRV_COC_MIPS 3
+#define FFX_DOF_SRV_HALF_COLOR 2
+#define FFX_DOF_SRV_HALF_COC 3
 #define FFX_DOF_SRV_TILES 4
 #define FFX_DOF_SRV_DILATED_TILES 5
 #define FFX_DOF_SRV_NEAR_COLOR 6
 #define FFX_DOF_SRV_FAR_COLOR 7
 #define FFX_DOF_SRV_LAYER_ALPHA 8
-#define FFX_DOF_SRV_LIGHT_OFFSETS 9
+#define FFX_DOF_SRV_COARSE_MIPS 9
 
 // Storage images (one slot per MIP level written)
-#define FFX_DOF_UAV_COLOR_MIP0 0
-#define FFX_DOF_UAV_COLOR_MIP1 1
-#define FFX_DOF_UAV_COLOR_MIP2 2
-#define FFX_DOF_UAV_COLOR_MIP3 3
-#define FFX_DOF_UAV_COC_MIP0 4
-#define FFX_DOF_UAV_COC_MIP1 5
-#define FFX_DOF_UAV_COC_MIP2 6
-#define FFX_DOF_UAV_COC_MIP3 7
-#define FFX_DOF_UAV_TILES 8
-#define FFX_DOF_UAV_DILATED_TILES 9
-#define FFX_DOF_UAV_NEAR_COLOR 10
-#define FFX_DOF_UAV_FAR_COLOR 11
-#define FFX_DOF_UAV_LAYER_ALPHA 12
-#define FFX_DOF_UAV_OUTPUT 13
-#define FFX_DOF_UAV_LIGHT_OFFSET_MIP1 14  // level 0 of LIGHT_OFFSETS
-#define FFX_DOF_UAV_LIGHT_OFFSET_MIP2 15
-#define FFX_DOF_UAV_LIGHT_OFFSET_MIP3 16
+#define FFX_DOF_UAV_HALF_COLOR 0
+#define FFX_DOF_UAV_HALF_COC 1
+#define FFX_DOF_UAV_COARSE_MIP1 2  // level 0 of COARSE_MIPS
+#define FFX_DOF_UAV_COARSE_MIP2 3
+#define FFX_DOF_UAV_COARSE_MIP3 4
+#define FFX_DOF_UAV_TILES 5
+#define FFX_DOF_UAV_DILATED_TILES 6
+#define FFX_DOF_UAV_NEAR_COLOR 7
+#define FFX_DOF_UAV_FAR_COLOR 8
+#define FFX_DOF_UAV_LAYER_ALPHA 9
+#define FFX_DOF_UAV_OUTPUT 10
 
 // Storage buffers
 #define FFX_DOF_UAV_BUFFER_GLOBALS 0

@@ -18,12 +18,20 @@ struct PassGrid {
     uint32_t x = 1, y = 1, z = 1;  // workgroup counts
 };
 
-// Number of MIP levels of COLOR_MIPS / COC_MIPS the SDK allocates (FFX_DOF_OPTION_MAX_MIP).
+// Number of MIP levels of the half-res colour and CoC the SDK allocates (FFX_DOF_OPTION_MAX_MIP): MIP 0
+// in HALF_COLOR and HALF_COC, the others in COARSE_MIPS.
 constexpr uint32_t kMipCount = 4;
 
 // The internal images, API-neutral: the one table both backends create from (each maps the format
 // to its API's enum). Names, formats and slots follow shaders_common/ffx_dof_resources.h.
-enum class InternalFormat : uint32_t { R11G11B10Float, R16Float, R16G16Float, R16G16B16A16Float, R8G8Unorm, R8G8Snorm };
+enum class InternalFormat : uint32_t {
+    R11G11B10Float,
+    R16Float,
+    R16G16Float,
+    R16G16B16A16Float,
+    R8G8Unorm,
+    R32G32Uint
+};
 
 enum class ImageExtent : uint32_t {
     Half,     // ceil(W / 2) x ceil(H / 2)
@@ -41,12 +49,12 @@ struct InternalImageSpec {
 };
 
 constexpr InternalImageSpec kInternalImages[] = {
-    {"COLOR_MIPS", InternalFormat::R11G11B10Float, ImageExtent::Half, kMipCount, FFX_DOF_SRV_COLOR_MIPS,
-     FFX_DOF_UAV_COLOR_MIP0},
-    {"COC_MIPS", InternalFormat::R16Float, ImageExtent::Half, kMipCount, FFX_DOF_SRV_COC_MIPS, FFX_DOF_UAV_COC_MIP0},
-    // MIPs 1.. of COLOR_MIPS, level for level.
-    {"LIGHT_OFFSETS", InternalFormat::R8G8Snorm, ImageExtent::Quarter, kMipCount - 1, FFX_DOF_SRV_LIGHT_OFFSETS,
-     FFX_DOF_UAV_LIGHT_OFFSET_MIP1},
+    {"HALF_COLOR", InternalFormat::R11G11B10Float, ImageExtent::Half, 1, FFX_DOF_SRV_HALF_COLOR,
+     FFX_DOF_UAV_HALF_COLOR},
+    {"HALF_COC", InternalFormat::R16Float, ImageExtent::Half, 1, FFX_DOF_SRV_HALF_COC, FFX_DOF_UAV_HALF_COC},
+    // MIPs 1.. of the half-res colour and CoC, packed with their light offsets (ffxDofPackCoarseTexel).
+    {"COARSE_MIPS", InternalFormat::R32G32Uint, ImageExtent::Quarter, kMipCount - 1, FFX_DOF_SRV_COARSE_MIPS,
+     FFX_DOF_UAV_COARSE_MIP1},
     {"TILES", InternalFormat::R16G16Float, ImageExtent::Tiles, 1, FFX_DOF_SRV_TILES, FFX_DOF_UAV_TILES},
     {"DILATED_TILES", InternalFormat::R16G16B16A16Float, ImageExtent::Tiles, 1, FFX_DOF_SRV_DILATED_TILES,
      FFX_DOF_UAV_DILATED_TILES},
@@ -58,8 +66,8 @@ constexpr InternalImageSpec kInternalImages[] = {
 constexpr uint32_t kInternalImageCount = sizeof(kInternalImages) / sizeof(kInternalImages[0]);
 
 // Shader slots per class (ffx_dof_resources.h): sampled images, storage images, storage buffers.
-constexpr uint32_t kSampledSlotCount = FFX_DOF_SRV_LIGHT_OFFSETS + 1;
-constexpr uint32_t kStorageImageSlotCount = FFX_DOF_UAV_LIGHT_OFFSET_MIP3 + 1;
+constexpr uint32_t kSampledSlotCount = FFX_DOF_SRV_COARSE_MIPS + 1;
+constexpr uint32_t kStorageImageSlotCount = FFX_DOF_UAV_OUTPUT + 1;
 constexpr uint32_t kStorageBufferSlotCount = FFX_DOF_UAV_BUFFER_GLOBALS + 1;
 
 // The GLOBALS storage buffer (FFX_DOF_UAV_BUFFER_GLOBALS): 32-bit words.

@@ -44,27 +44,16 @@ struct ShaderImage {
 };
 
 const ShaderImage kStorageImages[] = {
-    {"ffxDofColorMip0", "COLOR_MIPS", 0},
-    {"ffxDofColorMip1", "COLOR_MIPS", 1},
-    {"ffxDofColorMip2", "COLOR_MIPS", 2},
-    {"ffxDofColorMip3", "COLOR_MIPS", 3},
-    {"ffxDofCocMip0", "COC_MIPS", 0},
-    {"ffxDofCocMip1", "COC_MIPS", 1},
-    {"ffxDofCocMip2", "COC_MIPS", 2},
-    {"ffxDofCocMip3", "COC_MIPS", 3},
-    {"ffxDofLightOffsetMip1", "LIGHT_OFFSETS", 0},
-    {"ffxDofLightOffsetMip2", "LIGHT_OFFSETS", 1},
-    {"ffxDofLightOffsetMip3", "LIGHT_OFFSETS", 2},
-    {"ffxDofRwTiles", "TILES", 0},
-    {"ffxDofRwDilatedTiles", "DILATED_TILES", 0},
-    {"ffxDofRwNearColor", "NEAR_COLOR", 0},
-    {"ffxDofRwFarColor", "FAR_COLOR", 0},
-    {"ffxDofRwLayerAlpha", "LAYER_ALPHA", 0},
+    {"ffxDofRwHalfColor", "HALF_COLOR", 0},       {"ffxDofRwHalfCoc", "HALF_COC", 0},
+    {"ffxDofCoarseMip1", "COARSE_MIPS", 0},       {"ffxDofCoarseMip2", "COARSE_MIPS", 1},
+    {"ffxDofCoarseMip3", "COARSE_MIPS", 2},       {"ffxDofRwTiles", "TILES", 0},
+    {"ffxDofRwDilatedTiles", "DILATED_TILES", 0}, {"ffxDofRwNearColor", "NEAR_COLOR", 0},
+    {"ffxDofRwFarColor", "FAR_COLOR", 0},         {"ffxDofRwLayerAlpha", "LAYER_ALPHA", 0},
 };
 
 const ShaderImage kSampledImages[] = {
-    {"ffxDofColorMips", "COLOR_MIPS", 0},       {"ffxDofCocMips", "COC_MIPS", 0},
-    {"ffxDofLightOffsets", "LIGHT_OFFSETS", 0}, {"ffxDofTiles", "TILES", 0},
+    {"ffxDofHalfColor", "HALF_COLOR", 0},       {"ffxDofHalfCoc", "HALF_COC", 0},
+    {"ffxDofCoarseMips", "COARSE_MIPS", 0},     {"ffxDofTiles", "TILES", 0},
     {"ffxDofDilatedTiles", "DILATED_TILES", 0}, {"ffxDofNearColor", "NEAR_COLOR", 0},
     {"ffxDofFarColor", "FAR_COLOR", 0},         {"ffxDofLayerAlpha", "LAYER_ALPHA", 0},
 };
@@ -74,7 +63,7 @@ const std::set<std::string> kEngineStorageImages = {"ffxDofOutput"};
 const std::set<std::string> kEngineSampledImages = {"ffxDofInputColor", "ffxDofInputDepth"};
 
 const char* const kFormatNames[] = {"R11G11B10Float",    "R16Float",  "R16G16Float",
-                                    "R16G16B16A16Float", "R8G8Unorm", "R8G8Snorm"};
+                                    "R16G16B16A16Float", "R8G8Unorm", "R32G32Uint"};
 
 SpvImageFormat spirvFormat(InternalFormat format) {
     switch (format) {
@@ -88,8 +77,8 @@ SpvImageFormat spirvFormat(InternalFormat format) {
             return SpvImageFormatRgba16f;
         case InternalFormat::R8G8Unorm:
             return SpvImageFormatRg8;
-        case InternalFormat::R8G8Snorm:
-            return SpvImageFormatRg8Snorm;
+        case InternalFormat::R32G32Uint:
+            return SpvImageFormatRg32ui;
     }
     FAIL("unknown InternalFormat " << uint32_t(format));
     return SpvImageFormatUnknown;
@@ -110,8 +99,8 @@ std::string spirvFormatName(SpvImageFormat format) {
             return "Rgba16f";
         case SpvImageFormatRg8:
             return "Rg8";
-        case SpvImageFormatRg8Snorm:
-            return "Rg8Snorm";
+        case SpvImageFormatRg32ui:
+            return "Rg32ui";
         default:
             return "ImageFormat " + std::to_string(uint32_t(format));
     }
@@ -291,7 +280,7 @@ TEST_CASE("HLSL storage images have the C++ slot of their internal image and no 
 TEST_CASE("kMipCount is FFX_DOF_OPTION_MAX_MIP, the levels the shaders declare", "[formats]") {
     CHECK(kMipCount == uint32_t(FFX_DOF_OPTION_MAX_MIP));  // also a static_assert above
     const Coverage coverage = checkTables(shaders::glsl::kPassTables, shaders::glsl::kPassTableCount, true);
-    CHECK(coverage.levelsDeclared.at("COLOR_MIPS") == kMipCount);
-    CHECK(coverage.levelsDeclared.at("COC_MIPS") == kMipCount);
-    CHECK(coverage.levelsDeclared.at("LIGHT_OFFSETS") == kMipCount - 1);  // MIPs 1..
+    CHECK(coverage.levelsDeclared.at("HALF_COLOR") == 1);
+    CHECK(coverage.levelsDeclared.at("HALF_COC") == 1);
+    CHECK(coverage.levelsDeclared.at("COARSE_MIPS") == kMipCount - 1);  // MIPs 1..
 }

@@ -982,3 +982,68 @@ TEST_CASE("Scaling into the range and back is exact for power-of-two scales", "[
     CHECK(ffxDofScaleChannel(std::numeric_limits<float>::infinity(), 1.0f) == FFX_DOF_FLOAT16_MAX);
     CHECK(std::isfinite(ffxDofUnscaleColor(FfxFloat32x4(4096.0f), std::ldexp(1.0f, -126)).x));
 }
+
+TEST_CASE("Coarse texels: the colour's B10G11R11 bits are the format's own", "[storage]") {
+    // Every finite value of each channel's format (5 exponent bits, bias 15, 6 or 5 mantissa bits,
+    // denormals below 2^-14): unpacked exactly, and packed back to the same bits.
+    const auto unsignedFloat = [](uint32_t bits, uint32_t mantissaBits) {
+        const uint32_t exponent = bits >> mantissaBits, mantissa = bits & ((1u << mantissaBits) - 1u);
+        const float fraction = float(mantissa) / float(1u << mantissaBits);
+        return exponent == 0 ? std::ldexp(fraction, -14) : std::ldexp(1.0f + fraction, int(exponent) - 15);
+    };
+    for (uint32_t bits = 0; bits < 0x7c0u; ++bits) {
+        const glm::vec3 expected(unsignedFloat(bits, 6), unsignedFloat(bits, 6), unsignedFloat(bits >> 1u, 5));
+        const uint32_t packed = bits | (bits << 11u) | ((bits >> 1u) << 22u);
+        const FfxFloat32x3 color = ffxDofUnpackR11G11B10(packed);
+        REQUIRE(color.x == expected.x);
+        REQUIRE(color.y == expected.y);
+        REQUIRE(color.z == expected.z);
+        REQUIRE(ffxDofPackR11G11B10(color) == packed);
+    }
+    // Colours rounded for the packed formats (what pass 2 stores) pack exactly.
+    std::mt19937 rng(11);
+    std::uniform_real_distribution<float> exponent(-16.0f, 15.9f);
+    for (int i = 0; i < 5000; ++i) {
+        const FfxDofFloat3 color = ffxDofRoundForPackedColor(FfxDofFloat3(FfxDofFloat(std::exp2(exponent(rng))),
+                                                                          FfxDofFloat(std::exp2(exponent(rng))),
+                                                                          FfxDofFloat(std::exp2(exponent(rng)))));
+        const FfxFloat32x3 back = ffxDofUnpackR11G11B10(ffxDofPackR11G11B10(ffxDofToFloat32x3(color)));
+        REQUIRE(back.x == Approx(float(color.x)).epsilon(1.0 / 64).margin(1e-6));
+        REQUIRE(back.y == Approx(float(color.y)).epsilon(1.0 / 64).margin(1e-6));
+        REQUIRE(back.z == Approx(float(color.z)).epsilon(1.0 / 32).margin(1e-6));
+        if (color.x >= 0.00006103515625f) REQUIRE(back.x == float(color.x));  // normal: exact
+    }
+    // Out of range: negative and -0 give 0 (no bit of a neighbouring channel), too large the largest finite.
+    CHECK(ffxDofPackR11G11B10(FfxFloat32x3(-1.0f, -0.0f, -5.0f)) == 0u);
+    const FfxFloat32x3 largest = ffxDofUnpackR11G11B10(ffxDofPackR11G11B10(FfxFloat32x3(1e9f, 70000.0f, 1e9f)));
+    CHECK(largest.x == 65024.0f);
+    CHECK(largest.y == 65024.0f);
+    CHECK(largest.z == 64512.0f);
+}
+
+TEST_CASE("Coarse texels: radius as a half and light offset as two snorm8, independent of the colour", "[storage]") {
+    // snorm8 as the APIs convert: round(clamp(v) * 127), and -128 reads as -1.
+    for (int q = -128; q <= 127; ++q) {
+        const float value = ffxDofUnpackSnorm8(uint32_t(q) & 0xffu, 0u);
+        REQUIRE(value == Approx(std::max(float(q) / 127.0f, -1.0f)).epsilon(1e-6));
+        if (q > -128) REQUIRE(ffxDofPackSnorm8(value) == (uint32_t(q) & 0xffu));
+    }
+    CHECK(ffxDofPackSnorm8(2.0f) == 127u);
+    CHECK(ffxDofPackSnorm8(-2.0f) == 0x81u);
+    std::mt19937 rng(13);
+    std::uniform_real_distribution<float> offset(-0.5f, 0.5f);
+    std::uniform_real_distribution<float> coc(-64.0f, 64.0f);
+    for (int i = 0; i < 2000; ++i) {
+        const FfxFloat32x3 color(0.5f, 2.0f, 0.25f);
+        const FfxFloat32x2 light(offset(rng), offset(rng));
+        const float radius = coc(rng);
+        const FfxUInt32x2 texel = ffxDofPackCoarseTexel(color, radius, light);
+        REQUIRE(ffxDofCoarseTexelCoc(texel) == glm::unpackHalf2x16(glm::packHalf2x16(glm::vec2(radius, 0.0f))).x);
+        const FfxFloat32x2 back = ffxDofCoarseTexelLightOffset(texel);
+        // Twice the offset in 8 bits: within half a step of 1/127, halved.
+        REQUIRE(std::fabs(back.x - light.x) <= 0.5f / 254.0f + 1e-6f);
+        REQUIRE(std::fabs(back.y - light.y) <= 0.5f / 254.0f + 1e-6f);
+        const FfxFloat32x3 backColor = ffxDofCoarseTexelColor(texel);
+        REQUIRE((backColor.x == 0.5f && backColor.y == 2.0f && backColor.z == 0.25f));
+    }
+}

@@ -41,9 +41,9 @@ struct Image {
 struct State {
     FfxDofConstants constants{};
     const ffxdoftest::Scene* scene = nullptr;
-    Image<glm::vec3> colorMips[FFX_DOF_OPTION_MAX_MIP];
-    Image<float> cocMips[FFX_DOF_OPTION_MAX_MIP];
-    Image<glm::vec2> lightOffsetMips[FFX_DOF_OPTION_MAX_MIP];  // LIGHT_OFFSETS, by COLOR_MIPS level (0 unused)
+    Image<glm::vec3> halfColor;
+    Image<float> halfCoc;
+    Image<glm::uvec2> coarseMips[FFX_DOF_OPTION_MAX_MIP];  // COARSE_MIPS, by MIP of the half-res chain (0 unused)
     Image<glm::vec2> tiles, layerAlpha;
     Image<glm::vec4> dilatedTiles;
     Image<glm::vec3> nearColor, farColor;
@@ -181,22 +181,21 @@ FfxFloat32x2 ffxDofLoadFocusCocLine() {
     return {ffxDofAsFloat(g_state->globals[FFX_DOF_GLOBALS_FOCUS_COC_SCALE].load()),
             ffxDofAsFloat(g_state->globals[FFX_DOF_GLOBALS_FOCUS_COC_BIAS].load())};
 }
-void ffxDofStoreColorMip(FfxUInt32 mip, FfxUInt32x2 t, FfxDofFloat3 c) { g_state->colorMips[mip].store(t.x, t.y, c); }
-void ffxDofStoreCocMip(FfxUInt32 mip, FfxUInt32x2 t, FfxFloat32 c) { g_state->cocMips[mip].store(t.x, t.y, c); }
-void ffxDofStoreLightOffsetMip(FfxUInt32 mip, FfxUInt32x2 t, FfxFloat32x2 offset) {
-    // LIGHT_OFFSETS is R8G8 SNORM holding twice the offset: within half a texel, rounded as the GPU does.
-    if (mip == 0 || std::abs(offset.x) > 0.5f || std::abs(offset.y) > 0.5f) throw std::range_error("light offset");
-    g_state->lightOffsetMips[mip].store(t.x, t.y, glm::round(offset * 254.0f) / 254.0f);
+void ffxDofStoreHalfColor(FfxUInt32x2 t, FfxDofFloat3 c) { g_state->halfColor.store(t.x, t.y, c); }
+void ffxDofStoreHalfCoc(FfxUInt32x2 t, FfxFloat32 c) { g_state->halfCoc.store(t.x, t.y, c); }
+void ffxDofStoreCoarseMip(FfxUInt32 mip, FfxUInt32x2 t, FfxUInt32x2 packed) {
+    if (mip == 0) throw std::out_of_range("COARSE_MIPS has no MIP 0");
+    g_state->coarseMips[mip].store(t.x, t.y, packed);
 }
 FfxFloat32 ffxDofLoadGlobalMaxRadius() { return ffxDofAsFloat(g_state->globals[FFX_DOF_GLOBALS_MAX_RADIUS].load()); }
 FfxFloat32x2 ffxDofLoadTile(FfxUInt32x2 t) { return g_state->tiles.at(int32_t(t.x), int32_t(t.y)); }
 void ffxDofStoreDilatedTile(FfxUInt32x2 t, FfxFloat32x4 v) { g_state->dilatedTiles.store(t.x, t.y, v); }
 FfxFloat32x4 ffxDofLoadDilatedTile(FfxUInt32x2 t) { return g_state->dilatedTiles.at(int32_t(t.x), int32_t(t.y)); }
-FfxDofFloat3 ffxDofLoadColorMip(FfxInt32x2 t, FfxUInt32 mip) { return g_state->colorMips[mip].at(t.x, t.y); }
-FfxFloat32 ffxDofLoadCocMip(FfxInt32x2 t, FfxUInt32 mip) { return g_state->cocMips[mip].at(t.x, t.y); }
-FfxFloat32x2 ffxDofLoadLightOffsetMip(FfxInt32x2 t, FfxUInt32 mip) {
-    if (mip == 0) throw std::out_of_range("LIGHT_OFFSETS has no MIP 0");
-    return g_state->lightOffsetMips[mip].at(t.x, t.y);
+FfxDofFloat3 ffxDofLoadHalfColor(FfxInt32x2 t) { return g_state->halfColor.at(t.x, t.y); }
+FfxFloat32 ffxDofLoadHalfCoc(FfxInt32x2 t) { return g_state->halfCoc.at(t.x, t.y); }
+FfxUInt32x2 ffxDofLoadCoarseMip(FfxInt32x2 t, FfxUInt32 mip) {
+    if (mip == 0) throw std::out_of_range("COARSE_MIPS has no MIP 0");
+    return g_state->coarseMips[mip].at(t.x, t.y);
 }
 void ffxDofStoreNearColor(FfxUInt32x2 t, FfxDofFloat3 c) { g_state->nearColor.store(t.x, t.y, c); }
 void ffxDofStoreFarColor(FfxUInt32x2 t, FfxDofFloat3 c) { g_state->farColor.store(t.x, t.y, c); }
@@ -228,11 +227,11 @@ std::vector<glm::vec4> runPipeline(const Scene& scene, const Settings& settings,
     ffxdof::setApertureConstants(settings.aperture, &k);
     k.frameIndex = settings.frameIndex;
     k.outputFlags = 0;
-    for (uint32_t mip = 0; mip < FFX_DOF_OPTION_MAX_MIP; ++mip) {
+    state.halfColor.resize(k.halfSize.x, k.halfSize.y);
+    state.halfCoc.resize(k.halfSize.x, k.halfSize.y);
+    for (uint32_t mip = 1; mip < FFX_DOF_OPTION_MAX_MIP; ++mip) {
         FfxUInt32x2 size = ffxDofMipSize(k.halfSize, mip);
-        state.colorMips[mip].resize(size.x, size.y);
-        state.cocMips[mip].resize(size.x, size.y);
-        if (mip > 0) state.lightOffsetMips[mip].resize(size.x, size.y);
+        state.coarseMips[mip].resize(size.x, size.y);
     }
     state.tiles.resize(k.tileCount.x, k.tileCount.y);
     state.dilatedTiles.resize(k.tileCount.x, k.tileCount.y);
@@ -274,7 +273,7 @@ std::vector<glm::vec4> runPipeline(const Scene& scene, const Settings& settings,
         layers->tileClasses.clear();
         for (const glm::vec4& dilated : state.dilatedTiles.texels)
             layers->tileClasses.push_back(ffxDofClassifyTile(dilated));
-        layers->coc0 = state.cocMips[0].texels;
+        layers->coc0 = state.halfCoc.texels;
         layers->nearColor = state.nearColor.texels;
         layers->farColor = state.farColor.texels;
         layers->layerAlpha = state.layerAlpha.texels;

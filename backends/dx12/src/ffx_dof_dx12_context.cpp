@@ -26,8 +26,8 @@ constexpr DXGI_FORMAT toDxgiFormat(InternalFormat format) {
             return DXGI_FORMAT_R16G16B16A16_FLOAT;
         case InternalFormat::R8G8Unorm:
             return DXGI_FORMAT_R8G8_UNORM;
-        case InternalFormat::R8G8Snorm:
-            return DXGI_FORMAT_R8G8_SNORM;
+        case InternalFormat::R32G32Uint:
+            return DXGI_FORMAT_R32G32_UINT;
     }
     return DXGI_FORMAT_UNKNOWN;
 }

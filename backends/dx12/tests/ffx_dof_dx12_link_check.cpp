@@ -60,7 +60,7 @@ constexpr bool formatRulesAreUnique() {
 static_assert(formatRulesAreUnique());
 
 // The descriptor table covers t0..t9, u0..u16 and the GLOBALS buffer, and nothing overlaps.
-static_assert(ffxdof::dx12::kDescriptorsPerDispatch == 10 + 17 + 1);
+static_assert(ffxdof::dx12::kDescriptorsPerDispatch == 10 + 11 + 1);
 // FfxDofConstants as root constants: 30 DWORDs of the 64 a root signature holds.
 static_assert(ffxdof::dx12::kRootConstantCount == 30);
 
