@@ -244,7 +244,7 @@ void writeSmallLights(std::ostream& md, vkrun::Device& device) {
           "from its place (its disc about the coarse texel's centre: no texel of the light's own size carries "
           "it). Since 2026-11-28 the smallest radius must span two coarse texels "
           "(`FFX_DOF_RING_MERGE_MIN_RADIUS_TEXELS`, docs/technique.md): discs moved by up to 2.12 px then. Since "
-          "a coarse texel's light is drawn about where it lies in the texel (LIGHT_OFFSETS, docs/technique.md "
+          "a coarse texel's light is drawn about where it lies in the texel (its light offset, docs/technique.md "
           "\"Light offsets\"), the disc-shift column is what remains.\n\n";
 }
 
@@ -258,14 +258,21 @@ void writeLightPairs(std::ostream& md, vkrun::Device& device) {
           "adds to the input; beside: the same with the bright light in both images (gate: both within 5%).\n\n"
        << "| dim radius (px) | distance (px) | ring merging | alone | beside the bright light | result |\n"
           "|---:|---:|---|---:|---:|---|\n";
+    // Ranges of "beside": apart (the discs do not meet: 24 px and more), by ring merging, and overlapping.
+    struct Range {
+        double low = 1e9, high = -1e9;
+        void add(double value) { low = std::min(low, value), high = std::max(high, value); }
+        bool within5() const { return low >= 0.95 && high <= 1.05; }
+        std::string text() const { return number(low, "%.2f") + " to " + number(high, "%.2f"); }
+    };
+    Range apartMerged, apartUnmerged, overlapping;
     size_t within = 0;
-    double mergedLow = 1e9, mergedHigh = -1e9;
     for (const quality::LightPairCase& pair : cases) {
         within += pair.energyOk();
-        if (pair.ringMerge) {
-            mergedLow = std::min(mergedLow, pair.besideRatio);
-            mergedHigh = std::max(mergedHigh, pair.besideRatio);
-        }
+        if (pair.distance < 24)
+            overlapping.add(pair.besideRatio);
+        else
+            (pair.ringMerge ? apartMerged : apartUnmerged).add(pair.besideRatio);
         md << "| " << number(pair.dimRadius, "%g") << " | " << pair.distance << " | " << (pair.ringMerge ? "on" : "off")
            << " | " << number(pair.aloneRatio, "%.3f") << " | " << number(pair.besideRatio, "%.3f") << " | "
            << (pair.energyOk() ? "pass" : "**known failure**") << " |\n";
@@ -275,16 +282,22 @@ void writeLightPairs(std::ostream& md, vkrun::Device& device) {
        << " cases pass (`quality: small lights: a dim light beside a bright one adds its energy within 5%, and no "
           "fewer cases than measured`, a ratchet). Each light alone keeps its energy, so a shortfall beside the "
           "bright light is a change in how one of the two is drawn while the other is there (in the mid-lights "
-          "scene, the bright light's disc loses light: next section). With ring merging off, nothing changes from "
-          "24 px on; with it on, the change does not need the discs to meet. The likely path (not isolated yet): "
-          "the texels around the bright light read the dim light's radius in their kernels, from which each "
-          "decides how much its rings merge (`ffxDofMergedRingsResolve`, the merge amount), and the merged and "
-          "the unmerged texels draw the bright disc differently. Until 2026-11-28 merged texels drew it about "
-          "coarse texel centres and the dim light lost 7 to 19% beside it; since they draw a texel's light where "
-          "it lies (LIGHT_OFFSETS) and the rim inset is a whole texel, it keeps "
-       << number(mergedLow, "%.2f") << " to " << number(mergedHigh, "%.2f")
-       << " with merging (a half-texel inset gave 1.23 to 1.49), in every case about 1% of the bright light's "
-          "energy or less. Where the discs overlap most (16 px) the change happens without merging too.\n\n";
+          "scene, the bright light's disc loses light: next section). Where the discs do not meet (24 px and "
+          "more) the dim light keeps "
+       << apartMerged.text() << " with ring merging and " << apartUnmerged.text()
+       << " without; where they overlap most (16 px), " << overlapping.text() << ". ";
+    if (apartMerged.within5())
+        md << "So merging no longer changes what a light a disc away keeps. ";
+    else
+        md << "With merging the change does not need the discs to meet. ";
+    md << "History: the texels around the bright light read the dim light's radius in their kernels, from which "
+          "each decides how much its rings merge (`ffxDofMergedRingsResolve`, the merge amount), and merged and "
+          "unmerged texels drew the bright disc differently. Until 2026-11-28 merged texels drew it about coarse "
+          "texel centres and the dim light lost 7 to 19% beside it from 24 px on; drawn where a texel's light "
+          "lies (its light offset), 0.93 to 0.95 (1.23 to 1.49 with a half-texel rim inset); since the coarse "
+          "levels are packed in one texel (COARSE_MIPS, docs/technique.md) the figures above. What in that "
+          "change moved them is not isolated: the coarse radius is now rounded to a half by the shader's own "
+          "conversion instead of the image store's, and the offsets to snorm8 likewise.\n\n";
 }
 
 // Issue 17's light-kept gate in the mid-lights scene itself (tests/quality/test_small_lights.cpp).
@@ -357,7 +370,7 @@ void writeSceneLights(std::ostream& md, vkrun::Device& device) {
           "pixels at the light's depth, does not have. Since 2026-11-28 such a rim takes the light's radius in the "
           "downsample (docs/technique.md, light rims): 3 lights passed before, light 3 added 1.24 times its "
           "energy, and the scene gained 3.0 dB against the truth. Since a coarse texel's light is drawn about "
-          "where it lies in the texel (LIGHT_OFFSETS, docs/technique.md) the scene gained 4.6 dB more (23.71 -> "
+          "where it lies in the texel (its light offset, docs/technique.md) the scene gained 4.6 dB more (23.71 -> "
           "28.29), and light 2, which changed light 3's disc by -1191 while it was there, changes it less. The "
           "worst figure now is light "
        << worst->emitter << "'s (" << (worst->float32 ? "32" : "16") << "-bit: " << number(worst->energyRatio(), "%.3f")

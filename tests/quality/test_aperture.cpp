@@ -50,7 +50,7 @@ void checkPoint(const std::string& name) {
 // centre of the MIP-1 texel that held it, 1 full-res px further in x and in y, so the circle's, the
 // hexagon's and the anamorphic disc lay 1.4 to 1.6 px from the truth's and the anamorphic disc's IoU was
 // 0.88 (known failures until 2026-11-28). A coarse texel's light is now drawn about where it lies in the
-// texel (LIGHT_OFFSETS, docs/technique.md "Light offsets"): 0.05 px for the circle.
+// texel (its light offset, docs/technique.md "Light offsets"): 0.05 px for the circle.
 TEST_CASE("aperture point circle-far: position, overlap and area against the truth", "[quality][vulkan][aperture]") {
     checkPoint("circle-far");
 }

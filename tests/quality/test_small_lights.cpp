@@ -15,7 +15,7 @@ TEST_CASE(
     "small lights: the energy a light adds within 5% of what it adds to the input, and its centre within 20% "
     "of the truth's, radii 6 to 28 px",
     "[quality][vulkan][lights]") {
-    // Every case, since a coarse texel's light is drawn about where it lies in the texel (LIGHT_OFFSETS,
+    // Every case, since a coarse texel's light is drawn about where it lies in the texel (its light offset,
     // docs/technique.md "Light offsets"): 0.95 to 1.03 (docs/quality.md, small lights). Drawn about the
     // coarse texel's centre, one case of 240 failed (a 7 px light at radius 6 px, 16-bit, offset (6, 5): 1.051).
     quality::validatedDevice().clearValidationMessages();
@@ -32,7 +32,7 @@ TEST_CASE(
 // Issue 17: "for every light, the energy it adds ... within 5%", in the scene itself (docs/quality.md,
 // "lights of the mid-lights scene"). Measured 2026-11-28: 7 of 14 lights pass since rings merge only where the
 // smallest radius spans two coarse texels (5 with one texel, 3 before the light rims). Since a coarse texel's light
-// is drawn about where it lies in the texel (LIGHT_OFFSETS) light 2 keeps 1.01 within its own disc and 0.91 over the
+// is drawn about where it lies in the texel (its light offset) light 2 keeps 1.01 within its own disc and 0.91 over the
 // frame (-1.62 before: it changes light 3's disc less); light 0 (3 px) keeps 0.86; the partly hidden ones add 1.06
 // to 2.10 times the truth's. Until every light passes, the count of passing lights is a ratchet: it may rise (raise
 // kLightsWithinFivePercent with it), never fall. One test case, so the 28 runs happen once.
@@ -63,14 +63,15 @@ TEST_CASE("mid-lights: every light measured alone, and no fewer lights within 5%
 }
 
 // The mid-lights scene's non-locality in its minimal case (quality_scenes.h, LightPairCase). Measured
-// 2026-11-28: alone the dim light adds 1.00 to 1.02 of its input; beside the bright light 0.73 to 0.95 with
-// ring merging (0.81 to 0.93 while coarse texels were drawn about their centres, 1.23 to 1.49 with light
-// offsets and a half-texel rim inset), and with merging off 0.80 at 16 px (their discs overlap most) and
-// within 2.5% from 24 px: 6 of 12 (4 before the whole-texel rim inset).
+// 2026-11-28: alone the dim light adds 1.00 to 1.02 of its input; beside the bright light, with ring
+// merging, 0.79 and 0.81 at 16 px (their discs overlap most; 0.79 and 0.82 with merging off) and 1.00 to
+// 1.02 from 24 px on, as with merging off: 8 of 12. Before the coarse MIPs were packed in one texel
+// (COARSE_MIPS) the merged cases from 24 px on kept 0.93 to 0.95 (6 of 12; 4 before the whole-texel rim
+// inset, 0.81 to 0.93 while coarse texels were drawn about their centres).
 // Until every case passes, the count is a ratchet: it may rise (raise kWithinFivePercent), never fall.
 TEST_CASE("small lights: a dim light beside a bright one adds its energy within 5%, and no fewer cases than measured",
           "[quality][vulkan][lights]") {
-    constexpr size_t kWithinFivePercent = 6;  // of 12
+    constexpr size_t kWithinFivePercent = 8;  // of 12
     quality::validatedDevice().clearValidationMessages();
     const std::vector<quality::LightPairCase> pairs = quality::runLightPairCases(quality::validatedDevice());
     REQUIRE(pairs.size() == 12);

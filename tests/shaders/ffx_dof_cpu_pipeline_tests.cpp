@@ -349,7 +349,7 @@ TEST_CASE("A far light brighter than white gets a disc nearer the truth's size t
     // Both outlines within 0.35 px of the truth (measured 12.16 and 11.69). Before the rim border moved
     // in where merged rings meet the outermost ring (ffxDofWalkBorderRadius), the dim disc bulged
     // toward its coarse texel's centre and this held the bright one nearer the truth than the dim one.
-    // Until merged rings drew a coarse texel's light where it lies in the texel (LIGHT_OFFSETS), they
+    // Until merged rings drew a coarse texel's light where it lies in the texel (its light offset), they
     // drew this light half a half-res px off in x and y, which widened its spread about its own centre:
     // 12.18 and 11.75 then, within 0.3. The inset stays at 0.25 half-res px: 0.2 brings the bright disc
     // to 11.78 here but costs far-highlights 0.22 dB and mid-lights 0.16 against the truth.
