@@ -45,9 +45,24 @@ io::ImageRGBA differenceImage(const io::ImageRGBA& a, const io::ImageRGBA& b) {
 }
 
 void regionRow(std::ostream& out, const char* name, const metrics::RegionScore& input, const metrics::RegionScore& ours,
-               const metrics::RegionScore& gather) {
+               const metrics::RegionScore& gather, const metrics::RegionScore& halfGather) {
     out << "| PSNR " << name << " (" << ours.pixels << " px) | " << decibels(input.psnr) << " | " << decibels(ours.psnr)
-        << " | " << decibels(gather.psnr) << " |\n";
+        << " | " << decibels(gather.psnr) << " | " << decibels(halfGather.psnr) << " |\n";
+}
+
+// Issue 17's field gate: ffx-dof's field at most kFieldGateMarginDb below the gather's, or a known failure
+// within its ratchet (SceneGate::knownNearFieldDeficitDb).
+void fieldGateRow(std::ostream& out, const char* name, const metrics::RegionScore& ours,
+                  const metrics::RegionScore& gather, double knownDeficitDb) {
+    out << "| " << name << " PSNR vs circular gather | >= " << decibels(gather.psnr - quality::kFieldGateMarginDb)
+        << " dB | " << decibels(ours.psnr) << " dB | ";
+    if (quality::GateResult::fieldWithinGather(ours, gather))
+        out << "pass";
+    else if (knownDeficitDb > 0.0 && gather.psnr - ours.psnr <= knownDeficitDb)
+        out << "known failure (at most " << number(knownDeficitDb, "%.2f") << " dB below the gather: see below)";
+    else
+        out << "**FAIL**";
+    out << " |\n";
 }
 
 // Issue 17's disc-shape gates (tests/quality/test_point_discs.cpp): per radius, the worst over the
@@ -415,7 +430,11 @@ int main(int argc, char** argv) {
            << "Gates per scene: PSNR(ffx-dof, truth) >= PSNR(input, truth) + margin; in-focus pixels not "
               "reachable by a near-field blur stay within 1/255 of the input; halo-band PSNR of ffx-dof >= that "
               "of the circular gather; overall PSNR of ffx-dof >= that of the circular gather (a known failure "
-              "where marked, tested as such).\n\n"
+              "where marked, tested as such); each of the near and far fields at most 0.5 dB below the circular "
+              "gather's (issue 17; a known failure where marked, with a ratchet on the deficit and what is "
+              "measured of why). The *gather at half resolution* is the same gather on the input and radii "
+              "averaged over 2x2 pixels, upsampled bilinearly, as ffx-dof's layers are: what the half resolution "
+              "alone does to it.\n\n"
            << "Pictures, left to right: input (pinhole), ffx-dof, truth, |ffx-dof - truth| x 4, circular gather. "
               "8-bit sRGB, values above 1 clipped.\n\n";
         for (const quality::SceneGate& gate : quality::sceneGates()) {
@@ -441,15 +460,21 @@ int main(int argc, char** argv) {
             for (const char* kind : {"input", "ours", "truth", "difference", "gather"}) {
                 md << "![" << stem << " " << kind << "](images/quality/" << stem << "_" << kind << ".png) ";
             }
-            md << "\n\n| figure (against the truth) | input | ffx-dof | circular gather |\n|---|---|---|---|\n"
+            md << "\n\n| figure (against the truth) | input | ffx-dof | circular gather | gather at half resolution "
+                  "|\n|---|---|---|---|---|\n"
                << "| PSNR (dB) | " << decibels(result.input.psnr) << " | " << decibels(result.effect.psnr) << " | "
-               << decibels(result.gather.psnr) << " |\n"
+               << decibels(result.gather.psnr) << " | " << decibels(result.halfGather.psnr) << " |\n"
                << "| SSIM | " << number(result.input.ssim, "%.4f") << " | " << number(result.effect.ssim, "%.4f")
-               << " | " << number(result.gather.ssim, "%.4f") << " |\n";
-            regionRow(md, "in focus", result.input.inFocus, result.effect.inFocus, result.gather.inFocus);
-            regionRow(md, "near field", result.input.nearField, result.effect.nearField, result.gather.nearField);
-            regionRow(md, "far field", result.input.farField, result.effect.farField, result.gather.farField);
-            regionRow(md, "halo band", result.input.haloBand, result.effect.haloBand, result.gather.haloBand);
+               << " | " << number(result.gather.ssim, "%.4f") << " | " << number(result.halfGather.ssim, "%.4f")
+               << " |\n";
+            const auto regions = [&](const char* name, auto field) {
+                regionRow(md, name, field(result.input), field(result.effect), field(result.gather),
+                          field(result.halfGather));
+            };
+            regions("in focus", [](const metrics::Comparison& c) { return c.inFocus; });
+            regions("near field", [](const metrics::Comparison& c) { return c.nearField; });
+            regions("far field", [](const metrics::Comparison& c) { return c.farField; });
+            regions("halo band", [](const metrics::Comparison& c) { return c.haloBand; });
             const double gain = result.effect.psnr - result.input.psnr;
             md << "\n| gate | required | measured | result |\n|---|---|---|---|\n"
                << "| PSNR gain over the input | >= " << number(gate.psnrMarginDb, "%.1f") << " dB | "
@@ -463,8 +488,13 @@ int main(int argc, char** argv) {
                << " |\n"
                << "| PSNR vs circular gather | >= " << decibels(result.gather.psnr) << " dB | "
                << decibels(result.effect.psnr) << " dB | "
-               << (result.gatherGate() ? "pass" : (gate.atLeastGather ? "**FAIL**" : "known failure"))
-               << " |\n\nWhy this margin: " << gate.rationale << ".\n\n";
+               << (result.gatherGate() ? "pass" : (gate.atLeastGather ? "**FAIL**" : "known failure")) << " |\n";
+            const quality::KnownNearFieldFailure* known = quality::knownNearFieldFailure(gate.scene);
+            fieldGateRow(md, "near field", result.effect.nearField, result.gather.nearField,
+                         known ? known->deficitDb : 0.0);
+            fieldGateRow(md, "far field", result.effect.farField, result.gather.farField, 0.0);
+            md << "\nWhy this margin: " << gate.rationale << ".\n\n";
+            if (known) md << "Near field, a known failure: " << known->note << ".\n\n";
             std::printf("%-16s psnr input %s, ffx-dof %s, gather %s dB (%.1f s)\n", gate.scene.c_str(),
                         decibels(result.input.psnr).c_str(), decibels(result.effect.psnr).c_str(),
                         decibels(result.gather.psnr).c_str(),

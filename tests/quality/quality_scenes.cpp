@@ -48,6 +48,27 @@ const std::vector<SceneGate>& sceneGates() {
     return gates;
 }
 
+const KnownNearFieldFailure* knownNearFieldFailure(const std::string& scene) {
+    static const std::vector<KnownNearFieldFailure> failures = {
+        {"near-object", 0.70,
+         "0.63 dB below the circular gather's (2026-11-28), and the same gather at half resolution comes within "
+         "0.1 dB of the full-resolution one, so the half resolution alone is not why; not isolated yet"},
+        {"fence", 0.75,
+         "0.69 dB below the circular gather's (2026-11-28), and the gather at half resolution is 0.65 dB above "
+         "the full-resolution one, so the half resolution alone is not why. A candidate, not measured apart: "
+         "the downsample keeps a 2x2 quad's reference radius where the posts' edges meet the wall "
+         "(docs/quality.md, thin near bars), where the half-resolution gather averages them"},
+        {"floor", 0.75,
+         "0.68 dB below the circular gather's (2026-11-28). The gather at half resolution loses 4.8 dB here (radii "
+         "change fast along the floor, and a 2x2 average mixes them), and ffx-dof stays 4 dB above that by "
+         "gathering radii of 1 to 3 px at full resolution in the composite; what the remaining 0.68 dB is, is not "
+         "isolated yet"},
+    };
+    for (const KnownNearFieldFailure& failure : failures)
+        if (failure.scene == scene) return &failure;
+    return nullptr;
+}
+
 SceneRender renderScene(const std::string& scene, uint32_t width, uint32_t height, uint32_t lensSamples,
                         const ref::ApertureShape& aperture) {
     ref::SceneSetup setup = ref::makeScene(scene, width, height);
@@ -99,6 +120,44 @@ io::ImageRGBA circularGatherBaseline(const io::ImageRGBA& color, const io::Image
             }
             float* out = result.at(uint32_t(x), uint32_t(y));
             for (int c = 0; c < 4; ++c) out[c] = float(sum[c] / count);
+        }
+    }
+    return result;
+}
+
+io::ImageRGBA halfResolutionGatherBaseline(const io::ImageRGBA& color, const io::ImageR& radiusPixels) {
+    const uint32_t w = color.width, h = color.height;
+    const uint32_t hw = (w + 1) / 2, hh = (h + 1) / 2;
+    io::ImageRGBA halfColor(hw, hh);
+    io::ImageR halfRadius(hw, hh);
+    for (uint32_t y = 0; y < hh; ++y) {
+        for (uint32_t x = 0; x < hw; ++x) {
+            double sum[4] = {}, radius = 0.0;
+            for (uint32_t q = 0; q < 4; ++q) {
+                const uint32_t sx = std::min(2 * x + (q & 1u), w - 1), sy = std::min(2 * y + (q >> 1u), h - 1);
+                for (int c = 0; c < 4; ++c) sum[c] += color.at(sx, sy)[c];
+                radius += std::abs(radiusPixels.at(sx, sy));
+            }
+            for (int c = 0; c < 4; ++c) halfColor.at(x, y)[c] = float(sum[c] / 4.0);
+            halfRadius.at(x, y) = float(radius / 8.0);  // mean |radius| of four, in half-res px
+        }
+    }
+    const io::ImageRGBA halfGather = circularGatherBaseline(halfColor, halfRadius);
+    io::ImageRGBA result(w, h);
+    for (uint32_t y = 0; y < h; ++y) {
+        // Full-res pixel centre in half-res texels, less half a texel: the bilinear taps.
+        const double fy = std::clamp((y + 0.5) / 2.0 - 0.5, 0.0, double(hh - 1));
+        const uint32_t y0 = uint32_t(fy), y1 = std::min(y0 + 1, hh - 1);
+        const double ty = fy - y0;
+        for (uint32_t x = 0; x < w; ++x) {
+            const double fx = std::clamp((x + 0.5) / 2.0 - 0.5, 0.0, double(hw - 1));
+            const uint32_t x0 = uint32_t(fx), x1 = std::min(x0 + 1, hw - 1);
+            const double tx = fx - x0;
+            for (int c = 0; c < 4; ++c) {
+                const double top = halfGather.at(x0, y0)[c] * (1.0 - tx) + halfGather.at(x1, y0)[c] * tx;
+                const double bottom = halfGather.at(x0, y1)[c] * (1.0 - tx) + halfGather.at(x1, y1)[c] * tx;
+                result.at(x, y)[c] = float(top * (1.0 - ty) + bottom * ty);
+            }
         }
     }
     return result;
@@ -169,6 +228,8 @@ GateResult runGate(vkrun::Device& device, const SceneRender& render, bool inPlac
     result.input = metrics::compareImages(render.truth, render.pinhole.color, &render.radius);
     result.effect = metrics::compareImages(render.truth, result.ours, &render.radius);
     result.gather = metrics::compareImages(render.truth, result.baseline, &render.radius);
+    result.halfBaseline = halfResolutionGatherBaseline(render.pinhole.color, render.radius);
+    result.halfGather = metrics::compareImages(render.truth, result.halfBaseline, &render.radius);
     const metrics::Mask inFocus = undisturbedInFocusMask(render.radius);
     result.inFocusPixels = metrics::countPixels(inFocus);
     result.inFocusMaxDifference = metrics::maxAbsDifference(render.pinhole.color, result.ours, &inFocus);
