@@ -492,7 +492,7 @@ struct FfxDofRingWalk
 // gather (the ring's hole fill to ringFillSum / ringFillCount). `coarse` is a literal at both calls: MIP
 // 0 reads HALF_COLOR and HALF_COC, MIPs 1 and up read COARSE_MIPS, colour, radius and light offset in
 // one fetch. Two loops rather than a choice per sample because on devices that run both sides of every
-// branch (lavapipe) a per-sample choice fetches from both images; a loop no lane is in costs one pass.
+// branch (lavapipe) a per-sample choice fetches from both images; a loop no lane enters costs at most one pass.
 // Written for such devices: near and far samples are added with 0/1 shares instead of a branch, and a
 // step of the walk that lands on an empty row counts with weight 0 (`valid`) rather than looping on to
 // the next row.
