@@ -386,7 +386,8 @@ TEST_CASE("demo writes every image", "[vulkan]") {
     INFO(regions.err);
     CHECK(regions.exitCode == 0);
     CHECK_THAT(regions.out, Catch::Contains("in-focus") && Catch::Contains("near-field") &&
-                                Catch::Contains("far-field") && Catch::Contains("halo-band"));
+                                Catch::Contains("far-field") && Catch::Contains("halo-band") &&
+                                Catch::Contains("near-edge"));
 
     requireError(runProgram("demo --out " + quote(folder / "demo/input.png") + " --width 8 --height 8"), 5,
                  "input.png");

@@ -51,18 +51,15 @@ const std::vector<SceneGate>& sceneGates() {
 const KnownNearFieldFailure* knownNearFieldFailure(const std::string& scene) {
     static const std::vector<KnownNearFieldFailure> failures = {
         {"near-object", 0.70,
-         "0.63 dB below the circular gather's (2026-11-28), and the same gather at half resolution comes within "
-         "0.1 dB of the full-resolution one, so the half resolution alone is not why; not isolated yet"},
+         "So the half resolution alone does not explain it; the deficit is largest at the sphere's silhouette, "
+         "where the truth shows the wall through the blurred rim; not isolated yet"},
         {"fence", 0.75,
-         "0.69 dB below the circular gather's (2026-11-28), and the gather at half resolution is 0.65 dB above "
-         "the full-resolution one, so the half resolution alone is not why. A candidate, not measured apart: "
-         "the downsample keeps a 2x2 quad's reference radius where the posts' edges meet the wall "
-         "(docs/quality.md, thin near bars), where the half-resolution gather averages them"},
+         "So the half resolution alone does not explain it; the posts are narrow, and the deficit is larger inside "
+         "them than at their edges; not isolated yet"},
         {"floor", 0.75,
-         "0.68 dB below the circular gather's (2026-11-28). The gather at half resolution loses 4.8 dB here (radii "
-         "change fast along the floor, and a 2x2 average mixes them), and ffx-dof stays 4 dB above that by "
-         "gathering radii of 1 to 3 px at full resolution in the composite; what the remaining 0.68 dB is, is not "
-         "isolated yet"},
+         "The half-resolution gather's loss: radii change fast along the floor, and a 2x2 average mixes them; "
+         "ffx-dof stays above it by gathering radii of 1 to 3 px at full resolution in the composite. Its deficit "
+         "lies at the near field's edge, where the floor's radius crosses 1 px: not isolated yet"},
     };
     for (const KnownNearFieldFailure& failure : failures)
         if (failure.scene == scene) return &failure;

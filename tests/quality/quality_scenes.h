@@ -40,7 +40,7 @@ const std::vector<SceneGate>& sceneGates();
 struct KnownNearFieldFailure {
     std::string scene;
     double deficitDb;
-    std::string note;  // what is measured of why, written into docs/quality.md
+    std::string note;  // what is known of why, after the figures the report computes (docs/quality.md)
 };
 // The scene's entry, or nullptr.
 const KnownNearFieldFailure* knownNearFieldFailure(const std::string& scene);

@@ -103,6 +103,12 @@ TEST_CASE("CoC regions on a synthetic radius map", "[metrics]") {
     CHECK(masks.haloBand[size_t(5) * 50 + 27] == 1);
     CHECK(masks.haloBand[size_t(5) * 50 + 28] == 0);
     CHECK(masks.haloBand[size_t(1) * 50 + 21] == 0);  // near field is never halo
+    // Near pixels within 2 px of one outside the near field: rows 2 and 3 (the far field from row 4), and
+    // columns 20 and 21 of rows 0 and 1 (in focus up to column 19).
+    CHECK(metrics::countPixels(masks.nearEdge) == 30 * 2 + 2 * 2);
+    CHECK(masks.nearEdge[size_t(1) * 50 + 21] == 1);
+    CHECK(masks.nearEdge[size_t(1) * 50 + 22] == 0);
+    CHECK(masks.nearEdge[size_t(5) * 50 + 30] == 0);  // far field is never near edge
 
     // Euclidean, not city-block: one in-focus pixel at the centre of a far field.
     io::ImageR spot(41, 41);

@@ -44,8 +44,10 @@ struct RegionMasks {
     Mask nearField;  // radius >= 1 px (in front of the focus plane)
     Mask farField;   // radius <= -1 px (behind it)
     Mask haloBand;   // far-field pixels within haloWidth px (Euclidean, centre to centre) of an in-focus pixel
+    Mask nearEdge;   // near-field pixels within nearEdgeWidth px of a pixel outside the near field (its silhouette)
 };
-RegionMasks classifyRegions(const io::ImageR& radiusPixels, double haloWidthPixels = 8.0);
+RegionMasks classifyRegions(const io::ImageR& radiusPixels, double haloWidthPixels = 8.0,
+                            double nearEdgeWidthPixels = 2.0);
 size_t countPixels(const Mask& mask);
 
 struct RegionScore {
@@ -58,7 +60,7 @@ struct Comparison {
     double psnr = 0.0;
     double ssim = 0.0;
     bool hasRegions = false;  // the region scores are filled only when a radius map was given
-    RegionScore inFocus, nearField, farField, haloBand;
+    RegionScore inFocus, nearField, farField, haloBand, nearEdge;
 };
 Comparison compareImages(const io::ImageRGBA& reference, const io::ImageRGBA& test,
                          const io::ImageR* radiusPixels = nullptr);

@@ -150,10 +150,54 @@ io::ImageR cocRadiusMap(const ref::Camera& camera, const io::ImageR& linearDepth
     return radius;
 }
 
-RegionMasks classifyRegions(const io::ImageR& radiusPixels, double haloWidthPixels) {
+namespace {
+
+// Marks the pixels of `candidates` within `width` px (exact Euclidean distance, centre to centre) of a
+// pixel of `sources`: first the distance along each row, then the minimum of dy^2 + dx^2 over the rows
+// within the width.
+Mask withinDistance(const Mask& sources, const Mask& candidates, uint32_t w, uint32_t h, double width) {
+    const size_t count = size_t(w) * h;
+    const int band = int(std::floor(width));
+    const double limit2 = width * width;
+    constexpr int kFar = 1 << 20;
+    std::vector<int> rowDistance(count, kFar);
+    for (uint32_t y = 0; y < h; ++y) {
+        int last = -kFar;
+        for (uint32_t x = 0; x < w; ++x) {
+            if (sources[size_t(y) * w + x]) last = int(x);
+            rowDistance[size_t(y) * w + x] = std::min(kFar, int(x) - last);
+        }
+        last = 2 * kFar;
+        for (int x = int(w) - 1; x >= 0; --x) {
+            if (sources[size_t(y) * w + x]) last = x;
+            rowDistance[size_t(y) * w + x] = std::min(rowDistance[size_t(y) * w + x], last - x);
+        }
+    }
+    Mask result(count, 0);
+    for (uint32_t y = 0; y < h; ++y) {
+        for (uint32_t x = 0; x < w; ++x) {
+            const size_t i = size_t(y) * w + x;
+            if (!candidates[i]) continue;
+            for (int dy = -band; dy <= band; ++dy) {
+                const int sy = int(y) + dy;
+                if (sy < 0 || sy >= int(h)) continue;
+                const double dx = rowDistance[size_t(sy) * w + x];
+                if (dx * dx + double(dy) * dy <= limit2) {
+                    result[i] = 1;
+                    break;
+                }
+            }
+        }
+    }
+    return result;
+}
+
+}  // namespace
+
+RegionMasks classifyRegions(const io::ImageR& radiusPixels, double haloWidthPixels, double nearEdgeWidthPixels) {
     const uint32_t w = radiusPixels.width, h = radiusPixels.height;
     const size_t count = size_t(w) * h;
-    RegionMasks masks{Mask(count, 0), Mask(count, 0), Mask(count, 0), Mask(count, 0)};
+    RegionMasks masks{Mask(count, 0), Mask(count, 0), Mask(count, 0), Mask(count, 0), Mask(count, 0)};
     for (size_t i = 0; i < count; ++i) {
         const float r = radiusPixels.pixels[i];
         if (std::abs(r) < 1.0f) {
@@ -164,39 +208,10 @@ RegionMasks classifyRegions(const io::ImageR& radiusPixels, double haloWidthPixe
             masks.farField[i] = 1;
         }
     }
-    // Exact Euclidean distance to the nearest in-focus pixel, limited to the band: first the distance
-    // along each row, then the minimum of dy^2 + dx^2 over the rows within the band.
-    const int band = int(std::floor(haloWidthPixels));
-    const double limit2 = haloWidthPixels * haloWidthPixels;
-    constexpr int kFar = 1 << 20;
-    std::vector<int> rowDistance(count, kFar);
-    for (uint32_t y = 0; y < h; ++y) {
-        int last = -kFar;
-        for (uint32_t x = 0; x < w; ++x) {
-            if (masks.inFocus[size_t(y) * w + x]) last = int(x);
-            rowDistance[size_t(y) * w + x] = std::min(kFar, int(x) - last);
-        }
-        last = 2 * kFar;
-        for (int x = int(w) - 1; x >= 0; --x) {
-            if (masks.inFocus[size_t(y) * w + x]) last = x;
-            rowDistance[size_t(y) * w + x] = std::min(rowDistance[size_t(y) * w + x], last - x);
-        }
-    }
-    for (uint32_t y = 0; y < h; ++y) {
-        for (uint32_t x = 0; x < w; ++x) {
-            const size_t i = size_t(y) * w + x;
-            if (!masks.farField[i]) continue;
-            for (int dy = -band; dy <= band; ++dy) {
-                const int sy = int(y) + dy;
-                if (sy < 0 || sy >= int(h)) continue;
-                const double dx = rowDistance[size_t(sy) * w + x];
-                if (dx * dx + double(dy) * dy <= limit2) {
-                    masks.haloBand[i] = 1;
-                    break;
-                }
-            }
-        }
-    }
+    masks.haloBand = withinDistance(masks.inFocus, masks.farField, w, h, haloWidthPixels);
+    Mask notNear(count, 0);
+    for (size_t i = 0; i < count; ++i) notNear[i] = masks.nearField[i] ? 0 : 1;
+    masks.nearEdge = withinDistance(notNear, masks.nearField, w, h, nearEdgeWidthPixels);
     return masks;
 }
 
@@ -215,6 +230,7 @@ Comparison compareImages(const io::ImageRGBA& reference, const io::ImageRGBA& te
         result.nearField = regionScore(reference, test, masks.nearField);
         result.farField = regionScore(reference, test, masks.farField);
         result.haloBand = regionScore(reference, test, masks.haloBand);
+        result.nearEdge = regionScore(reference, test, masks.nearEdge);
     }
     return result;
 }
@@ -228,7 +244,8 @@ std::string formatComparison(const Comparison& comparison) {
         const std::pair<const char*, const RegionScore*> regions[] = {{"in-focus", &comparison.inFocus},
                                                                       {"near-field", &comparison.nearField},
                                                                       {"far-field", &comparison.farField},
-                                                                      {"halo-band", &comparison.haloBand}};
+                                                                      {"halo-band", &comparison.haloBand},
+                                                                      {"near-edge", &comparison.nearEdge}};
         for (const auto& [name, score] : regions) {
             std::snprintf(line, sizeof line, "psnr %s %.2f dB (%zu px)\n", name, score->psnr, score->pixels);
             text += line;
