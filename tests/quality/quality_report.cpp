@@ -434,10 +434,11 @@ int main(int argc, char** argv) {
               "gather's (issue 17; a known failure where marked, with a ratchet on the deficit and what is "
               "measured of why). The *gather at half resolution* is the same gather on the input and radii "
               "averaged over 2x2 pixels, upsampled bilinearly, as ffx-dof's layers are: what the half resolution "
-              "alone does to it. Ruled out as causes of the near-field deficits (2026-11-28, each an edit of "
-              "ffx_dof_composite.h measured with this report): the composite's 3x3 average of near opacity and its "
-              "cut of the near layer where a bilinear tap has zero opacity; without either, no near field moved by "
-              "more than 0.05 dB.\n\n"
+              "alone does to it. Ruled out as causes of the near-field deficits (2026-11-28, each an edit of the "
+              "shader headers measured with this report): the composite's 3x3 average of near opacity and its "
+              "cut of the near layer where a bilinear tap has zero opacity (without either, no near field moved by "
+              "more than 0.05 dB), and the blur's random kernel origin (`FFX_DOF_JITTER_AMPLITUDE` 0: fence's near "
+              "field 0.20 dB lower, the others within 0.03 dB).\n\n"
            << "Pictures, left to right: input (pinhole), ffx-dof, truth, |ffx-dof - truth| x 4, circular gather. "
               "8-bit sRGB, values above 1 clipped.\n\n";
         for (const quality::SceneGate& gate : quality::sceneGates()) {
