@@ -160,6 +160,16 @@ FFX_DOF_INLINE FfxFloat32x2 ffxDofCoarseTexelLightOffset(FfxUInt32x2 texel)
     return FfxFloat32x2(ffxDofUnpackSnorm8(texel.y, 16u), ffxDofUnpackSnorm8(texel.y, 24u)) * 0.5f;
 }
 
+// A signed radius rounded to nearest as a half (10 mantissa bits), so that its R16 float store is exact
+// whichever rounding the device uses: lavapipe truncates toward zero, and that bias of less than a unit
+// in the last place changed which rings merge beside a bright light (docs/technique.md, "Coarse texels
+// in one fetch"). Radii below the half's normal range are in focus anyway.
+FFX_DOF_INLINE FfxFloat32 ffxDofRoundForHalfCoc(FfxFloat32 coc)
+{
+    FfxFloat32 rounded = ffxDofRoundMantissa(abs(coc), 10u);
+    return coc < 0.0f ? -rounded : rounded;
+}
+
 // ---- HDR range ---------------------------------------------------------------------------------
 
 // The internal colour images are B10G11R11 float (largest finite value 65024) and the 16-bit

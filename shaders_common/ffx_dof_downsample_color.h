@@ -332,7 +332,7 @@ FFX_DOF_INLINE void ffxDofDownsampleColor(FfxUInt32x2 groupId, FfxUInt32 localIn
     if (texel.x < constants.halfSize.x && texel.y < constants.halfSize.y)
     {
         ffxDofStoreHalfColor(texel, ffxDofRoundForPackedColor(color));
-        ffxDofStoreHalfCoc(texel, coc);
+        ffxDofStoreHalfCoc(texel, ffxDofRoundForHalfCoc(coc));
     }
     ffxDofSharedMipColor[localIndex] = color;
     ffxDofSharedMipCoc[localIndex] = coc;

@@ -310,9 +310,9 @@ void writeLightPairs(std::ostream& md, vkrun::Device& device) {
           "unmerged texels drew the bright disc differently. Until 2026-11-28 merged texels drew it about coarse "
           "texel centres and the dim light lost 7 to 19% beside it from 24 px on; drawn where a texel's light "
           "lies (its light offset), 0.93 to 0.95 (1.23 to 1.49 with a half-texel rim inset); since the coarse "
-          "levels are packed in one texel (COARSE_MIPS, docs/technique.md) the figures above. What in that "
-          "change moved them is not isolated: the coarse radius is now rounded to a half by the shader's own "
-          "conversion instead of the image store's, and the offsets to snorm8 likewise.\n\n";
+          "levels are packed in one texel (COARSE_MIPS, docs/technique.md) the figures above: the packed radius "
+          "is rounded to nearest where lavapipe's R16 float store truncated it, and a build that truncates it "
+          "gives the earlier figures to the last digit.\n\n";
 }
 
 // Issue 17's light-kept gate in the mid-lights scene itself (tests/quality/test_small_lights.cpp).

@@ -67,7 +67,8 @@ TEST_CASE("mid-lights: every light measured alone, and no fewer lights within 5%
 // merging, 0.79 and 0.81 at 16 px (their discs overlap most; 0.79 and 0.82 with merging off) and 1.00 to
 // 1.02 from 24 px on, as with merging off: 8 of 12. Before the coarse MIPs were packed in one texel
 // (COARSE_MIPS) the merged cases from 24 px on kept 0.93 to 0.95 (6 of 12; 4 before the whole-texel rim
-// inset, 0.81 to 0.93 while coarse texels were drawn about their centres).
+// inset, 0.81 to 0.93 while coarse texels were drawn about their centres): lavapipe's R16 float stores
+// truncated the coarse radius, which the packing rounds to nearest.
 // Until every case passes, the count is a ratchet: it may rise (raise kWithinFivePercent), never fall.
 TEST_CASE("small lights: a dim light beside a bright one adds its energy within 5%, and no fewer cases than measured",
           "[quality][vulkan][lights]") {

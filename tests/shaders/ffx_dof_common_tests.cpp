@@ -1047,3 +1047,21 @@ TEST_CASE("Coarse texels: radius as a half and light offset as two snorm8, indep
         REQUIRE((backColor.x == 0.5f && backColor.y == 2.0f && backColor.z == 0.25f));
     }
 }
+
+TEST_CASE("A radius rounded for its half store is a half, the nearest one, with its sign", "[storage]") {
+    std::mt19937 rng(17);
+    std::uniform_real_distribution<float> radius(-64.0f, 64.0f);
+    for (int i = 0; i < 5000; ++i) {
+        const float coc = radius(rng);
+        if (std::fabs(coc) < 0.00006103515625f) continue;  // below the half's normal range: in focus anyway
+        const float rounded = ffxDofRoundForHalfCoc(coc);
+        // Representable: a half holds it exactly.
+        REQUIRE(glm::unpackHalf2x16(glm::packHalf2x16(glm::vec2(rounded, 0.0f))).x == rounded);
+        // Nearest: within half a unit in the last place (10 mantissa bits) of the radius, same sign.
+        const float ulp = std::ldexp(1.0f, std::ilogb(coc) - 10);
+        REQUIRE(std::fabs(rounded - coc) <= 0.5f * ulp);
+        REQUIRE((rounded < 0.0f) == (coc < 0.0f));
+    }
+    CHECK(ffxDofRoundForHalfCoc(-18.2f) == -18.203125f);  // 0.2 of a unit (1/64) away; truncation gave -18.1875
+    CHECK(ffxDofRoundForHalfCoc(0.0f) == 0.0f);
+}
