@@ -225,8 +225,8 @@ GateResult runGate(vkrun::Device& device, const SceneRender& render, bool inPlac
     result.input = metrics::compareImages(render.truth, render.pinhole.color, &render.radius);
     result.effect = metrics::compareImages(render.truth, result.ours, &render.radius);
     result.gather = metrics::compareImages(render.truth, result.baseline, &render.radius);
-    result.halfBaseline = halfResolutionGatherBaseline(render.pinhole.color, render.radius);
-    result.halfGather = metrics::compareImages(render.truth, result.halfBaseline, &render.radius);
+    result.halfGather = metrics::compareImages(
+        render.truth, halfResolutionGatherBaseline(render.pinhole.color, render.radius), &render.radius);
     const metrics::Mask inFocus = undisturbedInFocusMask(render.radius);
     result.inFocusPixels = metrics::countPixels(inFocus);
     result.inFocusMaxDifference = metrics::maxAbsDifference(render.pinhole.color, result.ours, &inFocus);

@@ -81,7 +81,7 @@ constexpr double kFieldGateMarginDb = 0.5;
 metrics::Mask undisturbedInFocusMask(const io::ImageR& radiusPixels);
 
 struct GateResult {
-    io::ImageRGBA ours, baseline, halfBaseline;
+    io::ImageRGBA ours, baseline;
     metrics::Comparison input, effect, gather, halfGather;  // each against the truth, with regions
     double inFocusMaxDifference = 0.0;                      // |ours - input| over undisturbedInFocusMask, clamped
     size_t inFocusPixels = 0;

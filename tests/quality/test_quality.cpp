@@ -49,6 +49,33 @@ TEST_CASE("the circular gather baseline blurs by each pixel's own radius", "[qua
     CHECK(blurred.at(4, 3)[0] == 0.0f);  // radius 0: the pixel itself
 }
 
+TEST_CASE("the half-resolution gather baseline: 2x2 averages, gathered, upsampled bilinearly", "[quality]") {
+    // In focus everywhere: no gather, so the result is the 2x2 average upsampled. A constant stays constant;
+    // a step between two columns of quads becomes a ramp over the two pixels beside it.
+    io::ImageRGBA color(8, 4);
+    io::ImageR radius(8, 4);
+    for (uint32_t y = 0; y < 4; ++y)
+        for (uint32_t x = 0; x < 8; ++x) color.at(x, y)[1] = x < 4 ? 0.0f : 1.0f;
+    const io::ImageRGBA half = quality::halfResolutionGatherBaseline(color, radius);
+    REQUIRE(half.width == 8);
+    REQUIRE(half.height == 4);
+    CHECK(half.at(0, 1)[1] == 0.0f);
+    CHECK(half.at(7, 2)[1] == 1.0f);
+    CHECK(half.at(3, 0)[1] == Approx(0.25f));  // a quarter of the way to the next half-res texel
+    CHECK(half.at(4, 3)[1] == Approx(0.75f));
+    // A radius of 2 px (1 half-res px) gathers the texel and its four neighbours at half resolution.
+    io::ImageRGBA spot(8, 8);
+    spot.at(4, 4)[0] = spot.at(5, 4)[0] = spot.at(4, 5)[0] = spot.at(5, 5)[0] = 5.0f;
+    io::ImageR far(8, 8);
+    for (float& r : far.pixels) r = -2.0f;
+    const io::ImageRGBA blurred = quality::halfResolutionGatherBaseline(spot, far);
+    double sum = 0.0;
+    for (uint32_t y = 0; y < 8; ++y)
+        for (uint32_t x = 0; x < 8; ++x) sum += blurred.at(x, y)[0];
+    CHECK(blurred.at(4, 4)[0] < 5.0f);
+    CHECK(sum == Approx(20.0).epsilon(0.3));  // the light spread, not lost (edges clamp)
+}
+
 TEST_CASE("bokeh of a single far point: disc radius", "[quality][vulkan]") {
     vkrun::Device& device = quality::validatedDevice();
     device.clearValidationMessages();
