@@ -15,8 +15,9 @@
 //   sample whose light over its own disc exceeds display white (in the input's units: GLOBALS'
 //   colour scale) spreads over a slightly smaller disc (ffxDofHighlightSpreadRadius).
 //   Hole filling: when the texel itself is near, every far-field sample, whatever its reach, is
-//   also summed as the fill and added to the far color at the end, each weighing what a sample of
-//   the texel's own radius would: the hidden background is extrapolated from around the object.
+//   also summed as the fill, its color weighted by proximity (ffxDofFillProximity), and added to
+//   the far color at the end with the weight that as many samples of the texel's own radius would
+//   have: the hidden background is extrapolated from around the object, mostly from nearby.
 // Tile classes (ffxDofClassifyTile, from pass 3's dilated range and kernel footprint), each a path
 // that leaves out what cannot matter on that tile and gives what the mixed path would give:
 //   copy       every kernel is in focus (R < 0.5): the texel is the far layer;
@@ -429,6 +430,17 @@ FFX_DOF_INLINE FfxFloat32 ffxDofNearOpacity(FfxFloat32 nearWeight)
     return ffxDofSaturate(nearWeight * (1.0f / FFX_DOF_PI));
 }
 
+// Weight of a background sample in the hole fill of a near texel, by its distance (half-res px):
+// the inverse square, so the fill extrapolates the background from just around the near object rather
+// than averaging the whole kernel. Behind a thin near object over a sharp surface the hidden part is
+// best told by the surface right beside it (fence's near field +0.8 dB, above the circular gather); a
+// steeper falloff gained more there but let the anti-aliased pixels at a large object's silhouette,
+// part foreground, speak for its whole rim (near-object's near field -0.3 dB at 1 / d^4; docs/quality.md).
+FFX_DOF_INLINE FfxFloat32 ffxDofFillProximity(FfxFloat32 distance)
+{
+    return 1.0f / max(distance * distance, 0.25f);
+}
+
 struct FfxDofBlurResult
 {
     FfxDofFloat3 nearColor;
@@ -441,8 +453,8 @@ struct FfxDofGather
 {
     FfxFloat32x3 nearSum;
     FfxFloat32 nearWeight;
-    FfxFloat32x3 fillSum;
-    FfxFloat32 fillCount;
+    FfxFloat32x3 fillSum;         // hole fill: color * proximity * texel area
+    FfxFloat32x2 fillWeights;     // hole fill: x the texel area summed, y proximity * texel area
     FfxDofBucket farNearer;  // far-field samples nearer than the texel's own surface
     FfxDofBucket farFront;   // far-field samples of the texel's own surface
     FfxDofBucket farBack;    // far-field samples behind it
@@ -497,7 +509,7 @@ struct FfxDofRingWalk
 // step of the walk that lands on an empty row counts with weight 0 (`valid`) rather than looping on to
 // the next row.
 FFX_DOF_INLINE void ffxDofWalkSamples(FFX_DOF_INOUT(FfxDofGather) gather, FFX_DOF_INOUT(FfxFloat32x3) ringFillSum,
-                                      FFX_DOF_INOUT(FfxFloat32) ringFillCount, FfxDofKernel kernel, FfxDofRingWalk ring,
+                                      FFX_DOF_INOUT(FfxFloat32x2) ringFillWeights, FfxDofKernel kernel, FfxDofRingWalk ring,
                                       FfxDofAnnulus annulus, FfxBoolean coarse, FfxDofGatherParts parts)
 {
     FfxBoolean holeFill = parts.nearField && parts.farField;
@@ -572,8 +584,9 @@ FFX_DOF_INLINE void ffxDofWalkSamples(FFX_DOF_INOUT(FfxDofGather) gather, FFX_DO
         }
         if (holeFill)
         {
-            ringFillSum += color * farShare;
-            ringFillCount += farShare;
+            FfxFloat32 proximity = ffxDofFillProximity(distance) * farShare;
+            ringFillSum += color * proximity;
+            ringFillWeights += FfxFloat32x2(farShare, proximity);
         }
     }
 }
@@ -615,13 +628,13 @@ FFX_DOF_INLINE void ffxDofGatherRing(FFX_DOF_INOUT(FfxDofGather) gather, FfxDofK
     FfxDofAnnulus annulus = ffxDofMakeAnnulus(kernel.origin * mipScale, innerRadius, outerRadius, innerBlock,
                                               outerBlock, parts.shaped ? 1.0f / kernel.aperture.anamorphicRatio : 1.0f);
     FfxFloat32x3 ringFillSum = FfxFloat32x3(0.0f, 0.0f, 0.0f);
-    FfxFloat32 ringFillCount = 0.0f;
+    FfxFloat32x2 ringFillWeights = FfxFloat32x2(0.0f, 0.0f);
     if (mip == 0u)
-        ffxDofWalkSamples(gather, ringFillSum, ringFillCount, kernel, ring, annulus, false, parts);
+        ffxDofWalkSamples(gather, ringFillSum, ringFillWeights, kernel, ring, annulus, false, parts);
     else
-        ffxDofWalkSamples(gather, ringFillSum, ringFillCount, kernel, ring, annulus, true, parts);
+        ffxDofWalkSamples(gather, ringFillSum, ringFillWeights, kernel, ring, annulus, true, parts);
     gather.fillSum += ringFillSum * ring.sampleWeight;
-    gather.fillCount += ringFillCount * ring.sampleWeight;
+    gather.fillWeights += ringFillWeights * ring.sampleWeight;
 }
 
 // Gathers every ring inside the outermost one, from the outside in. Rings 1 .. rings - 1 form groups
@@ -709,8 +722,11 @@ FFX_DOF_INLINE FfxDofBlurResult ffxDofFinishGather(FfxDofGather gather, FfxDofKe
     // The hole fill is background to the near texel it fills.
     FfxFloat32 fillWeight = kernel.centerIsNear ? fillAreaWeight : 0.0f;
     FfxDofBucket back = gather.farBack;
-    back.color += gather.fillSum * fillWeight;
-    back.weight += gather.fillCount * fillWeight;
+    if (gather.fillWeights.y > 0.0f)
+    {
+        back.color += gather.fillSum * (gather.fillWeights.x * fillWeight / gather.fillWeights.y);
+        back.weight += gather.fillWeights.x * fillWeight;
+    }
     FfxFloat32x3 farColor;
     if (ffxDofComposeFarLayers(gather.farFront, back, farColor))
     {
@@ -820,7 +836,7 @@ FFX_DOF_INLINE FfxDofBlurResult ffxDofBlurTexel(FfxUInt32x2 texel, FfxFloat32x4 
     gather.nearSum = FfxFloat32x3(0.0f, 0.0f, 0.0f);
     gather.nearWeight = 0.0f;
     gather.fillSum = FfxFloat32x3(0.0f, 0.0f, 0.0f);
-    gather.fillCount = 0.0f;
+    gather.fillWeights = FfxFloat32x2(0.0f, 0.0f);
     gather.farNearer = ffxDofEmptyBucket();
     gather.farFront = ffxDofEmptyBucket();
     gather.farBack = ffxDofEmptyBucket();

@@ -1065,3 +1065,13 @@ TEST_CASE("A radius rounded for its half store is a half, the nearest one, with 
     CHECK(ffxDofRoundForHalfCoc(-18.2f) == -18.203125f);  // 0.2 of a unit (1/64) away; truncation gave -18.1875
     CHECK(ffxDofRoundForHalfCoc(0.0f) == 0.0f);
 }
+
+TEST_CASE("Hole fill proximity: the inverse square of the distance, bounded at half a texel", "[blur]") {
+    CHECK(ffxDofFillProximity(1.0f) == Approx(1.0f));
+    CHECK(ffxDofFillProximity(2.0f) == Approx(0.25f));
+    CHECK(ffxDofFillProximity(4.0f) == Approx(1.0f / 16.0f));
+    // A sample at the kernel centre (a background texel under a near one's jittered origin) stays finite.
+    CHECK(ffxDofFillProximity(0.0f) == Approx(4.0f));
+    CHECK(ffxDofFillProximity(0.25f) == Approx(4.0f));
+    for (float d = 0.5f; d < 40.0f; d += 0.5f) CHECK(ffxDofFillProximity(d + 0.5f) < ffxDofFillProximity(d));
+}
