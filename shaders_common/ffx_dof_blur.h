@@ -436,10 +436,7 @@ FFX_DOF_INLINE FfxFloat32 ffxDofNearOpacity(FfxFloat32 nearWeight)
 // best told by the surface right beside it (fence's near field +0.8 dB, above the circular gather); a
 // steeper falloff gained more there but let the anti-aliased pixels at a large object's silhouette,
 // part foreground, speak for its whole rim (near-object's near field -0.3 dB at 1 / d^4; docs/quality.md).
-FFX_DOF_INLINE FfxFloat32 ffxDofFillProximity(FfxFloat32 distance)
-{
-    return 1.0f / max(distance * distance, 0.25f);
-}
+FFX_DOF_INLINE FfxFloat32 ffxDofFillProximity(FfxFloat32 distance) { return 1.0f / max(distance * distance, 0.25f); }
 
 struct FfxDofBlurResult
 {
@@ -453,12 +450,12 @@ struct FfxDofGather
 {
     FfxFloat32x3 nearSum;
     FfxFloat32 nearWeight;
-    FfxFloat32x3 fillSum;         // hole fill: color * proximity * texel area
-    FfxFloat32x2 fillWeights;     // hole fill: x the texel area summed, y proximity * texel area
-    FfxDofBucket farNearer;  // far-field samples nearer than the texel's own surface
-    FfxDofBucket farFront;   // far-field samples of the texel's own surface
-    FfxDofBucket farBack;    // far-field samples behind it
-    FfxFloat32 cocSpread;    // largest |radius - own radius| among the samples seen
+    FfxFloat32x3 fillSum;      // hole fill: color * proximity * texel area
+    FfxFloat32x2 fillWeights;  // hole fill: x the texel area summed, y proximity * texel area
+    FfxDofBucket farNearer;    // far-field samples nearer than the texel's own surface
+    FfxDofBucket farFront;     // far-field samples of the texel's own surface
+    FfxDofBucket farBack;      // far-field samples behind it
+    FfxFloat32 cocSpread;      // largest |radius - own radius| among the samples seen
 };
 
 // What every ring of one texel's kernel shares.
@@ -509,8 +506,9 @@ struct FfxDofRingWalk
 // step of the walk that lands on an empty row counts with weight 0 (`valid`) rather than looping on to
 // the next row.
 FFX_DOF_INLINE void ffxDofWalkSamples(FFX_DOF_INOUT(FfxDofGather) gather, FFX_DOF_INOUT(FfxFloat32x3) ringFillSum,
-                                      FFX_DOF_INOUT(FfxFloat32x2) ringFillWeights, FfxDofKernel kernel, FfxDofRingWalk ring,
-                                      FfxDofAnnulus annulus, FfxBoolean coarse, FfxDofGatherParts parts)
+                                      FFX_DOF_INOUT(FfxFloat32x2) ringFillWeights, FfxDofKernel kernel,
+                                      FfxDofRingWalk ring, FfxDofAnnulus annulus, FfxBoolean coarse,
+                                      FfxDofGatherParts parts)
 {
     FfxBoolean holeFill = parts.nearField && parts.farField;
     FfxFloat32 centerAbsCoc = abs(kernel.centerCoc);
