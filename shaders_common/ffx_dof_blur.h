@@ -518,10 +518,13 @@ FFX_DOF_INLINE void ffxDofWalkSamples(FFX_DOF_INOUT(FfxDofGather) gather, FFX_DO
     {
         FfxFloat32x2 sampleTexel = clamp(walk.texel, FfxFloat32x2(0.0f, 0.0f), ring.lastTexel);
         FfxFloat32 valid = ffxDofAnnulusValid(walk) ? 1.0f : 0.0f;
+        // Reach is judged from where the light of the texel lies: its centre at MIP 0, its light offset
+        // above. Beyond the image border the image is taken as its edge texels repeated, each copy at
+        // the position walked: judged from the clamped texel instead, every read past the border counted
+        // the edge texel again at its own place, so a near object within a kernel of the border grew
+        // opaque there (near-object's near field 0.58 dB lower, docs/quality.md).
+        FfxFloat32x2 toTexel = walk.texel - ring.centerToCorner;
         walk = ffxDofAnnulusNext(annulus, walk);
-        // Reach is judged from where the light of the texel actually read lies (at the image border, the
-        // clamped one): its centre at MIP 0, its light offset above.
-        FfxFloat32x2 toTexel = sampleTexel - ring.centerToCorner;
         FfxFloat32x3 color;
         FfxFloat32 coc = kernel.centerCoc;
         if (coarse)

@@ -50,9 +50,6 @@ const std::vector<SceneGate>& sceneGates() {
 
 const KnownNearFieldFailure* knownNearFieldFailure(const std::string& scene) {
     static const std::vector<KnownNearFieldFailure> failures = {
-        {"near-object", 0.70,
-         "So the half resolution alone does not explain it; the deficit is largest at the sphere's silhouette, "
-         "where the truth shows the wall through the blurred rim; not isolated yet"},
         {"floor", 0.75,
          "The half-resolution gather's loss: radii change fast along the floor, and a 2x2 average mixes them; "
          "ffx-dof stays above it by gathering radii of 1 to 3 px at full resolution in the composite. Its deficit "

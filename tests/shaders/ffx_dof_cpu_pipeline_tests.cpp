@@ -594,3 +594,23 @@ TEST_CASE("Behind a near bar, the far layer takes the background from the nearer
     CHECK(rightQuarter < 0.22);
     CHECK(std::is_sorted(columnMean.rbegin(), columnMean.rend()));
 }
+
+TEST_CASE("Past the image border, a near object goes on as its edge, no more opaque there", "[pipeline]") {
+    // A near rectangle against the left border (radius 8, so kernels reach 8 texels past the border)
+    // over an in-focus background. Past the border the image is its edge texels repeated, so there the
+    // rectangle goes on to the left: below its bottom edge, the border column's near opacity must be
+    // what a column inside the rectangle's span, well away from both its ends, gets. (Judging reads past
+    // the border at the clamped texel's own place counted each again at full reach: the border column
+    // came out more opaque.)
+    Scene scene = makeScene(160, 96, kBackground, 0.0f);
+    paint(scene, Rect{0, 0, 56, 40}, 8.0f, false);
+    Layers layers;
+    ffxdoftest::runPipeline(scene, Settings{}, &layers);
+    const uint32_t borderColumn = 0, insideColumn = 12;
+    for (uint32_t row = 20; row < 28; ++row) {
+        const float border = layers.layerAlpha[size_t(row) * layers.halfWidth + borderColumn].x;
+        const float inside = layers.layerAlpha[size_t(row) * layers.halfWidth + insideColumn].x;
+        INFO("texel row " << row << ": near opacity at the border " << border << ", inside " << inside);
+        CHECK(std::abs(border - inside) < 0.005f);  // 0.008 to 0.04 more at the border before
+    }
+}
