@@ -48,18 +48,6 @@ const std::vector<SceneGate>& sceneGates() {
     return gates;
 }
 
-const KnownNearFieldFailure* knownNearFieldFailure(const std::string& scene) {
-    static const std::vector<KnownNearFieldFailure> failures = {
-        {"floor", 0.75,
-         "The half-resolution gather's loss: radii change fast along the floor, and a 2x2 average mixes them; "
-         "ffx-dof stays above it by gathering radii of 1 to 3 px at full resolution in the composite. Its deficit "
-         "lies at the near field's edge, where the floor's radius crosses 1 px: not isolated yet"},
-    };
-    for (const KnownNearFieldFailure& failure : failures)
-        if (failure.scene == scene) return &failure;
-    return nullptr;
-}
-
 SceneRender renderScene(const std::string& scene, uint32_t width, uint32_t height, uint32_t lensSamples,
                         const ref::ApertureShape& aperture) {
     ref::SceneSetup setup = ref::makeScene(scene, width, height);

@@ -34,17 +34,6 @@ struct SceneGate {
 };
 const std::vector<SceneGate>& sceneGates();
 
-// A scene whose near-field gate (within kFieldGateMarginDb of the gather's) is a known failure: ffx-dof's
-// near field may lie at most deficitDb below the gather's, a ratchet to tighten, and the test checks that
-// the gate still fails (remove the entry once it passes).
-struct KnownNearFieldFailure {
-    std::string scene;
-    double deficitDb;
-    std::string note;  // what is known of why, after the figures the report computes (docs/quality.md)
-};
-// The scene's entry, or nullptr.
-const KnownNearFieldFailure* knownNearFieldFailure(const std::string& scene);
-
 // The reference renders of one scene.
 struct SceneRender {
     ref::SceneSetup setup;

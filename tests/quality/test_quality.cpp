@@ -22,14 +22,9 @@ TEST_CASE("quality gates per scene against the thin-lens truth", "[quality][vulk
             CHECK(result.inFocusPixels > 0);
             CHECK(result.haloGate());
             if (gate.atLeastGather) CHECK(result.gatherGate());
-            // Each field within 0.5 dB of the gather's, except the known failures (a ratchet).
+            // Each field within 0.5 dB of the gather's.
             INFO("half-resolution circular gather vs truth:\n" << metrics::formatComparison(result.halfGather));
-            if (const quality::KnownNearFieldFailure* known = quality::knownNearFieldFailure(gate.scene)) {
-                CHECK(result.gather.nearField.psnr - result.effect.nearField.psnr <= known->deficitDb);
-                CHECK_FALSE(result.nearFieldGate());  // passes now: remove the known failure
-            } else {
-                CHECK(result.nearFieldGate());
-            }
+            CHECK(result.nearFieldGate());
             CHECK(result.farFieldGate());
         }
     }

@@ -614,3 +614,22 @@ TEST_CASE("Past the image border, a near object goes on as its edge, no more opa
         CHECK(std::abs(border - inside) < 0.005f);  // 0.008 to 0.04 more at the border before
     }
 }
+
+TEST_CASE("A slightly blurred near object shows the background within its radius of its silhouette", "[pipeline]") {
+    // A near square at radius 2 half-res px (4 full-res px: its own surface is gathered at full
+    // resolution) over an in-focus background. One pixel inside its edge the truth's coverage is
+    // about 0.66 (a disc of radius 4 px cut by a straight edge 1 px from its centre); kept opaque up
+    // to the silhouette, that pixel came out as the object itself.
+    Scene scene = makeScene(128, 96, kBackground, 0.0f);
+    const Rect object{48, 32, 80, 64};
+    paint(scene, object, 2.0f, false);
+    std::vector<glm::vec4> out = ffxdoftest::runPipeline(scene, Settings{});
+    double insideEdge = 0.0;
+    for (int y = 44; y < 52; ++y) insideEdge += out[size_t(y) * scene.width + size_t(object.x0 + 1)].x;
+    insideEdge /= 8.0;
+    // Red: 1 on the object, 0.1 on the background.
+    const double coverage = (insideEdge - kBackground.x) / (kObject.x - kBackground.x);
+    INFO("coverage one pixel inside the left edge: " << coverage);
+    CHECK(coverage > 0.55);
+    CHECK(coverage < 0.8);
+}
