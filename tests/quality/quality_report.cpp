@@ -387,7 +387,15 @@ void writeSceneLights(std::ostream& md, vkrun::Device& device) {
        << " Ring merging and the rim inset are decided per tile from the radii its kernels read (dilate's footprint), "
           "so a dim light in a bright light's tiles changes how the "
           "bright light's rim is drawn. Lights beside in-focus objects (partly hidden) keep their rim pixels at "
-          "the in-focus depth, sharp, and their disc is not cut by the object as the thin lens cuts it.\n\n";
+          "the in-focus depth, sharp, and their disc is not cut by the object as the thin lens cuts it. Light 12 "
+          "lies half behind the box's edge: the half-res texel holding its visible pixels and in-focus box pixels "
+          "drops the box pixels (another radius), so the light's pixels fill the texel and its energy there "
+          "doubles. Tried on 2026-11-28, not kept: counting such far darker pixels in front of a light as area "
+          "without colour in the downsample's normalisation. Lights 6 and 8 then passed (1.04 and 1.02), light 12 "
+          "and 13 added 0.88 and 0.86 of the truth's energy instead of 2.10 and 1.28, busy-background gained "
+          "0.18 dB, but mid-lights lost 1.07 dB (28.28 -> 27.21): the thin lens sees around the box, so these "
+          "lights' visible half discs are brighter in the truth than the pinhole input's light allows, and "
+          "the discs of lights 12 and 13 fell below display white where the truth's are above it.\n\n";
 }
 
 }  // namespace
