@@ -50,8 +50,7 @@ void regionRow(std::ostream& out, const char* name, const metrics::RegionScore& 
         << " | " << decibels(gather.psnr) << " | " << decibels(halfGather.psnr) << " |\n";
 }
 
-// Issue 17's field gate: ffx-dof's field at most kFieldGateMarginDb below the gather's, or a known failure
-// within its ratchet (SceneGate::knownNearFieldDeficitDb).
+// Issue 17's field gate: ffx-dof's field at most kFieldGateMarginDb below the gather's.
 void fieldGateRow(std::ostream& out, const char* name, const metrics::RegionScore& ours,
                   const metrics::RegionScore& gather) {
     out << "| " << name << " PSNR vs circular gather | >= " << decibels(gather.psnr - quality::kFieldGateMarginDb)
