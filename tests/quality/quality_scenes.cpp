@@ -620,6 +620,15 @@ double addedGreen(const vkrun::HostImage& a, const vkrun::HostImage& b) {
 }  // namespace
 
 std::vector<SmallLightCase> runSmallLightCases(vkrun::Device& device) {
+    std::vector<std::array<int, 2>> offsets;
+    for (const auto& offset : kSmallLightOffsets) offsets.push_back({offset[0], offset[1]});
+    return runSmallLightCases(device, {std::begin(kSmallLightRadii), std::end(kSmallLightRadii)},
+                              {std::begin(kSmallLightSizes), std::end(kSmallLightSizes)}, offsets);
+}
+
+std::vector<SmallLightCase> runSmallLightCases(vkrun::Device& device, const std::vector<double>& radii,
+                                               const std::vector<int>& sizes,
+                                               const std::vector<std::array<int, 2>>& offsets) {
     constexpr uint32_t kWidth = kLightsWidth, kHeight = kLightsHeight;
     constexpr double kBackground = kLightsBackground, kLight = 50.0;
     // The truth's centre: the light's share of the disc about its centre (64 x 64 points per pixel of the
@@ -639,9 +648,9 @@ std::vector<SmallLightCase> runSmallLightCases(vkrun::Device& device) {
     std::vector<SmallLightCase> cases;
     for (bool float32 : {false, true}) {
         const vkrun::HostImage without = runSquareLights(device, {}, float32);
-        for (const auto& offset : kSmallLightOffsets) {
-            for (double radius : kSmallLightRadii) {
-                for (int size : kSmallLightSizes) {
+        for (const auto& offset : offsets) {
+            for (double radius : radii) {
+                for (int size : sizes) {
                     const int x0 = int(kWidth) / 2 - size / 2 + offset[0], y0 = int(kHeight) / 2 - size / 2 + offset[1];
                     const vkrun::HostImage with = runSquareLights(device, {{x0, y0, size, kLight, radius}}, float32);
                     SmallLightCase light;

@@ -6,6 +6,7 @@
 #include "ffx_dof_reference.h"
 #include "ffx_dof_vkrun.h"
 
+#include <array>
 #include <cmath>
 #include <string>
 #include <vector>
@@ -185,7 +186,16 @@ struct SmallLightCase {
     bool energyOk() const { return std::abs(energyRatio - 1.0) <= 0.05; }
     bool centreOk() const { return std::abs(centre / truthCentre - 1.0) <= 0.20; }
 };
+// The gated cases (kSmallLightRadii, kSmallLightSizes, kSmallLightOffsets, both precisions), or others.
 std::vector<SmallLightCase> runSmallLightCases(vkrun::Device& device);
+std::vector<SmallLightCase> runSmallLightCases(vkrun::Device& device, const std::vector<double>& radii,
+                                               const std::vector<int>& sizes,
+                                               const std::vector<std::array<int, 2>>& offsets);
+// Below the gated radii: lights whose own pixels the composite blurs at full resolution (|radius| under 6
+// px) while the background around them takes the half-resolution layers. Issue 17 asks every depth; these
+// are a known failure (docs/quality.md, small lights), with a ratchet on how many keep their energy.
+constexpr double kSmallLightRadiiBelowGate[] = {2.0, 3.0, 4.0};  // full-res px, far field
+constexpr int kSmallLightSizesBelowGate[] = {1, 2, 3, 5};
 
 // The mid-lights scene's lights change each other (docs/quality.md, lights of the mid-lights scene): its
 // minimal case. A dim light (2 x 2 px of 50) at radius 6 or 13 px, 16, 24 or 32 px beside a bright one (3 x

@@ -6,6 +6,8 @@
 
 #include <catch2/catch.hpp>
 
+#include <array>
+#include <iterator>
 #include <vector>
 
 using namespace ffxdof;
@@ -26,6 +28,30 @@ TEST_CASE(
         CHECK(light.energyOk());
         CHECK(light.centreOk());
     }
+    CHECK(quality::validatedDevice().validationMessages().empty());
+}
+
+// Issue 17 asks the same at every depth between the focus and the background. Below the gated radii (2 to 4
+// px: the composite blurs the light's own pixels at full resolution, the background around them takes the
+// half-res layers) it is a known failure, measured 2026-11-28: 16 of 72 cases within 5%, a 1 px light at 2 px
+// keeping 0.51, others gaining up to 27% (docs/quality.md, small lights). The count is a ratchet: it may rise
+// (raise kCasesWithinFivePercent with it), never fall.
+TEST_CASE("small lights below radius 6 px: no fewer cases within 5% than measured", "[quality][vulkan][lights]") {
+    constexpr size_t kCasesWithinFivePercent = 16;  // of 72
+    std::vector<std::array<int, 2>> offsets;
+    for (const auto& offset : quality::kSmallLightOffsets) offsets.push_back({offset[0], offset[1]});
+    quality::validatedDevice().clearValidationMessages();
+    const std::vector<quality::SmallLightCase> lights = quality::runSmallLightCases(
+        quality::validatedDevice(),
+        {std::begin(quality::kSmallLightRadiiBelowGate), std::end(quality::kSmallLightRadiiBelowGate)},
+        {std::begin(quality::kSmallLightSizesBelowGate), std::end(quality::kSmallLightSizesBelowGate)}, offsets);
+    REQUIRE(lights.size() == 72);
+    size_t within = 0;
+    for (const quality::SmallLightCase& light : lights) {
+        UNSCOPED_INFO(light.describe());
+        within += light.energyOk();
+    }
+    CHECK(within >= kCasesWithinFivePercent);
     CHECK(quality::validatedDevice().validationMessages().empty());
 }
 
