@@ -65,11 +65,17 @@ FfxFloat32 ffxDofLoadColorScale();
 // Per-axis variance, in half-res px^2, that the far layer adds to its disc: the 2x2 downsample box
 // (1/12), the bilinear upsample (1/6), the kernel jitter and the half-pixel anti-aliased reach.
 #define FFX_DOF_FAR_LAYER_EXTRA_VARIANCE 0.3f
+// From this |radius| (half-res px) on, the far layer alone makes the pixel.
+#define FFX_DOF_FAR_LAYER_ONLY_RADIUS 3.0f
 // Below FFX_DOF_FAR_LAYER_ONLY_RADIUS a pixel's own surface is gathered at full resolution
 // (ffxDofGatherOwnSurface): the half-res layers, upsampled, blur a disc of a few pixels by half its
 // radius again and peak it (the circular gather, which ignores depth, beat them by up to 5 dB there).
 // Over the last half-res pixel of radius below the limit the gather hands over to the layers.
 #define FFX_DOF_OWN_SURFACE_FADE 1.0f
+// Below this |radius| (half-res px; 2 full-res px) the fixed 3x3 blur, a disc of 1.5 px, mixed into the
+// input by variance is the right size already: the gather starts here (from 0.5 instead: the same
+// figures within 0.15 dB, and more tiles loading the full-res neighbourhood).
+#define FFX_DOF_OWN_SURFACE_MIN_RADIUS 1.0f
 // Full-res pixels read around the tile: the largest own-surface disc, 2 * 3 + 0.5 rounded up.
 #define FFX_DOF_OWN_SURFACE_BORDER 7
 #define FFX_DOF_OWN_SURFACE_SIDE (FFX_DOF_COMPOSITE_GROUP_EXTENT + 2 * FFX_DOF_OWN_SURFACE_BORDER)
@@ -173,13 +179,13 @@ FFX_DOF_GROUPSHARED FfxFloat32 ffxDofSharedCoc[FFX_DOF_FILTERED_SIDE * FFX_DOF_F
 // at most FFX_DOF_COLOR_RANGE_LIMIT after scaling, well inside the 16-bit range.
 FFX_DOF_GROUPSHARED FfxUInt32x2 ffxDofSharedOwnSample[FFX_DOF_OWN_SURFACE_SIDE * FFX_DOF_OWN_SURFACE_SIDE];
 
-FFX_DOF_INLINE void ffxDofStoreOwnSample(FfxUInt32 index, FfxFloat32x3 color, FfxFloat32 radius)
+FFX_DOF_INLINE void ffxDofStoreOwnSample(FfxUInt32 index, FfxFloat32x3 color, FfxFloat32 absRadius)
 {
     ffxDofSharedOwnSample[index] =
-        FfxUInt32x2(ffxDofPackHalf2(FfxFloat32x2(color.x, color.y)), ffxDofPackHalf2(FfxFloat32x2(color.z, radius)));
+        FfxUInt32x2(ffxDofPackHalf2(FfxFloat32x2(color.x, color.y)), ffxDofPackHalf2(FfxFloat32x2(color.z, absRadius)));
 }
 
-// Color in xyz, the signed radius (full-res px) in w.
+// Color in xyz, |radius| in w.
 FFX_DOF_INLINE FfxFloat32x4 ffxDofLoadOwnSample(FfxUInt32 index)
 {
     FfxUInt32x2 packed = ffxDofSharedOwnSample[index];
@@ -341,57 +347,14 @@ FFX_DOF_INLINE FfxFloat32x4 ffxDofGatherOwnSurface(FfxInt32x2 local, FfxFloat32 
         for (FfxInt32 dx = -rowExtent; dx <= rowExtent; ++dx)
         {
             FfxFloat32x4 colorRadius = ffxDofLoadOwnSample(FfxUInt32(row + dx));
-            FfxFloat32 absRadius = abs(colorRadius.w);
             FfxFloat32 weight =
-                ffxDofReach(absRadius, sqrt(FfxFloat32(dx * dx + dy * dy))) * ffxDofRoundAreaWeight(absRadius);
+                ffxDofReach(colorRadius.w, sqrt(FfxFloat32(dx * dx + dy * dy))) * ffxDofRoundAreaWeight(colorRadius.w);
             sum += FfxFloat32x3(colorRadius.x, colorRadius.y, colorRadius.z) * weight;
             weightSum += weight;
         }
     }
     // The pixel itself always weighs (reach 1 at distance 0), so weightSum > 0.
     return FfxFloat32x4(sum / weightSum, ffxDofSaturate(weightSum * (1.0f / FFX_DOF_PI)));
-}
-
-// The far pixels of small radius in front of a far pixel of |radius| `absCoc` (half-res px) that reach
-// it, at full resolution (scatter as gather, as ffxDofGatherOwnSurface): each weighs its reach over its
-// disc's area times its ffxDofSmallSourceShare, the share the blur leaves out of the half-res layers.
-// Returns their color and, in w, their coverage (the summed weights over pi), to be composed over the far
-// layer. Sources reach at most 2 FFX_DOF_FAR_LAYER_ONLY_RADIUS + 0.5 full-res px, within the border.
-FFX_DOF_INLINE FfxFloat32x4 ffxDofGatherSmallSources(FfxInt32x2 local, FfxFloat32 absCoc)
-{
-    FfxInt32 extent = FfxInt32(2.0f * FFX_DOF_FAR_LAYER_ONLY_RADIUS);
-    FfxFloat32x3 sum = FfxFloat32x3(0.0f, 0.0f, 0.0f);
-    FfxFloat32 weightSum = 0.0f;
-    FFX_DOF_LOOP
-    for (FfxInt32 dy = -extent; dy <= extent; ++dy)
-    {
-        FfxInt32 row = (local.y + dy) * FfxInt32(FFX_DOF_OWN_SURFACE_SIDE) + local.x;
-        FFX_DOF_LOOP
-        for (FfxInt32 dx = -extent; dx <= extent; ++dx)
-        {
-            FfxFloat32x4 colorRadius = ffxDofLoadOwnSample(FfxUInt32(row + dx));
-            // Far sources only (negative radius), in half-res px for the shares.
-            FfxFloat32 sourceAbs = max(-colorRadius.w, 0.0f) * 0.5f;
-            FfxFloat32 share = sourceAbs >= FFX_DOF_IN_FOCUS_RADIUS
-                                   ? ffxDofSmallSourceShare(sourceAbs, absCoc) * ffxDofFarNearerShare(sourceAbs, absCoc)
-                                   : 0.0f;
-            FfxFloat32 weight = ffxDofReach(2.0f * sourceAbs, sqrt(FfxFloat32(dx * dx + dy * dy))) *
-                                ffxDofRoundAreaWeight(2.0f * sourceAbs) * share;
-            sum += FfxFloat32x3(colorRadius.x, colorRadius.y, colorRadius.z) * weight;
-            weightSum += weight;
-        }
-    }
-    if (weightSum <= 0.0f)
-        return FfxFloat32x4(0.0f, 0.0f, 0.0f, 0.0f);
-    return FfxFloat32x4(sum / weightSum, ffxDofSaturate(weightSum * (1.0f / FFX_DOF_PI)));
-}
-
-// Whether a tile of (min, max) signed radii may hold far pixels of radius below FFX_DOF_FAR_LAYER_ONLY_RADIUS
-// (ffxDofGatherSmallSources): the group loads the full-res neighbourhood when its tile or one of the 8 around
-// it may.
-FFX_DOF_INLINE FfxBoolean ffxDofTileMayHoldSmallSources(FfxFloat32x2 tile)
-{
-    return tile.x <= -FFX_DOF_IN_FOCUS_RADIUS && tile.y > -FFX_DOF_FAR_LAYER_ONLY_RADIUS;
 }
 
 // Share of the half-res layers in a pixel whose own surface is gathered at full resolution: 0 up to
@@ -408,8 +371,8 @@ FFX_DOF_INLINE FfxFloat32 ffxDofOwnSurfaceLayerShare(FfxFloat32 absCoc)
 // alone) when the pixel keeps its input value.
 FFX_DOF_INLINE FfxBoolean ffxDofComposePixel(FfxUInt32x2 pixel, FfxUInt32x2 inQuad, FfxInt32x2 filteredOrigin,
                                              FfxDofConstants constants, FfxDofQuadNeighbourhood neighbourhood,
-                                             FfxBoolean ownSurfaceTile, FfxBoolean smallSourceTile,
-                                             FfxInt32x2 ownSurfaceOrigin, FFX_DOF_INOUT(FfxFloat32x4) color)
+                                             FfxBoolean ownSurfaceTile, FfxInt32x2 ownSurfaceOrigin,
+                                             FFX_DOF_INOUT(FfxFloat32x4) color)
 {
     FfxFloat32 coc =
         ffxDofCocFromDepth(ffxDofLoadInputDepth(pixel), constants.cocScale, constants.cocBias, constants.cocLimit);
@@ -488,14 +451,7 @@ FFX_DOF_INLINE FfxBoolean ffxDofComposePixel(FfxUInt32x2 pixel, FfxUInt32x2 inQu
             ownBlur = ffxDofLerp(ownBlur, farSum / farWeight, (1.0f - ownCoverage) * farValidity);
         FfxFloat32 farShare =
             gatherOwn ? max(layerShare, 1.0f - ownCoverage) * farValidity : ffxDofFarBlend(absCoc, farValidity);
-        FfxFloat32x3 farColor = farSum / farWeight;
-        // Small far sources in front of the pixel, which the blur left out of the layers it shows.
-        if (smallSourceTile && coc <= -FFX_DOF_IN_FOCUS_RADIUS && absCoc > FFX_DOF_FAR_LAYER_ONLY_RADIUS - 1.0f)
-        {
-            FfxFloat32x4 small = ffxDofGatherSmallSources(FfxInt32x2(pixel) - ownSurfaceOrigin, absCoc);
-            farColor = ffxDofLerp(farColor, FfxFloat32x3(small.x, small.y, small.z), small.w);
-        }
-        result = ffxDofLerp(result, farColor, ownNear ? farValidity : farShare);
+        result = ffxDofLerp(result, farSum / farWeight, ownNear ? farValidity : farShare);
     }
     result = ffxDofLerp(result, nearColor, ffxDofNearLayerWeight(nearOpacity));
     if (ownNear)
@@ -557,17 +513,9 @@ FFX_DOF_INLINE void ffxDofComposite(FfxUInt32x2 groupId, FfxUInt32 localIndex)
     // The full-res neighbourhood of the own-surface gather, after the barrier above: in place, the
     // input of the group's own tile is read from group-shared memory (ffxDofCompositeInput).
     FfxBoolean ownSurfaceTile = ffxDofTileGathersOwnSurface(tile);
-    FfxBoolean smallSourceTile = false;
-    FFX_DOF_UNROLL
-    for (FfxUInt32 k = 0u; k < 9u; ++k)
-    {
-        FfxInt32x2 around = clamp(FfxInt32x2(groupId) + FfxInt32x2(FfxInt32(k % 3u) - 1, FfxInt32(k / 3u) - 1),
-                                  FfxInt32x2(0, 0), FfxInt32x2(constants.tileCount) - FfxInt32x2(1, 1));
-        smallSourceTile = smallSourceTile || ffxDofTileMayHoldSmallSources(ffxDofLoadTile(FfxUInt32x2(around)));
-    }
     FfxInt32x2 ownSurfaceOrigin =
         FfxInt32x2(groupId * extent) - FfxInt32x2(FFX_DOF_OWN_SURFACE_BORDER, FFX_DOF_OWN_SURFACE_BORDER);
-    if (ownSurfaceTile || smallSourceTile)
+    if (ownSurfaceTile)
     {
         for (FfxUInt32 index = localIndex; index < FfxUInt32(FFX_DOF_OWN_SURFACE_SIDE * FFX_DOF_OWN_SURFACE_SIDE);
              index += FfxUInt32(FFX_DOF_GROUP_THREADS))
@@ -577,9 +525,10 @@ FFX_DOF_INLINE void ffxDofComposite(FfxUInt32x2 groupId, FfxUInt32 localIndex)
                                                     FfxInt32(index / FfxUInt32(FFX_DOF_OWN_SURFACE_SIDE))),
                       FfxInt32x2(0, 0), FfxInt32x2(constants.fullSize) - FfxInt32x2(1, 1));
             FfxFloat32x4 inputColor = ffxDofCompositeInput(FfxUInt32x2(pixel), quad, scale);
-            ffxDofStoreOwnSample(index, FfxFloat32x3(inputColor.x, inputColor.y, inputColor.z),
-                                 2.0f * ffxDofCocFromDepth(ffxDofLoadInputDepth(FfxUInt32x2(pixel)), constants.cocScale,
-                                                           constants.cocBias, constants.cocLimit));
+            ffxDofStoreOwnSample(
+                index, FfxFloat32x3(inputColor.x, inputColor.y, inputColor.z),
+                2.0f * abs(ffxDofCocFromDepth(ffxDofLoadInputDepth(FfxUInt32x2(pixel)), constants.cocScale,
+                                              constants.cocBias, constants.cocLimit)));
         }
     }
     FfxInt32x2 filteredOrigin = tileOrigin - FfxInt32x2(1, 1);
@@ -605,11 +554,11 @@ FFX_DOF_INLINE void ffxDofComposite(FfxUInt32x2 groupId, FfxUInt32 localIndex)
             continue;
         FfxFloat32x4 color = neighbourhood.color[(inQuad.y + 1u) * 4u + inQuad.x + 1u];
 #if FFX_DOF_OPTION_OUTPUT_PRE_INIT
-        if (ffxDofComposePixel(pixel, inQuad, filteredOrigin, constants, neighbourhood, ownSurfaceTile, smallSourceTile,
+        if (ffxDofComposePixel(pixel, inQuad, filteredOrigin, constants, neighbourhood, ownSurfaceTile,
                                ownSurfaceOrigin, color))
             ffxDofStoreOutput(pixel, ffxDofUnscaleColor(color, scale));
 #else
-        if (ffxDofComposePixel(pixel, inQuad, filteredOrigin, constants, neighbourhood, ownSurfaceTile, smallSourceTile,
+        if (ffxDofComposePixel(pixel, inQuad, filteredOrigin, constants, neighbourhood, ownSurfaceTile,
                                ownSurfaceOrigin, color))
             ffxDofStoreOutput(pixel, ffxDofUnscaleColor(color, scale));
         else

@@ -291,16 +291,13 @@ void writeSmallLights(std::ostream& md, vkrun::Device& device) {
     for (const quality::SmallLightCase& light : below) belowWithin += light.energyOk();
     md << "\n"
        << belowWithin << " of " << below.size()
-       << " cases within 5% (`quality: small lights below radius 6 px`, a ratchet). Until 2026-11-28 16 of 72 "
-          "were: a 1 px light at 2 px kept 0.51 of its energy, since what its own full-resolution blur spread "
-          "onto its neighbours was dropped (they belong to the background and showed the half-res far layer, "
-          "which carried the light as a disc of about one texel), and most others gained up to 27%. Now a "
-          "background pixel gathers at full resolution the small-radius far pixels in front of it that reach "
-          "it (`ffxDofGatherSmallSources`), the blur leaving them out of its half-res layer "
-          "(`ffxDofSmallSourceShare`), and a texel whose own surface the composite gathers at full resolution "
-          "leaves that surface out of its far layer (`ffxDofOwnGatherShare`), where it was counted twice. What "
-          "remains: lights of 1 and 2 px at 4 px gain up to 21%, where the composite hands its own gather over "
-          "to the layers.\n\n";
+       << " cases within 5% (`quality: small lights below radius 6 px`, a ratchet). At 2 px a 1 px light keeps "
+          "half its energy: what its own full-resolution blur spreads onto its neighbours is dropped, since "
+          "they belong to the background and show the half-res far layer, which carries the light as a disc "
+          "of about one texel. Most other cases gain, up to 27%; likely the light's own pixels then show both "
+          "their full-resolution blur and the far layer's disc, which carries the same light again. What "
+          "would carry them: background pixels gathering, at full resolution, the small-radius pixels in "
+          "front of them that reach them, the blur leaving those out of the half-res layer (issue 17).\n\n";
 }
 
 // The mid-lights scene's lights change each other: its minimal case (tests/quality/test_small_lights.cpp).

@@ -1075,23 +1075,3 @@ TEST_CASE("Hole fill proximity: the inverse square of the distance, bounded at h
     CHECK(ffxDofFillProximity(0.25f) == Approx(4.0f));
     for (float d = 0.5f; d < 40.0f; d += 0.5f) CHECK(ffxDofFillProximity(d + 0.5f) < ffxDofFillProximity(d));
 }
-
-TEST_CASE("Small sources: the composite's full-resolution share and the blur's complement meet", "[blur]") {
-    // A source below radius 2 in front of a receiver of 3 or more: all drawn at full resolution.
-    CHECK(ffxDofSmallSourceShare(1.0f, 16.0f) == 1.0f);
-    CHECK(ffxDofSmallSourceShare(2.0f, 3.0f) == 1.0f);
-    // Sources from FFX_DOF_FAR_LAYER_ONLY_RADIUS on stay in the half-res layers, and so do receivers
-    // below 2 (their own pixels are gathered at full resolution, their layers keep the light).
-    CHECK(ffxDofSmallSourceShare(FFX_DOF_FAR_LAYER_ONLY_RADIUS, 16.0f) == 0.0f);
-    CHECK(ffxDofSmallSourceShare(1.0f, 2.0f) == 0.0f);
-    CHECK(ffxDofSmallSourceShare(2.5f, 2.5f) == Approx(0.25f));
-    // The own surface's share: none in focus, below the gather's start or in the near field, all from 1
-    // to 2, handing over linearly to the layers by 3.
-    CHECK(ffxDofOwnGatherShare(-0.9f) == 0.0f);
-    CHECK(ffxDofOwnGatherShare(2.0f) == 0.0f);
-    CHECK(ffxDofOwnGatherShare(-1.0f) == 1.0f);
-    CHECK(ffxDofOwnGatherShare(-2.0f) == 1.0f);
-    CHECK(ffxDofOwnGatherShare(-2.5f) == Approx(0.5f));
-    CHECK(ffxDofOwnGatherShare(-3.0f) == 0.0f);
-    CHECK(ffxDofOwnGatherShare(-20.0f) == 0.0f);
-}

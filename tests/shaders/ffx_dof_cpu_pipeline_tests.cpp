@@ -633,17 +633,3 @@ TEST_CASE("A slightly blurred near object shows the background within its radius
     CHECK(coverage > 0.55);
     CHECK(coverage < 0.8);
 }
-
-TEST_CASE("A small far light at a radius the composite blurs at full resolution keeps its energy", "[pipeline]") {
-    // Radii of 0.8 to 1.4 half-res px in front of a background at 16: the light's own pixels are blurred
-    // at full resolution, the background around it shows the half-res layers. Before the background drew
-    // such lights at full resolution itself (ffxDofGatherSmallSources), a 1 px light at 0.8 kept 0.33 of
-    // its energy and one at 1.0 0.51; with the light drawn both by its own pixels and by the far layer, up
-    // to 1.26.
-    for (float radius : {0.8f, 1.0f, 1.4f}) {
-        for (const ffxdoftest::LightCase& light : ffxdoftest::runSmallFarLightCases(radius, {1, 2, 3})) {
-            INFO("radius " << radius << ", " << light.size << " px: energy " << light.energyAdded / light.inputEnergy);
-            CHECK(light.energyAdded / light.inputEnergy == Approx(1.0).margin(0.05));
-        }
-    }
-}
