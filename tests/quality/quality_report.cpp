@@ -297,7 +297,17 @@ void writeSmallLights(std::ostream& md, vkrun::Device& device) {
           "of about one texel. Most other cases gain, up to 27%; likely the light's own pixels then show both "
           "their full-resolution blur and the far layer's disc, which carries the same light again. What "
           "would carry them: background pixels gathering, at full resolution, the small-radius pixels in "
-          "front of them that reach them, the blur leaving those out of the half-res layer (issue 17).\n\n";
+          "front of them that reach them, the blur leaving those out of the half-res layer (issue 17). Tried on "
+          "2026-11-28, not kept for its cost: exactly that (a full-resolution gather of far pixels of radius "
+          "below 3 half-res px in front of each layer pixel, within 6 px, in groups whose neighbourhood holds one; "
+          "the blur leaving the same share out of the receiver's nearer layer, and a texel's own surface out of "
+          "its far layer where the composite gathers it). 56 of 72 cases within 5% (2 px: 1.04 to 1.06, 3 px: "
+          "1.00), mid-lights 28.28 -> 29.70 dB with its light 0 at 1.02, busy-background +0.22 dB, floor -0.07 "
+          "dB; but the composite took 1.4 times as long (blur + composite 1.13 to 1.22 times, docs/performance.md), "
+          "since the benchmark's floor holds small radii in a band of tiles. Limiting it to sources brighter than "
+          "white broke the balance with the blur, which reads such lights diluted in coarse texels (1.2 to 1.3 of "
+          "their energy): the selection must be one both passes see, such as a per-tile flag from the "
+          "downsample.\n\n";
 }
 
 // The mid-lights scene's lights change each other: its minimal case (tests/quality/test_small_lights.cpp).
