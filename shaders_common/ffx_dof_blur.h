@@ -522,7 +522,7 @@ FFX_DOF_INLINE void ffxDofWalkSamples(FFX_DOF_INOUT(FfxDofGather) gather, FFX_DO
         // above. Beyond the image border the image is taken as its edge texels repeated, each copy at
         // the position walked: judged from the clamped texel instead, every read past the border counted
         // the edge texel again at its own place, so a near object within a kernel of the border grew
-        // opaque there (near-object's near field 0.58 dB lower, docs/quality.md).
+        // opaque there (near-object's near field 0.59 dB lower, docs/quality.md).
         FfxFloat32x2 toTexel = walk.texel - ring.centerToCorner;
         walk = ffxDofAnnulusNext(annulus, walk);
         FfxFloat32x3 color;
