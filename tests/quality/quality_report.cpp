@@ -257,13 +257,11 @@ void writeSmallLights(std::ostream& md, vkrun::Device& device) {
           "\"Light offsets\"), the disc-shift column is what remains.\n\n";
 
     // Below the gated radii: a known failure, with its ratchet in tests/quality/test_small_lights.cpp.
-    std::vector<std::array<int, 2>> offsets;
-    for (const auto& offset : quality::kSmallLightOffsets) offsets.push_back({offset[0], offset[1]});
     const std::vector<double> radii(std::begin(quality::kSmallLightRadiiBelowGate),
                                     std::end(quality::kSmallLightRadiiBelowGate));
     const std::vector<int> sizes(std::begin(quality::kSmallLightSizesBelowGate),
                                  std::end(quality::kSmallLightSizesBelowGate));
-    const std::vector<quality::SmallLightCase> below = quality::runSmallLightCases(device, radii, sizes, offsets);
+    const std::vector<quality::SmallLightCase> below = quality::runSmallLightCasesBelowGate(device);
     md << "### Below the gated radii (a known failure)\n\n"
        << "The same lights (1, 2, 3 and 5 px, the same three places) at radii of 2, 3 and 4 px, where the "
           "composite blurs the light's own pixels at full resolution (radii under 6 px: the fixed 3x3 blur, "

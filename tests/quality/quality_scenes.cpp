@@ -619,11 +619,23 @@ double addedGreen(const vkrun::HostImage& a, const vkrun::HostImage& b) {
 
 }  // namespace
 
-std::vector<SmallLightCase> runSmallLightCases(vkrun::Device& device) {
+namespace {
+std::vector<std::array<int, 2>> smallLightOffsets() {
     std::vector<std::array<int, 2>> offsets;
     for (const auto& offset : kSmallLightOffsets) offsets.push_back({offset[0], offset[1]});
+    return offsets;
+}
+}  // namespace
+
+std::vector<SmallLightCase> runSmallLightCases(vkrun::Device& device) {
     return runSmallLightCases(device, {std::begin(kSmallLightRadii), std::end(kSmallLightRadii)},
-                              {std::begin(kSmallLightSizes), std::end(kSmallLightSizes)}, offsets);
+                              {std::begin(kSmallLightSizes), std::end(kSmallLightSizes)}, smallLightOffsets());
+}
+
+std::vector<SmallLightCase> runSmallLightCasesBelowGate(vkrun::Device& device) {
+    return runSmallLightCases(device, {std::begin(kSmallLightRadiiBelowGate), std::end(kSmallLightRadiiBelowGate)},
+                              {std::begin(kSmallLightSizesBelowGate), std::end(kSmallLightSizesBelowGate)},
+                              smallLightOffsets());
 }
 
 std::vector<SmallLightCase> runSmallLightCases(vkrun::Device& device, const std::vector<double>& radii,

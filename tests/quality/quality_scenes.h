@@ -196,6 +196,8 @@ std::vector<SmallLightCase> runSmallLightCases(vkrun::Device& device, const std:
 // are a known failure (docs/quality.md, small lights), with a ratchet on how many keep their energy.
 constexpr double kSmallLightRadiiBelowGate[] = {2.0, 3.0, 4.0};  // full-res px, far field
 constexpr int kSmallLightSizesBelowGate[] = {1, 2, 3, 5};
+// Those cases: kSmallLightRadiiBelowGate x kSmallLightSizesBelowGate at kSmallLightOffsets, both precisions.
+std::vector<SmallLightCase> runSmallLightCasesBelowGate(vkrun::Device& device);
 
 // The mid-lights scene's lights change each other (docs/quality.md, lights of the mid-lights scene): its
 // minimal case. A dim light (2 x 2 px of 50) at radius 6 or 13 px, 16, 24 or 32 px beside a bright one (3 x

@@ -38,13 +38,9 @@ TEST_CASE(
 // (raise kCasesWithinFivePercent with it), never fall.
 TEST_CASE("small lights below radius 6 px: no fewer cases within 5% than measured", "[quality][vulkan][lights]") {
     constexpr size_t kCasesWithinFivePercent = 16;  // of 72
-    std::vector<std::array<int, 2>> offsets;
-    for (const auto& offset : quality::kSmallLightOffsets) offsets.push_back({offset[0], offset[1]});
     quality::validatedDevice().clearValidationMessages();
-    const std::vector<quality::SmallLightCase> lights = quality::runSmallLightCases(
-        quality::validatedDevice(),
-        {std::begin(quality::kSmallLightRadiiBelowGate), std::end(quality::kSmallLightRadiiBelowGate)},
-        {std::begin(quality::kSmallLightSizesBelowGate), std::end(quality::kSmallLightSizesBelowGate)}, offsets);
+    const std::vector<quality::SmallLightCase> lights =
+        quality::runSmallLightCasesBelowGate(quality::validatedDevice());
     REQUIRE(lights.size() == 72);
     size_t within = 0;
     for (const quality::SmallLightCase& light : lights) {
