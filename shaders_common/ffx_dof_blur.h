@@ -47,6 +47,7 @@
 #define FFX_DOF_BLUR_H
 
 #include "ffx_dof_common.h"
+#include "ffx_dof_small_sources.h"
 
 #if defined(FFX_CPU)
 FfxDofConstants ffxDofGetConstants();
@@ -78,10 +79,6 @@ FfxFloat32 ffxDofLoadColorScale();
 // highlights a fraction of a pixel nearer than their background must keep their own radius
 // (0.5 cost the far-highlights scene 0.29 dB, 0.1 nothing; docs/technique.md).
 #define FFX_DOF_EQUAL_WEIGHT_SPREAD 0.1f
-// Far-field samples up to this much farther than the texel itself (|radius| larger, half-res px) are
-// its own surface (front layer), so that a receding surface is not split into layers; the share then
-// falls to 0 over one more pixel (ffxDofFarFrontShare).
-#define FFX_DOF_FAR_FRONT_TOLERANCE 0.5f
 // Highlights: a far sample whose light, spread over its own disc, comes near display white (its disc
 // level: luminance x texel area / disc area, in the input's units) is spread over a disc up to
 // FFX_DOF_HIGHLIGHT_INSET half-res px smaller, its area weight following, so its energy is kept. The
@@ -378,27 +375,6 @@ FFX_DOF_INLINE FfxDofBucket ffxDofEmptyBucket()
     return bucket;
 }
 
-// How much of a far-field sample of |radius| `absRadius` belongs to the front layer of a texel whose
-// own far-field |radius| is `centerAbsRadius`: 1 up to FFX_DOF_FAR_FRONT_TOLERANCE beyond the texel's
-// own radius (the texel's surface and everything nearer the camera), falling to 0 one pixel of radius
-// farther (the background, seen only where the front layer leaves gaps). A texel in the near field has
-// no front layer: every far-field sample is background to it.
-FFX_DOF_INLINE FfxFloat32 ffxDofFarFrontShare(FfxFloat32 absRadius, FfxFloat32 centerAbsRadius)
-{
-    return ffxDofSaturate(centerAbsRadius + FFX_DOF_FAR_FRONT_TOLERANCE + 1.0f - absRadius);
-}
-
-// How much of a far-field sample belongs to the layer in front of the texel's own surface: 1 from
-// FFX_DOF_FAR_FRONT_TOLERANCE + 1 px of radius nearer than the texel's own, 0 from
-// FFX_DOF_FAR_FRONT_TOLERANCE nearer (the mirror of ffxDofFarFrontShare). A small light in front of a
-// farther background covers part of the background's texels: composed over them by its coverage
-// instead of normalised with them, it keeps its energy (normalised, a light of a few texels at a
-// radius of 3 px lost up to a fifth of it to the background's weights).
-FFX_DOF_INLINE FfxFloat32 ffxDofFarNearerShare(FfxFloat32 absRadius, FfxFloat32 centerAbsRadius)
-{
-    return ffxDofSaturate(centerAbsRadius - FFX_DOF_FAR_FRONT_TOLERANCE - absRadius);
-}
-
 // Far-field color of a texel from its two layers, composed front to back. Every far sample spreads its
 // light over its own disc, so the front layer's summed weights over pi are the share of the texel it
 // covers (a solid surface of any radius sums to pi: opacity 1); the background shows through the rest.
@@ -473,6 +449,9 @@ struct FfxDofKernel
     FfxDofPixelAperture aperture;   // the bokeh shape this texel sees
     FfxFloat32 inverseColorScale;   // 1 / ffxDofColorRangeScale: the color MIPs back in input units
     FfxFloat32 highlightRampScale;  // 1 / the kernel radius^2 (ffxDofHighlightSpreadRadius)
+    FfxFloat32 ownGatherShare;      // ffxDofOwnGatherShare of the texel's own radius, where the tile draws
+                                    // small sources at full resolution (ffxDofTileDrawsSmallSources), else 0
+    FfxFloat32 smallSourceCut;      // 1 where ffxDofSmallSourceShare leaves small sources out, else 0
 };
 
 // Which parts of the gather a tile class needs; literals at every call, so what a path leaves out
@@ -576,10 +555,17 @@ FFX_DOF_INLINE void ffxDofWalkSamples(FFX_DOF_INOUT(FfxDofGather) gather, FFX_DO
             FfxFloat32 nearerShare = kernel.centerIsNear ? 0.0f : ffxDofFarNearerShare(absCoc, centerAbsCoc);
             FfxFloat32 frontWeight = farWeight * frontShare;
             FfxFloat32 nearerWeight = farWeight * nearerShare;
-            gather.farNearer.color += color * nearerWeight;
-            gather.farNearer.weight += nearerWeight;
-            gather.farFront.color += color * (frontWeight - nearerWeight);
-            gather.farFront.weight += frontWeight - nearerWeight;
+            // The texel's own surface, where the composite gathers it at full resolution, stays out of
+            // the far layer, which then holds only what lies in front and behind (ffxDofOwnGatherShare).
+            FfxFloat32 frontKept = (frontWeight - nearerWeight) * (1.0f - kernel.ownGatherShare);
+            // Small sources in front of a texel that the composite draws from the half-res layers are
+            // drawn there at full resolution instead (ffxDofSmallSourceShare).
+            FfxFloat32 nearerKept =
+                nearerWeight * (1.0f - kernel.smallSourceCut * ffxDofSmallSourceShare(absCoc, centerAbsCoc));
+            gather.farNearer.color += color * nearerKept;
+            gather.farNearer.weight += nearerKept;
+            gather.farFront.color += color * frontKept;
+            gather.farFront.weight += frontKept;
             gather.farBack.color += color * (farWeight - frontWeight);
             gather.farBack.weight += farWeight - frontWeight;
         }
@@ -832,6 +818,11 @@ FFX_DOF_INLINE FfxDofBlurResult ffxDofBlurTexel(FfxUInt32x2 texel, FfxFloat32x4 
     kernel.origin = kernel.center + ffxDofKernelJitter(texel, constants.frameIndex);
     kernel.inverseColorScale = 1.0f / ffxDofLoadColorScale();
     kernel.highlightRampScale = ffxDofRoundAreaWeight(kernelRadius);
+    // Near texels have no layer in front of their own surface to leave small sources out of.
+    FfxBoolean drawsSmallSources =
+        !kernel.centerIsNear && ffxDofTileDrawsSmallSources(texel / FfxUInt32(FFX_DOF_TILE_SIZE), constants.tileCount);
+    kernel.ownGatherShare = drawsSmallSources ? ffxDofOwnGatherShare(kernel.centerCoc) : 0.0f;
+    kernel.smallSourceCut = drawsSmallSources ? 1.0f : 0.0f;
 
     FfxDofGather gather;
     gather.nearSum = FfxFloat32x3(0.0f, 0.0f, 0.0f);

@@ -50,6 +50,7 @@ FfxUInt32x2 ffxDofLoadCoarseMip(FfxInt32x2 texel, FfxUInt32 mip)
 #if FFX_DOF_USES_TILES
 FFX_DOF_BINDING_SRV(FFX_DOF_SRV_TILES) uniform texture2D ffxDofTiles;
 FfxFloat32x2 ffxDofLoadTile(FfxUInt32x2 tile) { return texelFetch(ffxDofTiles, ivec2(tile), 0).xy; }
+FfxFloat32x3 ffxDofLoadTileRangeAndPeak(FfxUInt32x2 tile) { return texelFetch(ffxDofTiles, ivec2(tile), 0).xyz; }
 #endif
 
 #if FFX_DOF_USES_DILATED_TILES
@@ -114,10 +115,10 @@ void ffxDofStoreCoarseMip(FfxUInt32 mip, FfxUInt32x2 texel, FfxUInt32x2 packed)
 #endif
 
 #if FFX_DOF_USES_RW_TILES
-FFX_DOF_BINDING_UAV_IMAGE(FFX_DOF_UAV_TILES, rg16f) uniform writeonly image2D ffxDofRwTiles;
-void ffxDofStoreTile(FfxUInt32x2 tile, FfxFloat32x2 cocMinMax)
+FFX_DOF_BINDING_UAV_IMAGE(FFX_DOF_UAV_TILES, rgba16f) uniform writeonly image2D ffxDofRwTiles;
+void ffxDofStoreTile(FfxUInt32x2 tile, FfxFloat32x2 cocMinMax, FfxFloat32 colorPeak)
 {
-    imageStore(ffxDofRwTiles, ivec2(tile), vec4(cocMinMax.x, cocMinMax.y, 0.0f, 0.0f));
+    imageStore(ffxDofRwTiles, ivec2(tile), vec4(cocMinMax.x, cocMinMax.y, colorPeak, 0.0f));
 }
 #endif
 

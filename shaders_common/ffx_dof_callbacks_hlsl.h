@@ -72,8 +72,9 @@ FfxUInt32x2 ffxDofLoadCoarseMip(FfxInt32x2 texel, FfxUInt32 mip)
 #endif
 
 #if FFX_DOF_USES_TILES
-FFX_DOF_BINDING_SRV(FFX_DOF_SRV_TILES) Texture2D<float2> ffxDofTiles : FFX_DOF_HLSL_REGISTER(t, FFX_DOF_SRV_TILES);
-FfxFloat32x2 ffxDofLoadTile(FfxUInt32x2 tile) { return ffxDofTiles.Load(int3(tile, 0)); }
+FFX_DOF_BINDING_SRV(FFX_DOF_SRV_TILES) Texture2D<float4> ffxDofTiles : FFX_DOF_HLSL_REGISTER(t, FFX_DOF_SRV_TILES);
+FfxFloat32x2 ffxDofLoadTile(FfxUInt32x2 tile) { return ffxDofTiles.Load(int3(tile, 0)).xy; }
+FfxFloat32x3 ffxDofLoadTileRangeAndPeak(FfxUInt32x2 tile) { return ffxDofTiles.Load(int3(tile, 0)).xyz; }
 #endif
 
 #if FFX_DOF_USES_DILATED_TILES
@@ -133,8 +134,11 @@ void ffxDofStoreCoarseMip(FfxUInt32 mip, FfxUInt32x2 texel, FfxUInt32x2 packed)
 
 #if FFX_DOF_USES_RW_TILES
 FFX_DOF_BINDING_UAV_IMAGE(FFX_DOF_UAV_TILES)
-RWTexture2D<float2> ffxDofRwTiles : FFX_DOF_HLSL_REGISTER(u, FFX_DOF_UAV_TILES);
-void ffxDofStoreTile(FfxUInt32x2 tile, FfxFloat32x2 cocMinMax) { ffxDofRwTiles[tile] = cocMinMax; }
+RWTexture2D<float4> ffxDofRwTiles : FFX_DOF_HLSL_REGISTER(u, FFX_DOF_UAV_TILES);
+void ffxDofStoreTile(FfxUInt32x2 tile, FfxFloat32x2 cocMinMax, FfxFloat32 colorPeak)
+{
+    ffxDofRwTiles[tile] = float4(cocMinMax, colorPeak, 0.0f);
+}
 #endif
 
 #if FFX_DOF_USES_RW_DILATED_TILES

@@ -58,6 +58,18 @@
 // Radii at or above this are near-field samples (scatter as a layer in front).
 #define FFX_DOF_NEAR_THRESHOLD 0.5f
 
+// Far-field samples up to this much farther than the texel itself (|radius| larger, half-res px) are
+// its own surface (front layer), so that a receding surface is not split into layers; the share then
+// falls to 0 over one more pixel (ffxDofFarFrontShare).
+#define FFX_DOF_FAR_FRONT_TOLERANCE 0.5f
+// From this |radius| (half-res px) on, the composite shows the half-res layers alone; below it a pixel's
+// own surface is gathered at full resolution (ffx_dof_composite.h).
+#define FFX_DOF_FAR_LAYER_ONLY_RADIUS 3.0f
+// Below this |radius| (half-res px; 2 full-res px) the fixed 3x3 blur, a disc of 1.5 px, mixed into the
+// input by variance is the right size already: the gather starts here (from 0.5 instead: the same
+// figures within 0.15 dB, and more tiles loading the full-res neighbourhood).
+#define FFX_DOF_OWN_SURFACE_MIN_RADIUS 1.0f
+
 // ---- CoC ----------------------------------------------------------------------------------------
 
 // How much a sample of |radius| reaches a pixel `distance` away (scatter-as-gather), with half a
@@ -66,6 +78,53 @@
 FFX_DOF_INLINE FfxFloat32 ffxDofReach(FfxFloat32 absRadius, FfxFloat32 distance)
 {
     return ffxDofSaturate(absRadius - distance + 0.5f);
+}
+
+// ---- Far-field layers (the blur's and the composite's) ----------------------------------------------
+
+// How much of a far-field sample of |radius| `absRadius` belongs to the front layer of a texel whose
+// own far-field |radius| is `centerAbsRadius`: 1 up to FFX_DOF_FAR_FRONT_TOLERANCE beyond the texel's
+// own radius (the texel's surface and everything nearer the camera), falling to 0 one pixel of radius
+// farther (the background, seen only where the front layer leaves gaps). A texel in the near field has
+// no front layer: every far-field sample is background to it.
+FFX_DOF_INLINE FfxFloat32 ffxDofFarFrontShare(FfxFloat32 absRadius, FfxFloat32 centerAbsRadius)
+{
+    return ffxDofSaturate(centerAbsRadius + FFX_DOF_FAR_FRONT_TOLERANCE + 1.0f - absRadius);
+}
+
+// How much of a far-field sample belongs to the layer in front of the texel's own surface: 1 from
+// FFX_DOF_FAR_FRONT_TOLERANCE + 1 px of radius nearer than the texel's own, 0 from
+// FFX_DOF_FAR_FRONT_TOLERANCE nearer (the mirror of ffxDofFarFrontShare). A small light in front of a
+// farther background covers part of the background's texels: composed over them by its coverage
+// instead of normalised with them, it keeps its energy (normalised, a light of a few texels at a
+// radius of 3 px lost up to a fifth of it to the background's weights).
+FFX_DOF_INLINE FfxFloat32 ffxDofFarNearerShare(FfxFloat32 absRadius, FfxFloat32 centerAbsRadius)
+{
+    return ffxDofSaturate(centerAbsRadius - FFX_DOF_FAR_FRONT_TOLERANCE - absRadius);
+}
+
+// The share of a far sample of |radius| `absRadius` (half-res px) in front of a receiver of |radius|
+// `receiverAbsRadius` that the composite draws at full resolution (ffxDofGatherSmallSources) instead of
+// the blur at half resolution: sources below FFX_DOF_FAR_LAYER_ONLY_RADIUS (their own pixels are blurred
+// at full resolution) on receivers that show the half-res layers (from FFX_DOF_FAR_LAYER_ONLY_RADIUS, over
+// the last px below it as the composite hands over). At half resolution such a light's disc is a texel or
+// two, and what its own pixels' full-resolution blur spread onto the background was lost: a 1 px light at
+// 2 px kept half its energy (docs/quality.md, small lights).
+FFX_DOF_INLINE FfxFloat32 ffxDofSmallSourceShare(FfxFloat32 absRadius, FfxFloat32 receiverAbsRadius)
+{
+    return ffxDofSaturate(FFX_DOF_FAR_LAYER_ONLY_RADIUS - absRadius) *
+           ffxDofSaturate(receiverAbsRadius - FFX_DOF_FAR_LAYER_ONLY_RADIUS + 1.0f);
+}
+
+// How much of a far texel of signed radius `coc` (half-res px) the composite draws from its own pixels
+// gathered at full resolution rather than from the far layer: 1 from a radius of 1 (where the composite's
+// own-surface gather starts) to 2, falling to 0 at FFX_DOF_FAR_LAYER_ONLY_RADIUS as the composite hands
+// over to the layers. The blur leaves that share of the texel's own surface out of its far layer: counted
+// in both, a small light's own pixels showed it twice (a 1 px light at 4 px added 1.2 to 1.3 times its
+// energy once the background around it drew it at full resolution; docs/quality.md, small lights).
+FFX_DOF_INLINE FfxFloat32 ffxDofOwnGatherShare(FfxFloat32 coc)
+{
+    return coc <= -FFX_DOF_OWN_SURFACE_MIN_RADIUS ? ffxDofSaturate(FFX_DOF_FAR_LAYER_ONLY_RADIUS - abs(coc)) : 0.0f;
 }
 
 // Signed CoC radius of a depth value, always in 32-bit: rounding depth to 16 bits first would move

@@ -32,6 +32,7 @@
 
 #include "ffx_dof_common.h"
 #include "ffx_dof_focus.h"
+#include "ffx_dof_small_sources.h"
 
 #if defined(FFX_CPU)
 FfxDofConstants ffxDofGetConstants();
@@ -65,17 +66,11 @@ FfxFloat32 ffxDofLoadColorScale();
 // Per-axis variance, in half-res px^2, that the far layer adds to its disc: the 2x2 downsample box
 // (1/12), the bilinear upsample (1/6), the kernel jitter and the half-pixel anti-aliased reach.
 #define FFX_DOF_FAR_LAYER_EXTRA_VARIANCE 0.3f
-// From this |radius| (half-res px) on, the far layer alone makes the pixel.
-#define FFX_DOF_FAR_LAYER_ONLY_RADIUS 3.0f
 // Below FFX_DOF_FAR_LAYER_ONLY_RADIUS a pixel's own surface is gathered at full resolution
 // (ffxDofGatherOwnSurface): the half-res layers, upsampled, blur a disc of a few pixels by half its
 // radius again and peak it (the circular gather, which ignores depth, beat them by up to 5 dB there).
 // Over the last half-res pixel of radius below the limit the gather hands over to the layers.
 #define FFX_DOF_OWN_SURFACE_FADE 1.0f
-// Below this |radius| (half-res px; 2 full-res px) the fixed 3x3 blur, a disc of 1.5 px, mixed into the
-// input by variance is the right size already: the gather starts here (from 0.5 instead: the same
-// figures within 0.15 dB, and more tiles loading the full-res neighbourhood).
-#define FFX_DOF_OWN_SURFACE_MIN_RADIUS 1.0f
 // Full-res pixels read around the tile: the largest own-surface disc, 2 * 3 + 0.5 rounded up.
 #define FFX_DOF_OWN_SURFACE_BORDER 7
 #define FFX_DOF_OWN_SURFACE_SIDE (FFX_DOF_COMPOSITE_GROUP_EXTENT + 2 * FFX_DOF_OWN_SURFACE_BORDER)
@@ -171,6 +166,9 @@ FFX_DOF_GROUPSHARED FfxDofFloat3 ffxDofSharedNear[FFX_DOF_FILTERED_SIDE * FFX_DO
 FFX_DOF_GROUPSHARED FfxDofFloat3 ffxDofSharedFar[FFX_DOF_FILTERED_SIDE * FFX_DOF_FILTERED_SIDE];
 FFX_DOF_GROUPSHARED FfxFloat32x2 ffxDofSharedAlpha[FFX_DOF_FILTERED_SIDE * FFX_DOF_FILTERED_SIDE];
 FFX_DOF_GROUPSHARED FfxFloat32 ffxDofSharedCoc[FFX_DOF_FILTERED_SIDE * FFX_DOF_FILTERED_SIDE];
+// Whether each of the 9 tiles around the group's may hold bright small sources (ffxDofTileDrawsSmallSources
+// with one load per invocation instead of nine per invocation).
+FFX_DOF_GROUPSHARED FfxUInt32 ffxDofSharedSmallSourceTiles[9];
 // Full-res input around the tile for the own-surface gather: per pixel its scaled color and |radius|
 // in full-res px as four 16-bit floats in 8 bytes, whatever the permutation's precision. The gather
 // reads this array 50 to 150 times per pixel: one 8-byte read instead of a color and a radius, and a
@@ -179,19 +177,31 @@ FFX_DOF_GROUPSHARED FfxFloat32 ffxDofSharedCoc[FFX_DOF_FILTERED_SIDE * FFX_DOF_F
 // at most FFX_DOF_COLOR_RANGE_LIMIT after scaling, well inside the 16-bit range.
 FFX_DOF_GROUPSHARED FfxUInt32x2 ffxDofSharedOwnSample[FFX_DOF_OWN_SURFACE_SIDE * FFX_DOF_OWN_SURFACE_SIDE];
 
-FFX_DOF_INLINE void ffxDofStoreOwnSample(FfxUInt32 index, FfxFloat32x3 color, FfxFloat32 absRadius)
+// The lowest mantissa bit of the stored |radius| says whether the pixel is in the far field, which only
+// ffxDofGatherSmallSources asks: a sign the own-surface gather would take abs() of per read made the
+// pass about 10% slower on lavapipe, while the bit moves the radius by at most one unit in the last
+// place of a half (0.004 px at 4 px).
+#define FFX_DOF_OWN_SAMPLE_FAR_BIT 0x10000u
+
+FFX_DOF_INLINE void ffxDofStoreOwnSample(FfxUInt32 index, FfxFloat32x3 color, FfxFloat32 radius)
 {
-    ffxDofSharedOwnSample[index] =
-        FfxUInt32x2(ffxDofPackHalf2(FfxFloat32x2(color.x, color.y)), ffxDofPackHalf2(FfxFloat32x2(color.z, absRadius)));
+    FfxUInt32 blueRadius = ffxDofPackHalf2(FfxFloat32x2(color.z, abs(radius)));
+    blueRadius = (blueRadius & ~FFX_DOF_OWN_SAMPLE_FAR_BIT) | (radius < 0.0f ? FFX_DOF_OWN_SAMPLE_FAR_BIT : 0u);
+    ffxDofSharedOwnSample[index] = FfxUInt32x2(ffxDofPackHalf2(FfxFloat32x2(color.x, color.y)), blueRadius);
 }
 
-// Color in xyz, |radius| in w.
+// Color in xyz, |radius| (full-res px) in w.
 FFX_DOF_INLINE FfxFloat32x4 ffxDofLoadOwnSample(FfxUInt32 index)
 {
     FfxUInt32x2 packed = ffxDofSharedOwnSample[index];
     FfxFloat32x2 redGreen = ffxDofUnpackHalf2(packed.x);
     FfxFloat32x2 blueRadius = ffxDofUnpackHalf2(packed.y);
     return FfxFloat32x4(redGreen.x, redGreen.y, blueRadius.x, blueRadius.y);
+}
+
+FFX_DOF_INLINE FfxBoolean ffxDofOwnSampleIsFar(FfxUInt32 index)
+{
+    return (ffxDofSharedOwnSample[index].y & FFX_DOF_OWN_SAMPLE_FAR_BIT) != 0u;
 }
 
 #if FFX_DOF_OPTION_OUTPUT_PRE_INIT
@@ -357,6 +367,40 @@ FFX_DOF_INLINE FfxFloat32x4 ffxDofGatherOwnSurface(FfxInt32x2 local, FfxFloat32 
     return FfxFloat32x4(sum / weightSum, ffxDofSaturate(weightSum * (1.0f / FFX_DOF_PI)));
 }
 
+// The far pixels of small radius in front of a far pixel of |radius| `absCoc` (half-res px) that reach
+// it, at full resolution (scatter as gather, as ffxDofGatherOwnSurface): each weighs its reach over its
+// disc's area times its ffxDofSmallSourceShare, the share the blur leaves out of the half-res layers.
+// Returns their color and, in w, their coverage (the summed weights over pi), to be composed over the far
+// layer. Sources reach at most 2 FFX_DOF_FAR_LAYER_ONLY_RADIUS + 0.5 full-res px, within the border.
+FFX_DOF_INLINE FfxFloat32x4 ffxDofGatherSmallSources(FfxInt32x2 local, FfxFloat32 absCoc)
+{
+    FfxInt32 extent = FfxInt32(2.0f * FFX_DOF_FAR_LAYER_ONLY_RADIUS);
+    FfxFloat32x3 sum = FfxFloat32x3(0.0f, 0.0f, 0.0f);
+    FfxFloat32 weightSum = 0.0f;
+    FFX_DOF_LOOP
+    for (FfxInt32 dy = -extent; dy <= extent; ++dy)
+    {
+        FfxInt32 row = (local.y + dy) * FfxInt32(FFX_DOF_OWN_SURFACE_SIDE) + local.x;
+        FFX_DOF_LOOP
+        for (FfxInt32 dx = -extent; dx <= extent; ++dx)
+        {
+            FfxFloat32x4 colorRadius = ffxDofLoadOwnSample(FfxUInt32(row + dx));
+            // Far sources only, in half-res px for the shares.
+            FfxFloat32 sourceAbs = colorRadius.w * 0.5f;
+            FfxFloat32 share = ffxDofOwnSampleIsFar(FfxUInt32(row + dx)) && sourceAbs >= FFX_DOF_IN_FOCUS_RADIUS
+                                   ? ffxDofSmallSourceShare(sourceAbs, absCoc) * ffxDofFarNearerShare(sourceAbs, absCoc)
+                                   : 0.0f;
+            FfxFloat32 weight = ffxDofReach(2.0f * sourceAbs, sqrt(FfxFloat32(dx * dx + dy * dy))) *
+                                ffxDofRoundAreaWeight(2.0f * sourceAbs) * share;
+            sum += FfxFloat32x3(colorRadius.x, colorRadius.y, colorRadius.z) * weight;
+            weightSum += weight;
+        }
+    }
+    if (weightSum <= 0.0f)
+        return FfxFloat32x4(0.0f, 0.0f, 0.0f, 0.0f);
+    return FfxFloat32x4(sum / weightSum, ffxDofSaturate(weightSum * (1.0f / FFX_DOF_PI)));
+}
+
 // Share of the half-res layers in a pixel whose own surface is gathered at full resolution: 0 up to
 // the last FFX_DOF_OWN_SURFACE_FADE half-res px below FFX_DOF_FAR_LAYER_ONLY_RADIUS, 1 from there.
 FFX_DOF_INLINE FfxFloat32 ffxDofOwnSurfaceLayerShare(FfxFloat32 absCoc)
@@ -371,8 +415,8 @@ FFX_DOF_INLINE FfxFloat32 ffxDofOwnSurfaceLayerShare(FfxFloat32 absCoc)
 // alone) when the pixel keeps its input value.
 FFX_DOF_INLINE FfxBoolean ffxDofComposePixel(FfxUInt32x2 pixel, FfxUInt32x2 inQuad, FfxInt32x2 filteredOrigin,
                                              FfxDofConstants constants, FfxDofQuadNeighbourhood neighbourhood,
-                                             FfxBoolean ownSurfaceTile, FfxInt32x2 ownSurfaceOrigin,
-                                             FFX_DOF_INOUT(FfxFloat32x4) color)
+                                             FfxBoolean ownSurfaceTile, FfxBoolean smallSourceTile,
+                                             FfxInt32x2 ownSurfaceOrigin, FFX_DOF_INOUT(FfxFloat32x4) color)
 {
     FfxFloat32 coc =
         ffxDofCocFromDepth(ffxDofLoadInputDepth(pixel), constants.cocScale, constants.cocBias, constants.cocLimit);
@@ -451,7 +495,14 @@ FFX_DOF_INLINE FfxBoolean ffxDofComposePixel(FfxUInt32x2 pixel, FfxUInt32x2 inQu
             ownBlur = ffxDofLerp(ownBlur, farSum / farWeight, (1.0f - ownCoverage) * farValidity);
         FfxFloat32 farShare =
             gatherOwn ? max(layerShare, 1.0f - ownCoverage) * farValidity : ffxDofFarBlend(absCoc, farValidity);
-        result = ffxDofLerp(result, farSum / farWeight, ownNear ? farValidity : farShare);
+        FfxFloat32x3 farColor = farSum / farWeight;
+        // Small far sources in front of the pixel, which the blur left out of the layers it shows.
+        if (smallSourceTile && coc <= -FFX_DOF_IN_FOCUS_RADIUS && absCoc > FFX_DOF_FAR_LAYER_ONLY_RADIUS - 1.0f)
+        {
+            FfxFloat32x4 small = ffxDofGatherSmallSources(FfxInt32x2(pixel) - ownSurfaceOrigin, absCoc);
+            farColor = ffxDofLerp(farColor, FfxFloat32x3(small.x, small.y, small.z), small.w);
+        }
+        result = ffxDofLerp(result, farColor, ownNear ? farValidity : farShare);
     }
     result = ffxDofLerp(result, nearColor, ffxDofNearLayerWeight(nearOpacity));
     if (ownNear)
@@ -497,6 +548,11 @@ FFX_DOF_INLINE void ffxDofComposite(FfxUInt32x2 groupId, FfxUInt32 localIndex)
                 ffxDofScaleColor(ffxDofLoadInputColor(pixel), scale);
     }
 #endif
+    if (localIndex < 9u)
+        ffxDofSharedSmallSourceTiles[localIndex] = ffxDofTileMayHoldBrightSmallSources(ffxDofLoadTileRangeAndPeak(
+                                                       ffxDofTileAround(groupId, localIndex, constants.tileCount)))
+                                                       ? 1u
+                                                       : 0u;
     FfxInt32x2 tileOrigin = FfxInt32x2(groupId * FfxUInt32(FFX_DOF_TILE_SIZE));
     for (FfxUInt32 index = localIndex; index < FfxUInt32(FFX_DOF_RAW_SIDE * FFX_DOF_RAW_SIDE);
          index += FfxUInt32(FFX_DOF_GROUP_THREADS))
@@ -513,9 +569,14 @@ FFX_DOF_INLINE void ffxDofComposite(FfxUInt32x2 groupId, FfxUInt32 localIndex)
     // The full-res neighbourhood of the own-surface gather, after the barrier above: in place, the
     // input of the group's own tile is read from group-shared memory (ffxDofCompositeInput).
     FfxBoolean ownSurfaceTile = ffxDofTileGathersOwnSurface(tile);
+    FfxUInt32 smallSourceTiles = 0u;
+    FFX_DOF_UNROLL
+    for (FfxUInt32 k = 0u; k < 9u; ++k)
+        smallSourceTiles |= ffxDofSharedSmallSourceTiles[k];
+    FfxBoolean smallSourceTile = smallSourceTiles != 0u;
     FfxInt32x2 ownSurfaceOrigin =
         FfxInt32x2(groupId * extent) - FfxInt32x2(FFX_DOF_OWN_SURFACE_BORDER, FFX_DOF_OWN_SURFACE_BORDER);
-    if (ownSurfaceTile)
+    if (ownSurfaceTile || smallSourceTile)
     {
         for (FfxUInt32 index = localIndex; index < FfxUInt32(FFX_DOF_OWN_SURFACE_SIDE * FFX_DOF_OWN_SURFACE_SIDE);
              index += FfxUInt32(FFX_DOF_GROUP_THREADS))
@@ -525,10 +586,9 @@ FFX_DOF_INLINE void ffxDofComposite(FfxUInt32x2 groupId, FfxUInt32 localIndex)
                                                     FfxInt32(index / FfxUInt32(FFX_DOF_OWN_SURFACE_SIDE))),
                       FfxInt32x2(0, 0), FfxInt32x2(constants.fullSize) - FfxInt32x2(1, 1));
             FfxFloat32x4 inputColor = ffxDofCompositeInput(FfxUInt32x2(pixel), quad, scale);
-            ffxDofStoreOwnSample(
-                index, FfxFloat32x3(inputColor.x, inputColor.y, inputColor.z),
-                2.0f * abs(ffxDofCocFromDepth(ffxDofLoadInputDepth(FfxUInt32x2(pixel)), constants.cocScale,
-                                              constants.cocBias, constants.cocLimit)));
+            ffxDofStoreOwnSample(index, FfxFloat32x3(inputColor.x, inputColor.y, inputColor.z),
+                                 2.0f * ffxDofCocFromDepth(ffxDofLoadInputDepth(FfxUInt32x2(pixel)), constants.cocScale,
+                                                           constants.cocBias, constants.cocLimit));
         }
     }
     FfxInt32x2 filteredOrigin = tileOrigin - FfxInt32x2(1, 1);
@@ -554,11 +614,11 @@ FFX_DOF_INLINE void ffxDofComposite(FfxUInt32x2 groupId, FfxUInt32 localIndex)
             continue;
         FfxFloat32x4 color = neighbourhood.color[(inQuad.y + 1u) * 4u + inQuad.x + 1u];
 #if FFX_DOF_OPTION_OUTPUT_PRE_INIT
-        if (ffxDofComposePixel(pixel, inQuad, filteredOrigin, constants, neighbourhood, ownSurfaceTile,
+        if (ffxDofComposePixel(pixel, inQuad, filteredOrigin, constants, neighbourhood, ownSurfaceTile, smallSourceTile,
                                ownSurfaceOrigin, color))
             ffxDofStoreOutput(pixel, ffxDofUnscaleColor(color, scale));
 #else
-        if (ffxDofComposePixel(pixel, inQuad, filteredOrigin, constants, neighbourhood, ownSurfaceTile,
+        if (ffxDofComposePixel(pixel, inQuad, filteredOrigin, constants, neighbourhood, ownSurfaceTile, smallSourceTile,
                                ownSurfaceOrigin, color))
             ffxDofStoreOutput(pixel, ffxDofUnscaleColor(color, scale));
         else

@@ -1,5 +1,5 @@
-// Pass 1 of 5: depth to CoC, (min, max) signed CoC per tile, global max |CoC|, and the frame's colour
-// peak (largest finite colour channel, for ffxDofColorRangeScale; see docs/technique.md, HDR range).
+// Pass 1 of 5: depth to CoC, (min, max) signed CoC and colour peak per tile, global max |CoC|, and the
+// frame's colour peak (largest finite colour channel, for ffxDofColorRangeScale; see docs/technique.md, HDR range).
 //
 // One workgroup covers one tile (FFX_DOF_TILE_SIZE half-res px = 16 full-res px square); each of
 // its 64 invocations reduces a 2 x 2 full-res quad. Depth is reduced instead of CoC: the radius is a
@@ -18,7 +18,7 @@ FfxDofConstants ffxDofGetConstants();
 FfxFloat32 ffxDofLoadInputDepth(FfxUInt32x2 pixel);
 FfxFloat32x4 ffxDofLoadInputColor(FfxUInt32x2 pixel);
 void ffxDofAtomicMaxColorPeak(FfxFloat32 peak);
-void ffxDofStoreTile(FfxUInt32x2 tile, FfxFloat32x2 cocMinMax);
+void ffxDofStoreTile(FfxUInt32x2 tile, FfxFloat32x2 cocMinMax, FfxFloat32 colorPeak);
 void ffxDofAtomicMaxGlobalRadius(FfxFloat32 radius);
 #endif
 
@@ -125,7 +125,9 @@ FFX_DOF_INLINE void ffxDofDownsampleDepth(FfxUInt32x2 groupId, FfxUInt32 localIn
         }
         FfxFloat32 nearCoc = ffxDofCocFromDepth(nearDepth, constants.cocScale, constants.cocBias, constants.cocLimit);
         FfxFloat32 farCoc = ffxDofCocFromDepth(farDepth, constants.cocScale, constants.cocBias, constants.cocLimit);
-        ffxDofStoreTile(groupId, FfxFloat32x2(farCoc, nearCoc));
+        // The tile's peak tells the blur and the composite where bright small sources may lie
+        // (ffx_dof_small_sources.h); clamped so that every API's half store keeps it finite.
+        ffxDofStoreTile(groupId, FfxFloat32x2(farCoc, nearCoc), min(colorPeak, FFX_DOF_FLOAT16_MAX));
         ffxDofAtomicMaxGlobalRadius(max(abs(farCoc), abs(nearCoc)));
         // Most frames stay below the limit, and a peak the scale ignores need not cost an atomic.
         if (colorPeak > FFX_DOF_COLOR_RANGE_LIMIT)

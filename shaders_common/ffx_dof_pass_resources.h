@@ -21,6 +21,7 @@
 #define FFX_DOF_USES_RW_DILATED_TILES 1
 #define FFX_DOF_USES_GLOBALS 1
 #elif defined(FFX_DOF_PASS_BLUR)
+#define FFX_DOF_USES_TILES 1  // the colour peaks of ffx_dof_small_sources.h
 #define FFX_DOF_USES_HALF_COLOR 1
 #define FFX_DOF_USES_HALF_COC 1
 #define FFX_DOF_USES_COARSE_MIPS 1

@@ -17,7 +17,8 @@
 //                                            is MIP l + 1 of the chain, each texel its color, CoC and
 //                                            where in the texel its light lies (ffxDofPackCoarseTexel:
 //                                            the blur reads a coarse sample in one fetch)
-//   TILES          tiles, R16G16 float       (min, max) signed CoC per tile
+//   TILES          tiles, R16G16B16A16 float (min, max) signed CoC per tile; z: its colour peak (largest
+//                                            finite channel, clamped to the half range), w: unused
 //   DILATED_TILES  tiles, R16G16B16A16 float dilated (far, near) radii per tile, and the (min, max)
 //                                            radius of the tiles its blur kernels read
 //   NEAR_COLOR     half, B10G11R11 float     near-field color

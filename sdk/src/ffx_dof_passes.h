@@ -24,14 +24,7 @@ constexpr uint32_t kMipCount = 4;
 
 // The internal images, API-neutral: the one table both backends create from (each maps the format
 // to its API's enum). Names, formats and slots follow shaders_common/ffx_dof_resources.h.
-enum class InternalFormat : uint32_t {
-    R11G11B10Float,
-    R16Float,
-    R16G16Float,
-    R16G16B16A16Float,
-    R8G8Unorm,
-    R32G32Uint
-};
+enum class InternalFormat : uint32_t { R11G11B10Float, R16Float, R16G16B16A16Float, R8G8Unorm, R32G32Uint };
 
 enum class ImageExtent : uint32_t {
     Half,     // ceil(W / 2) x ceil(H / 2)
@@ -55,7 +48,7 @@ constexpr InternalImageSpec kInternalImages[] = {
     // MIPs 1.. of the half-res colour and CoC, packed with their light offsets (ffxDofPackCoarseTexel).
     {"COARSE_MIPS", InternalFormat::R32G32Uint, ImageExtent::Quarter, kMipCount - 1, FFX_DOF_SRV_COARSE_MIPS,
      FFX_DOF_UAV_COARSE_MIP1},
-    {"TILES", InternalFormat::R16G16Float, ImageExtent::Tiles, 1, FFX_DOF_SRV_TILES, FFX_DOF_UAV_TILES},
+    {"TILES", InternalFormat::R16G16B16A16Float, ImageExtent::Tiles, 1, FFX_DOF_SRV_TILES, FFX_DOF_UAV_TILES},
     {"DILATED_TILES", InternalFormat::R16G16B16A16Float, ImageExtent::Tiles, 1, FFX_DOF_SRV_DILATED_TILES,
      FFX_DOF_UAV_DILATED_TILES},
     {"NEAR_COLOR", InternalFormat::R11G11B10Float, ImageExtent::Half, 1, FFX_DOF_SRV_NEAR_COLOR,

@@ -62,8 +62,7 @@ const ShaderImage kSampledImages[] = {
 const std::set<std::string> kEngineStorageImages = {"ffxDofOutput"};
 const std::set<std::string> kEngineSampledImages = {"ffxDofInputColor", "ffxDofInputDepth"};
 
-const char* const kFormatNames[] = {"R11G11B10Float",    "R16Float",  "R16G16Float",
-                                    "R16G16B16A16Float", "R8G8Unorm", "R32G32Uint"};
+const char* const kFormatNames[] = {"R11G11B10Float", "R16Float", "R16G16B16A16Float", "R8G8Unorm", "R32G32Uint"};
 
 SpvImageFormat spirvFormat(InternalFormat format) {
     switch (format) {
@@ -71,8 +70,6 @@ SpvImageFormat spirvFormat(InternalFormat format) {
             return SpvImageFormatR11fG11fB10f;
         case InternalFormat::R16Float:
             return SpvImageFormatR16f;
-        case InternalFormat::R16G16Float:
-            return SpvImageFormatRg16f;
         case InternalFormat::R16G16B16A16Float:
             return SpvImageFormatRgba16f;
         case InternalFormat::R8G8Unorm:

@@ -289,23 +289,20 @@ void writeSmallLights(std::ostream& md, vkrun::Device& device) {
     for (const quality::SmallLightCase& light : below) belowWithin += light.energyOk();
     md << "\n"
        << belowWithin << " of " << below.size()
-       << " cases within 5% (`quality: small lights below radius 6 px`, a ratchet). At 2 px a 1 px light keeps "
-          "half its energy: what its own full-resolution blur spreads onto its neighbours is dropped, since "
-          "they belong to the background and show the half-res far layer, which carries the light as a disc "
-          "of about one texel. Most other cases gain, up to 27%; likely the light's own pixels then show both "
-          "their full-resolution blur and the far layer's disc, which carries the same light again. What "
-          "would carry them: background pixels gathering, at full resolution, the small-radius pixels in "
-          "front of them that reach them, the blur leaving those out of the half-res layer (issue 17). Tried on "
-          "2026-11-28, not kept for its cost: exactly that (a full-resolution gather of far pixels of radius "
-          "below 3 half-res px in front of each layer pixel, within 6 px, in groups whose neighbourhood holds one; "
-          "the blur leaving the same share out of the receiver's nearer layer, and a texel's own surface out of "
-          "its far layer where the composite gathers it). 56 of 72 cases within 5% (2 px: 1.04 to 1.06, 3 px: "
-          "1.00), mid-lights 28.28 -> 29.70 dB with its light 0 at 1.02, busy-background +0.22 dB, floor -0.07 "
-          "dB; but the composite took 1.4 times as long (blur + composite 1.13 to 1.22 times, docs/performance.md), "
-          "since the benchmark's floor holds small radii in a band of tiles. Limiting it to sources brighter than "
-          "white broke the balance with the blur, which reads such lights diluted in coarse texels (1.2 to 1.3 of "
-          "their energy): the selection must be one both passes see, such as a per-tile flag from the "
-          "downsample.\n\n";
+       << " cases within 5% (`quality: small lights below radius 6 px`, a ratchet). Until 2026-11-28 16 of 72 "
+          "were: a 1 px light at 2 px kept 0.51 of its energy, since what its own full-resolution blur spread "
+          "onto its neighbours was dropped (they belong to the background and showed the half-res far layer, "
+          "which carried the light as a disc of about one texel), and most others gained up to 27%. Now, in "
+          "tiles that may hold far pixels of radius below 3 half-res px and a channel above white "
+          "(`ffx_dof_small_sources.h`, a flag both passes read from the downsample's tiles), a background pixel "
+          "gathers at full resolution the small-radius far pixels in front of it that reach it "
+          "(`ffxDofGatherSmallSources`), the blur leaves them out of its half-res layer "
+          "(`ffxDofSmallSourceShare`), and a texel whose own surface the composite gathers at full resolution "
+          "leaves that surface out of its far layer (`ffxDofOwnGatherShare`), where it was counted twice. What "
+          "remains: lights of 1 and 2 px at 4 px gain up to 21%, where the composite hands its own gather over "
+          "to the layers. Run everywhere, the same gather made the composite 1.4 times as long on the "
+          "benchmark's floor, whose band of small radii holds nothing above white; with the flag it is not run "
+          "there (docs/performance.md, \"Small far sources where they are bright\").\n\n";
 }
 
 // The mid-lights scene's lights change each other: its minimal case (tests/quality/test_small_lights.cpp).
@@ -431,8 +428,11 @@ void writeSceneLights(std::ostream& md, vkrun::Device& device) {
           "downsample (docs/technique.md, light rims): 3 lights passed before, light 3 added 1.24 times its "
           "energy, and the scene gained 3.0 dB against the truth. Since a coarse texel's light is drawn about "
           "where it lies in the texel (its light offset, docs/technique.md) the scene gained 4.6 dB more (23.71 -> "
-          "28.29), and light 2, which changed light 3's disc by -1191 while it was there, changes it less. The "
-          "worst figure now is light "
+          "28.29), and light 2, which changed light 3's disc by -1191 while it was there, changes it less. Since "
+          "tiles that may hold small lights above white draw them at full resolution (docs/technique.md, small far "
+          "sources) the scene gained 1.4 dB more (28.28 -> 29.70) and light 0 (at 2.8 px) passes (0.86 -> 1.02); "
+          "light 6, beside an in-focus object, went from 1.27 to 0.81 of the truth's. The worst figure now is "
+          "light "
        << worst->emitter << "'s (" << (worst->float32 ? "32" : "16") << "-bit: " << number(worst->energyRatio(), "%.3f")
        << "). " << ownDiscText.str()
        << " Ring merging and the rim inset are decided per tile from the radii its kernels read (dilate's footprint), "

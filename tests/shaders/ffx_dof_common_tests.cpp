@@ -1075,3 +1075,65 @@ TEST_CASE("Hole fill proximity: the inverse square of the distance, bounded at h
     CHECK(ffxDofFillProximity(0.25f) == Approx(4.0f));
     for (float d = 0.5f; d < 40.0f; d += 0.5f) CHECK(ffxDofFillProximity(d + 0.5f) < ffxDofFillProximity(d));
 }
+
+TEST_CASE("Small sources: the composite's full-resolution share and the blur's complement meet", "[blur]") {
+    // A source below radius 2 in front of a receiver of 3 or more: all drawn at full resolution.
+    CHECK(ffxDofSmallSourceShare(1.0f, 16.0f) == 1.0f);
+    CHECK(ffxDofSmallSourceShare(2.0f, 3.0f) == 1.0f);
+    // Sources from FFX_DOF_FAR_LAYER_ONLY_RADIUS on stay in the half-res layers, and so do receivers
+    // below 2 (their own pixels are gathered at full resolution, their layers keep the light).
+    CHECK(ffxDofSmallSourceShare(FFX_DOF_FAR_LAYER_ONLY_RADIUS, 16.0f) == 0.0f);
+    CHECK(ffxDofSmallSourceShare(1.0f, 2.0f) == 0.0f);
+    CHECK(ffxDofSmallSourceShare(2.5f, 2.5f) == Approx(0.25f));
+    // The own surface's share: none in focus, below the gather's start or in the near field, all from 1
+    // to 2, handing over linearly to the layers by 3.
+    CHECK(ffxDofOwnGatherShare(-0.9f) == 0.0f);
+    CHECK(ffxDofOwnGatherShare(2.0f) == 0.0f);
+    CHECK(ffxDofOwnGatherShare(-1.0f) == 1.0f);
+    CHECK(ffxDofOwnGatherShare(-2.0f) == 1.0f);
+    CHECK(ffxDofOwnGatherShare(-2.5f) == Approx(0.5f));
+    CHECK(ffxDofOwnGatherShare(-3.0f) == 0.0f);
+    CHECK(ffxDofOwnGatherShare(-20.0f) == 0.0f);
+}
+
+TEST_CASE("Small sources: a tile may hold bright ones where a channel is above white and a far radius below 3",
+          "[blur][composite]") {
+    // (min, max) signed radius, colour peak.
+    CHECK(ffxDofTileMayHoldBrightSmallSources(FfxFloat32x3(-2.0f, -2.0f, 1.5f)));
+    CHECK(ffxDofTileMayHoldBrightSmallSources(FfxFloat32x3(-20.0f, 4.0f, 1000.0f)));  // spans the range
+    // At or below white: the half-res path.
+    CHECK_FALSE(ffxDofTileMayHoldBrightSmallSources(FfxFloat32x3(-2.0f, -2.0f, FFX_DOF_SMALL_SOURCE_MIN_PEAK)));
+    // Every far radius from FFX_DOF_FAR_LAYER_ONLY_RADIUS on: the layers alone draw them.
+    CHECK_FALSE(ffxDofTileMayHoldBrightSmallSources(FfxFloat32x3(-20.0f, -FFX_DOF_FAR_LAYER_ONLY_RADIUS, 50.0f)));
+    // In focus or near only: no far source.
+    CHECK_FALSE(ffxDofTileMayHoldBrightSmallSources(FfxFloat32x3(-0.4f, 6.0f, 50.0f)));
+    CHECK(ffxDofTileMayHoldBrightSmallSources(FfxFloat32x3(-FFX_DOF_IN_FOCUS_RADIUS, 6.0f, 50.0f)));
+}
+
+TEST_CASE("Small sources: the 3 x 3 tiles around a tile, clamped to the image", "[blur][composite]") {
+    const FfxUInt32x2 tileCount(5u, 4u);
+    for (FfxUInt32 k = 0u; k < 9u; ++k) {
+        const FfxUInt32x2 inside = ffxDofTileAround(FfxUInt32x2(2u, 2u), k, tileCount);
+        CHECK(inside.x == 1u + k % 3u);
+        CHECK(inside.y == 1u + k / 3u);
+        const FfxUInt32x2 corner = ffxDofTileAround(FfxUInt32x2(4u, 0u), k, tileCount);
+        CHECK(corner.x == std::min(3u + k % 3u, 4u));
+        CHECK(corner.y == (k / 3u == 0u ? 0u : k / 3u - 1u));
+    }
+}
+
+TEST_CASE("Own samples keep |radius| as a half within one ulp and say which are far", "[composite]") {
+    for (const float radius : {-11.0f, -4.0f, -2.0f, -1.0f, -0.3f, 0.0f, 0.3f, 1.0f, 2.5f, 4.0f, 11.0f}) {
+        ffxDofStoreOwnSample(7u, FfxFloat32x3(0.25f, 2.0f, 9.0f), radius);
+        const FfxFloat32x4 sample = ffxDofLoadOwnSample(7u);
+        INFO("radius " << radius << ": stored " << sample.w);
+        CHECK(sample.x == 0.25f);
+        CHECK(sample.y == 2.0f);
+        CHECK(sample.z == 9.0f);
+        // |radius| rounded to a half, then its lowest mantissa bit set or cleared: one unit in the last place.
+        const float rounded = ffxDofUnpackHalf2(ffxDofPackHalf2(FfxFloat32x2(std::abs(radius), 0.0f))).x;
+        const float ulp = std::ldexp(1.0f, std::ilogb(std::max(rounded, 1.0f / 1024.0f)) - 10);
+        CHECK(std::abs(sample.w - rounded) <= ulp);
+        CHECK(ffxDofOwnSampleIsFar(7u) == (radius < 0.0f));
+    }
+}

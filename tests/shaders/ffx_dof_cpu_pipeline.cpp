@@ -45,6 +45,7 @@ struct State {
     Image<float> halfCoc;
     Image<glm::uvec2> coarseMips[FFX_DOF_OPTION_MAX_MIP];  // COARSE_MIPS, by MIP of the half-res chain (0 unused)
     Image<glm::vec2> tiles, layerAlpha;
+    Image<float> tileColorPeaks;  // TILES' z
     Image<glm::vec4> dilatedTiles;
     Image<glm::vec3> nearColor, farColor;
     Image<glm::vec4> output;
@@ -162,7 +163,10 @@ FfxFloat32x4 ffxDofLoadInputColor(FfxUInt32x2 p) {
     if (p.x >= g_state->scene->width || p.y >= g_state->scene->height) throw std::out_of_range("color read");
     return g_state->scene->color[size_t(p.y) * g_state->scene->width + p.x];
 }
-void ffxDofStoreTile(FfxUInt32x2 t, FfxFloat32x2 v) { g_state->tiles.store(t.x, t.y, v); }
+void ffxDofStoreTile(FfxUInt32x2 t, FfxFloat32x2 v, FfxFloat32 peak) {
+    g_state->tiles.store(t.x, t.y, v);
+    g_state->tileColorPeaks.store(t.x, t.y, peak);
+}
 static void atomicMaxWord(uint32_t word, FfxFloat32 value) {
     uint32_t bits = ffxDofAsUInt(std::max(value, 0.0f));
     uint32_t current = g_state->globals[word].load();
@@ -189,6 +193,10 @@ void ffxDofStoreCoarseMip(FfxUInt32 mip, FfxUInt32x2 t, FfxUInt32x2 packed) {
 }
 FfxFloat32 ffxDofLoadGlobalMaxRadius() { return ffxDofAsFloat(g_state->globals[FFX_DOF_GLOBALS_MAX_RADIUS].load()); }
 FfxFloat32x2 ffxDofLoadTile(FfxUInt32x2 t) { return g_state->tiles.at(int32_t(t.x), int32_t(t.y)); }
+FfxFloat32x3 ffxDofLoadTileRangeAndPeak(FfxUInt32x2 t) {
+    const glm::vec2 range = g_state->tiles.at(int32_t(t.x), int32_t(t.y));
+    return {range.x, range.y, g_state->tileColorPeaks.at(int32_t(t.x), int32_t(t.y))};
+}
 void ffxDofStoreDilatedTile(FfxUInt32x2 t, FfxFloat32x4 v) { g_state->dilatedTiles.store(t.x, t.y, v); }
 FfxFloat32x4 ffxDofLoadDilatedTile(FfxUInt32x2 t) { return g_state->dilatedTiles.at(int32_t(t.x), int32_t(t.y)); }
 FfxDofFloat3 ffxDofLoadHalfColor(FfxInt32x2 t) { return g_state->halfColor.at(t.x, t.y); }
@@ -234,6 +242,7 @@ std::vector<glm::vec4> runPipeline(const Scene& scene, const Settings& settings,
         state.coarseMips[mip].resize(size.x, size.y);
     }
     state.tiles.resize(k.tileCount.x, k.tileCount.y);
+    state.tileColorPeaks.resize(k.tileCount.x, k.tileCount.y);
     state.dilatedTiles.resize(k.tileCount.x, k.tileCount.y);
     state.nearColor.resize(k.halfSize.x, k.halfSize.y);
     state.farColor.resize(k.halfSize.x, k.halfSize.y);
@@ -269,6 +278,7 @@ std::vector<glm::vec4> runPipeline(const Scene& scene, const Settings& settings,
         layers->tilesX = k.tileCount.x;
         layers->tilesY = k.tileCount.y;
         layers->tiles = state.tiles.texels;
+        layers->tileColorPeaks = state.tileColorPeaks.texels;
         layers->dilatedTiles = state.dilatedTiles.texels;
         layers->tileClasses.clear();
         for (const glm::vec4& dilated : state.dilatedTiles.texels)
@@ -287,7 +297,7 @@ std::vector<glm::vec4> runPipeline(const Scene& scene, const Settings& settings,
     return state.output.texels;
 }
 
-PointDisc measurePointDisc(float radius, int position, uint32_t frame) {
+PointDisc measurePointDisc(float radius, int position, uint32_t frame, float value) {
     const uint32_t width = 96, height = 80;
     const int px = 48 + position, py = 40 + 3 * position;
     Scene scene;
@@ -295,7 +305,7 @@ PointDisc measurePointDisc(float radius, int position, uint32_t frame) {
     scene.height = height;
     scene.color.assign(size_t(width) * height, glm::vec4(0.0f, 0.0f, 0.0f, 1.0f));
     scene.depth.assign(size_t(width) * height, radius);  // radius = -depth: far field
-    scene.color[size_t(py) * width + size_t(px)] = glm::vec4(10.0f, 10.0f, 10.0f, 1.0f);
+    scene.color[size_t(py) * width + size_t(px)] = glm::vec4(value, value, value, 1.0f);
     Settings settings;
     settings.frameIndex = frame;
     Layers layers;

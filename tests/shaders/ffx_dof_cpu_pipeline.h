@@ -34,6 +34,7 @@ struct Settings {
 struct Layers {
     uint32_t halfWidth = 0, halfHeight = 0, tilesX = 0, tilesY = 0;
     std::vector<glm::vec2> tiles;         // pass 1
+    std::vector<float> tileColorPeaks;    // pass 1: TILES' z
     std::vector<glm::vec4> dilatedTiles;  // pass 3: far, near, footprint min, footprint max
     std::vector<uint32_t> tileClasses;    // pass 4: FFX_DOF_TILE_CLASS_* of each tile (as classified)
     std::vector<float> coc0;              // MIP 0 of COC_MIPS
@@ -62,13 +63,13 @@ struct LightCase {
 std::vector<LightCase> runSmallFarLightCases(float lightRadius = 10.4f,
                                              const std::vector<int>& sizes = {1, 3, 5, 9, 13});
 
-// A single bright far pixel (value 10) on black, both at far radius `radius` (half-res px), at one of
-// two positions in the quad grid: the energy of the half-res far layer (2.5: a quarter of one
+// A single far pixel of `value` on black, both at far radius `radius` (half-res px), at one of two
+// positions in the quad grid: the energy of the half-res far layer (value / 4: a quarter of one
 // half-res texel's light) and its flatness (std / mean within 0.7 R of the point).
 struct PointDisc {
     double energy = 0.0;
     double flatness = 0.0;
 };
-PointDisc measurePointDisc(float radius, int position, uint32_t frame);
+PointDisc measurePointDisc(float radius, int position, uint32_t frame, float value = 10.0f);
 
 }  // namespace ffxdoftest

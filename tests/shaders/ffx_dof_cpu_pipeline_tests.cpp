@@ -259,6 +259,21 @@ TEST_CASE("Tiles hold the CoC range of their pixels", "[pipeline]") {
     CHECK(layers.globalMaxRadius == 20.0f);
 }
 
+TEST_CASE("Tiles hold the largest colour channel of their pixels, clamped to the half range", "[pipeline]") {
+    Scene scene = makeScene(100, 60, glm::vec4(0.2f, 0.3f, 0.1f, 1.0f), -3.0f);
+    scene.color[size_t(10) * 100 + 20] = glm::vec4(0.5f, 7.0f, 2.0f, 1.0f);              // tile (1, 0)
+    scene.color[size_t(40) * 100 + 40] = glm::vec4(1.0e6f, 0.0f, 0.0f, 1.0f);            // tile (2, 2)
+    scene.color[size_t(40) * 100 + 70] = glm::vec4(std::nanf(""), -50.0f, 0.25f, 1.0f);  // tile (4, 2)
+    Layers layers;
+    ffxdoftest::runPipeline(scene, Settings{}, &layers);
+    REQUIRE(layers.tileColorPeaks.size() == 7u * 4u);
+    CHECK(layers.tileColorPeaks[0 * 7 + 1] == 7.0f);
+    CHECK(layers.tileColorPeaks[2 * 7 + 2] == 65504.0f);
+    // NaN and negative channels never set a peak (ffxDofColorPeak): the background's 0.3 remains.
+    CHECK(layers.tileColorPeaks[2 * 7 + 4] == 0.3f);
+    CHECK(layers.tileColorPeaks[3 * 7 + 6] == 0.3f);
+}
+
 TEST_CASE("In-focus pixels behave the same whatever the sign of their tiny radius", "[pipeline]") {
     // A surface exactly at the focus has radius 0 up to rounding; whether that comes out as +1e-4 or
     // -1e-4 depends on the depth encoding and must not change the image (it once switched ring merging
@@ -632,4 +647,18 @@ TEST_CASE("A slightly blurred near object shows the background within its radius
     INFO("coverage one pixel inside the left edge: " << coverage);
     CHECK(coverage > 0.55);
     CHECK(coverage < 0.8);
+}
+
+TEST_CASE("A small far light at a radius the composite blurs at full resolution keeps its energy", "[pipeline]") {
+    // Radii of 0.8 to 1.4 half-res px in front of a background at 16: the light's own pixels are blurred
+    // at full resolution, the background around it shows the half-res layers. Before the background drew
+    // such lights at full resolution itself (ffxDofGatherSmallSources), a 1 px light at 0.8 kept 0.33 of
+    // its energy and one at 1.0 0.51; with the light drawn both by its own pixels and by the far layer, up
+    // to 1.26.
+    for (float radius : {0.8f, 1.0f, 1.4f}) {
+        for (const ffxdoftest::LightCase& light : ffxdoftest::runSmallFarLightCases(radius, {1, 2, 3})) {
+            INFO("radius " << radius << ", " << light.size << " px: energy " << light.energyAdded / light.inputEnergy);
+            CHECK(light.energyAdded / light.inputEnergy == Approx(1.0).margin(0.05));
+        }
+    }
 }

@@ -20,8 +20,6 @@ constexpr DXGI_FORMAT toDxgiFormat(InternalFormat format) {
             return DXGI_FORMAT_R11G11B10_FLOAT;
         case InternalFormat::R16Float:
             return DXGI_FORMAT_R16_FLOAT;
-        case InternalFormat::R16G16Float:
-            return DXGI_FORMAT_R16G16_FLOAT;
         case InternalFormat::R16G16B16A16Float:
             return DXGI_FORMAT_R16G16B16A16_FLOAT;
         case InternalFormat::R8G8Unorm:

@@ -14,8 +14,6 @@ constexpr VkFormat toVkFormat(InternalFormat format) {
             return VK_FORMAT_B10G11R11_UFLOAT_PACK32;
         case InternalFormat::R16Float:
             return VK_FORMAT_R16_SFLOAT;
-        case InternalFormat::R16G16Float:
-            return VK_FORMAT_R16G16_SFLOAT;
         case InternalFormat::R16G16B16A16Float:
             return VK_FORMAT_R16G16B16A16_SFLOAT;
         case InternalFormat::R8G8Unorm:
