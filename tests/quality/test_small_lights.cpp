@@ -35,10 +35,11 @@ TEST_CASE(
 // px: the composite blurs the light's own pixels at full resolution, the background around them takes the
 // half-res layers) it is a known failure. Measured 2026-11-28: 16 of 72 cases within 5% (a 1 px light at 2 px
 // kept 0.51, others gained up to 27%); 56 of 72 since tiles that may hold such lights above white draw them
-// at full resolution (ffx_dof_small_sources.h): lights of 1 and 2 px at 4 px still gain up to 21% (docs/quality.md,
-// small lights). The count is a ratchet: it may rise (raise kCasesWithinFivePercent with it), never fall.
+// at full resolution (ffx_dof_small_sources.h), 66 since the downsample weighs radii by squared light (a light's
+// coarse texels keep its radius): lights at 2 px still gain 4 to 6% (docs/quality.md, small lights). The count is a
+// ratchet: it may rise (raise kCasesWithinFivePercent with it), never fall.
 TEST_CASE("small lights below radius 6 px: no fewer cases within 5% than measured", "[quality][vulkan][lights]") {
-    constexpr size_t kCasesWithinFivePercent = 56;  // of 72
+    constexpr size_t kCasesWithinFivePercent = 66;  // of 72
     quality::validatedDevice().clearValidationMessages();
     const std::vector<quality::SmallLightCase> lights =
         quality::runSmallLightCasesBelowGate(quality::validatedDevice());
@@ -58,8 +59,9 @@ TEST_CASE("small lights below radius 6 px: no fewer cases within 5% than measure
 // is drawn about where it lies in the texel (its light offset) light 2 keeps 1.01 within its own disc and 0.91 over the
 // frame (-1.62 before: it changes light 3's disc less); light 0 (at 2.8 px) kept 0.86, and passes (1.02) since
 // tiles that may hold small lights above white draw them at full resolution (8 of 14); the partly hidden ones add
-// 0.81 to 2.10 times the truth's. Until every light passes, the count of passing lights is a ratchet: it may rise
-// (raise kLightsWithinFivePercent with it), never fall. One test case, so the 28 runs happen once.
+// 0.81 to 2.10 times the truth's (light 8, the faintest, 1.42 since radii are weighed by squared light). Until every
+// light passes, the count of passing lights is a ratchet: it may rise (raise kLightsWithinFivePercent with it), never
+// fall. One test case, so the 28 runs happen once.
 TEST_CASE("mid-lights: every light measured alone, and no fewer lights within 5% than measured",
           "[quality][vulkan][lights]") {
     constexpr size_t kLightsWithinFivePercent = 8;  // of 14, in both precisions

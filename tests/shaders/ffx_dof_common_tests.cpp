@@ -1137,3 +1137,34 @@ TEST_CASE("Own samples keep |radius| as a half within one ulp and say which are 
         CHECK(ffxDofOwnSampleIsFar(7u) == (radius < 0.0f));
     }
 }
+
+TEST_CASE("A reduced radius is its brightest pixels' radius, through every MIP level", "[downsample]") {
+    // One light pixel (50 at radius -2) among dim background pixels (0.05 at -16), reduced like MIPs
+    // 0 to 3 (the light in one quad, that texel among three background texels, twice more). Weighted by
+    // light alone the radius drifted toward the background's: 2.04, 2.21, 2.85 and 4.89 px, so the blur
+    // judged such a light by a larger radius than its pixels have (ffx_dof_small_sources.h: the
+    // composite draws it by its pixels' radius): a 1 px light at 4 px added 1.21 times its energy. With
+    // the light squared: 2.00, 2.00, 2.01, 2.17 (at MIP 3 the light is 16 times its neighbours' level).
+    const float bound[4] = {0.002f, 0.002f, 0.02f, 0.2f};
+    FfxFloat32x3 color = FfxFloat32x3(50.0f);
+    float coc = -2.0f;
+    const FfxFloat32x3 background(0.05f);
+    const FfxFloat32x2 none(0.0f, 0.0f);
+    for (int level = 0; level < 4; ++level) {
+        FfxFloat32x3 reduced;
+        float reducedCoc;
+        FfxFloat32x2 offset;
+        ffxDofBilateralReduceLight(color, background, background, background, coc, -16.0f, -16.0f, -16.0f, none, none,
+                                   none, none, reduced, reducedCoc, offset);
+        INFO("level " << level << ": radius " << reducedCoc);
+        CHECK(reducedCoc == Approx(-2.0f).margin(bound[level]));
+        color = reduced;
+        coc = reducedCoc;
+    }
+    // Pixels of equal light still average their radii.
+    FfxFloat32x3 reduced;
+    float reducedCoc;
+    ffxDofBilateralReduce(FfxFloat32x3(1.0f), FfxFloat32x3(1.0f), FfxFloat32x3(1.0f), FfxFloat32x3(1.0f), -4.0f, -4.5f,
+                          -4.0f, -4.5f, reduced, reducedCoc);
+    CHECK(reducedCoc == Approx(-4.25f));
+}
