@@ -256,13 +256,13 @@ void writeSmallLights(std::ostream& md, vkrun::Device& device) {
           "a coarse texel's light is drawn about where it lies in the texel (its light offset, docs/technique.md "
           "\"Light offsets\"), the disc-shift column is what remains.\n\n";
 
-    // Below the gated radii: a known failure, with its ratchet in tests/quality/test_small_lights.cpp.
+    // Below radius 6 px, gated by tests/quality/test_small_lights.cpp too.
     const std::vector<double> radii(std::begin(quality::kSmallLightRadiiBelowGate),
                                     std::end(quality::kSmallLightRadiiBelowGate));
     const std::vector<int> sizes(std::begin(quality::kSmallLightSizesBelowGate),
                                  std::end(quality::kSmallLightSizesBelowGate));
     const std::vector<quality::SmallLightCase> below = quality::runSmallLightCasesBelowGate(device);
-    md << "### Below the gated radii (a known failure)\n\n"
+    md << "### Below radius 6 px\n\n"
        << "The same lights (1, 2, 3 and 5 px, the same three places) at radii of 2, 3 and 4 px, where the "
           "composite blurs the light's own pixels at full resolution (radii under 6 px: the fixed 3x3 blur, "
           "or the own-surface gather) while the background around them, at radius 32, takes the half-res "
@@ -289,7 +289,8 @@ void writeSmallLights(std::ostream& md, vkrun::Device& device) {
     for (const quality::SmallLightCase& light : below) belowWithin += light.energyOk();
     md << "\n"
        << belowWithin << " of " << below.size()
-       << " cases within 5% (`quality: small lights below radius 6 px`, a ratchet). Until 2026-11-28 16 of 72 "
+       << " cases within 5% (`quality: small lights below radius 6 px`, a gate on every case and on the centre "
+          "within 20% of the truth's). Until 2026-11-28 16 of 72 "
           "were: a 1 px light at 2 px kept 0.51 of its energy, since what its own full-resolution blur spread "
           "onto its neighbours was dropped (they belong to the background and showed the half-res far layer, "
           "which carried the light as a disc of about one texel), and most others gained up to 27%. Now, in "
@@ -301,8 +302,10 @@ void writeSmallLights(std::ostream& md, vkrun::Device& device) {
           "leaves that surface out of its far layer (`ffxDofOwnGatherShare`), where it was counted twice (56 of 72; "
           "lights of 1 and 2 px at 4 px gained up to 21%: the blur judged them by their coarse texels' radius, "
           "which the darker pixels around drew toward theirs, while the composite drew them by their own). Since "
-          "the downsample weighs radii by squared light, a light's coarse texels keep its radius: what remains "
-          "are lights at 2 px, which gain 4 to 6%. Run everywhere, the same gather made the composite 1.4 times as "
+          "the downsample weighs radii by squared light, a light's coarse texels keep its radius (66 of 72: lights "
+          "at 2 px gained 4 to 6%, what pi r^2 misses of a disc's area on the pixel grid). Since the composite "
+          "normalises these discs by their area on the pixel grid (`ffxDofPixelDiscArea`), every case is within "
+          "5%. Run everywhere, the same gather made the composite 1.4 times as "
           "long on the "
           "benchmark's floor, whose band of small radii holds nothing above white; with the flag it is not run "
           "there (docs/performance.md, \"Small far sources where they are bright\").\n\n";

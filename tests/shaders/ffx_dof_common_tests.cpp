@@ -1168,3 +1168,17 @@ TEST_CASE("A reduced radius is its brightest pixels' radius, through every MIP l
                           -4.0f, -4.5f, reduced, reducedCoc);
     CHECK(reducedCoc == Approx(-4.25f));
 }
+
+TEST_CASE("The pixel grid's disc area is the reach summed over the pixel centres", "[composite]") {
+    // Brute force over a square that holds every disc, in double; and the continuous area it corrects.
+    for (float radius = 0.5f; radius <= 13.0f; radius += 0.125f) {
+        double area = 0.0;
+        for (int y = -16; y <= 16; ++y)
+            for (int x = -16; x <= 16; ++x)
+                area += std::clamp(double(radius) - std::sqrt(double(x * x + y * y)) + 0.5, 0.0, 1.0);
+        INFO("radius " << radius);
+        CHECK(ffxDofPixelDiscArea(radius) == Approx(area).epsilon(1e-5));
+    }
+    CHECK(ffxDofPixelDiscArea(2.0f) / (3.14159265f * 4.0f) == Approx(1.0434).epsilon(1e-3));
+    CHECK(ffxDofPixelDiscArea(1.0f) == Approx(1.0 + 4.0 * 0.5 + 4.0 * std::clamp(1.5 - std::sqrt(2.0), 0.0, 1.0)));
+}
