@@ -367,11 +367,6 @@ FFX_DOF_INLINE FfxFloat32x4 ffxDofGatherOwnSurface(FfxInt32x2 local, FfxFloat32 
     return FfxFloat32x4(sum / weightSum, ffxDofSaturate(weightSum * (1.0f / FFX_DOF_PI)));
 }
 
-// The far pixels of small radius in front of a far pixel of |radius| `absCoc` (half-res px) that reach
-// it, at full resolution (scatter as gather, as ffxDofGatherOwnSurface): each weighs its reach over its
-// disc's area times its ffxDofSmallSourceShare, the share the blur leaves out of the half-res layers.
-// Returns their color and, in w, their coverage (the summed weights over pi), to be composed over the far
-// layer. Sources reach at most 2 FFX_DOF_FAR_LAYER_ONLY_RADIUS + 0.5 full-res px, within the border.
 // The area of a disc of `radius` full-res px drawn on the pixel grid by ffxDofReach: the sum of its
 // reach over the pixel centres. pi radius^2 (ffxDofRoundAreaWeight's) misses it by up to 6% below 4 px
 // (2 px: 13.11 against 12.57), so a small light whose disc the composite draws at full resolution
@@ -392,6 +387,12 @@ FFX_DOF_INLINE FfxFloat32 ffxDofPixelDiscArea(FfxFloat32 radius)
     return area;
 }
 
+// The far pixels of small radius in front of a far pixel of |radius| `absCoc` (half-res px) that reach
+// it, at full resolution (scatter as gather, as ffxDofGatherOwnSurface): each weighs its reach over its
+// disc's area times its ffxDofSmallSourceShare, the share the blur leaves out of the half-res layers.
+// Returns their color and, in w, their coverage (their reach summed over the disc's area on the pixel
+// grid, ffxDofPixelDiscArea), to be composed over the far layer. Sources reach at most
+// 2 FFX_DOF_FAR_LAYER_ONLY_RADIUS + 0.5 full-res px, within the border.
 FFX_DOF_INLINE FfxFloat32x4 ffxDofGatherSmallSources(FfxInt32x2 local, FfxFloat32 absCoc)
 {
     FfxInt32 extent = FfxInt32(2.0f * FFX_DOF_FAR_LAYER_ONLY_RADIUS);
