@@ -18,6 +18,16 @@
 // ffxDofApertureDistance: a sample of radius r reaches a pixel whose offset has gauge g < r. The
 // gauge of the intersection is the largest of the parts' gauges, each homogeneous of degree 1, so it
 // is measured in any unit the offset is in (half-res px, MIP texels).
+//
+// The gauge runs once per blur sample, so it is straight-line code: a loop over the sides and one of
+// zero or one pass for the cat's eye made six blades' blur and composite 1.3 times the circle's on
+// lavapipe (any loop inside the sample loop costs there, whatever its count), the same code without
+// loops 1.16 (docs/performance.md, "A gauge without loops"). The blades' gauge is the largest
+// n_k . u / inradius over the sides; a regular polygon is symmetric about the line along its first
+// side's normal n_0, and for even N also about the line across it, so u folded onto the positive side
+// of those lines meets its largest value among the sides whose normals lie there: k = 0 .. (N - 1) / 2
+// for odd N, k = 0 .. N / 4 for even N; at most FFX_DOF_FOLDED_BLADE_SIDES (15 blades), the slots past
+// N's zero (a zero normal never raises the gauge, which is at least |u|).
 #ifndef FFX_DOF_APERTURE_H
 #define FFX_DOF_APERTURE_H
 
@@ -28,6 +38,8 @@
 // The cat's-eye disc's centre is kept this far inside the circle's rim: at the rim the gauge of the
 // clipping disc divides by 0.
 #define FFX_DOF_CAT_EYE_MIN_SLACK 0.001f
+// Sides of the folded polygon the gauge compares (the most, (15 - 1) / 2 + 1, is for 15 blades).
+#define FFX_DOF_FOLDED_BLADE_SIDES 8
 
 // ---- Areas (host and shader) ------------------------------------------------------------------------
 
@@ -60,16 +72,18 @@ FFX_DOF_INLINE FfxFloat32 ffxDofUnitLensArea(FfxFloat32 d)
 
 struct FfxDofPixelAperture
 {
-    FfxFloat32 anamorphicRatio;    // u.x = screen x * ratio
-    FfxFloat32x2 bladeNormal;      // the first side's normal over the inradius
-    FfxFloat32x2 bladeStep;        // (cos, sin) of the angle between the sides walked
-    FfxUInt32 bladeSidesWalked;    // N / 2 for even N (a side and its opposite at once), N for odd N, 0: circle
-    FfxFloat32 bladeOppositeSide;  // 1 for even N: the opposite side's gauge is -n_k . u
-    FfxFloat32x2 clipCenter;       // the cat's-eye disc's centre
-    FfxFloat32 clipSlack;          // 1 - |clipCenter|^2
-    FfxUInt32 clipDiscs;           // 1 with cat's eye, 0 without (a loop count: see ffxDofApertureDistance)
-    FfxFloat32 areaScale;          // pi / the pixel-space area of the shape of radius 1
-    FfxFloat32 inscribedRadius;    // of the largest circle |u| < r inside the shape: 1 for round discs
+    FfxFloat32 anamorphicRatio;  // u.x = screen x * ratio
+    FfxFloat32x2 bladeNormal;    // the first side's normal over the inradius
+    FfxFloat32x2 bladeStep;      // (cos, sin) of the angle between neighbouring sides
+    FfxFloat32x2 bladeAxis;      // n_0, the first side's unit normal: the line u is folded about
+    FfxFloat32 bladeFoldAcross;  // -1 for even N (folded across the line too: x = |n_0 . u|), else 1
+    // n_k / inradius in n_0's frame, k = 0 .. the folded sides of N (ffxDofApertureDistance); zero past them.
+    FfxFloat32x2 bladeFoldedSides[FFX_DOF_FOLDED_BLADE_SIDES];
+    FfxFloat32x2 clipCenter;  // the cat's-eye disc's centre
+    FfxFloat32 clipSlack;     // 1 - |clipCenter|^2
+    FfxFloat32 inverseClipSlack;
+    FfxFloat32 areaScale;        // pi / the pixel-space area of the shape of radius 1
+    FfxFloat32 inscribedRadius;  // of the largest circle |u| < r inside the shape: 1 for round discs
 };
 
 // The round aperture's values (what the circle's path carries, never reading them).
@@ -79,11 +93,14 @@ FFX_DOF_INLINE FfxDofPixelAperture ffxDofRoundAperture()
     aperture.anamorphicRatio = 1.0f;
     aperture.bladeNormal = FfxFloat32x2(0.0f, 0.0f);
     aperture.bladeStep = FfxFloat32x2(1.0f, 0.0f);
-    aperture.bladeSidesWalked = 0u;
-    aperture.bladeOppositeSide = 0.0f;
+    aperture.bladeAxis = FfxFloat32x2(1.0f, 0.0f);
+    aperture.bladeFoldAcross = 1.0f;
+    FFX_DOF_UNROLL
+    for (FfxInt32 side = 0; side < FFX_DOF_FOLDED_BLADE_SIDES; ++side)
+        aperture.bladeFoldedSides[side] = FfxFloat32x2(0.0f, 0.0f);
     aperture.clipCenter = FfxFloat32x2(0.0f, 0.0f);
     aperture.clipSlack = 1.0f;
-    aperture.clipDiscs = 0u;
+    aperture.inverseClipSlack = 1.0f;
     aperture.areaScale = 1.0f;
     aperture.inscribedRadius = 1.0f;
     return aperture;
@@ -144,24 +161,35 @@ FFX_DOF_INLINE FfxDofPixelAperture ffxDofMakeAperture(FfxDofConstants constants,
     aperture.anamorphicRatio = constants.anamorphicRatio;
     aperture.bladeNormal = constants.bladeNormal;
     FfxUInt32 blades = constants.bladeCount;
-    FfxBoolean even = (blades & 1u) == 0u;
-    aperture.bladeSidesWalked = even ? blades / 2u : blades;
-    aperture.bladeOppositeSide = even ? 1.0f : 0.0f;
     FfxFloat32 stepAngle = 2.0f * FFX_DOF_PI / FfxFloat32(max(blades, 1u));
     aperture.bladeStep = FfxFloat32x2(cos(stepAngle), sin(stepAngle));
+    FfxBoolean even = (blades & 1u) == 0u;
+    FfxFloat32 inverseInradius = length(constants.bladeNormal);
+    aperture.bladeAxis = blades != 0u ? constants.bladeNormal / inverseInradius : FfxFloat32x2(1.0f, 0.0f);
+    aperture.bladeFoldAcross = even ? -1.0f : 1.0f;
+    FfxUInt32 foldedSides = blades == 0u ? 0u : (even ? blades / 4u + 1u : (blades - 1u) / 2u + 1u);
+    FfxFloat32x2 sideNormal = FfxFloat32x2(inverseInradius, 0.0f);
+    FFX_DOF_UNROLL
+    for (FfxInt32 side = 0; side < FFX_DOF_FOLDED_BLADE_SIDES; ++side)
+    {
+        aperture.bladeFoldedSides[side] = FfxUInt32(side) < foldedSides ? sideNormal : FfxFloat32x2(0.0f, 0.0f);
+        sideNormal = FfxFloat32x2(sideNormal.x * aperture.bladeStep.x - sideNormal.y * aperture.bladeStep.y,
+                                  sideNormal.x * aperture.bladeStep.y + sideNormal.y * aperture.bladeStep.x);
+    }
     aperture.clipCenter = constants.catEye * ffxDofFramePosition(pixel, frameSize);
     FfxFloat32 offset2 = dot(aperture.clipCenter, aperture.clipCenter);
     aperture.clipSlack = max(1.0f - offset2, FFX_DOF_CAT_EYE_MIN_SLACK);
-    aperture.clipDiscs = constants.catEye > 0.0f ? 1u : 0u;
+    aperture.inverseClipSlack = 1.0f / aperture.clipSlack;
+    FfxBoolean catEye = constants.catEye > 0.0f;
     aperture.areaScale = constants.apertureAreaScale;
-    FfxFloat32 bladeInradius = blades != 0u ? 1.0f / length(constants.bladeNormal) : 1.0f;
-    FfxFloat32 clipInradius = aperture.clipDiscs != 0u ? 1.0f - sqrt(offset2) : 1.0f;
+    FfxFloat32 bladeInradius = blades != 0u ? 1.0f / inverseInradius : 1.0f;
+    FfxFloat32 clipInradius = catEye ? 1.0f - sqrt(offset2) : 1.0f;
     aperture.inscribedRadius = min(bladeInradius, clipInradius);
     // The cat's eye changes the area per pixel: exactly for round discs (two discs' lens), by rows
     // with blades.
-    if (aperture.clipDiscs != 0u && blades == 0u)
+    if (catEye && blades == 0u)
         aperture.areaScale *= FFX_DOF_PI / ffxDofUnitLensArea(sqrt(offset2));
-    FfxUInt32 areaRows = aperture.clipDiscs != 0u && blades != 0u ? FFX_DOF_CAT_EYE_AREA_ROWS : 0u;
+    FfxUInt32 areaRows = catEye && blades != 0u ? FFX_DOF_CAT_EYE_AREA_ROWS : 0u;
     FfxFloat32 bladedArea = ffxDofBladedCatEyeArea(aperture, blades, areaRows);
     if (areaRows != 0u)
         aperture.areaScale = FFX_DOF_PI * constants.anamorphicRatio / max(bladedArea, 1e-3f);
@@ -170,8 +198,8 @@ FFX_DOF_INLINE FfxDofPixelAperture ffxDofMakeAperture(FfxDofConstants constants,
 
 // Gauge of the offset from a pixel to a sample (y down, any unit): the radius a sample needs to
 // reach the pixel. `nearSample`: the sample is in the near field, whose disc is the shape turned 180
-// degrees. For the round aperture, the offset's length. The blades and the cat's-eye disc are loops
-// whose count is 0 when they are off.
+// degrees. For the round aperture, the offset's length. Blades and cat's eye that are off give |u|
+// (zero side normals; a clipping disc at the centre): no branch, no loop (see the top of this file).
 FFX_DOF_INLINE FfxFloat32 ffxDofApertureDistance(FfxDofPixelAperture aperture, FfxFloat32x2 sampleOffset,
                                                  FfxBoolean nearSample)
 {
@@ -180,23 +208,16 @@ FFX_DOF_INLINE FfxFloat32 ffxDofApertureDistance(FfxDofPixelAperture aperture, F
     FfxFloat32x2 u = FfxFloat32x2(sampleOffset.x * (side * aperture.anamorphicRatio), sampleOffset.y * -side);
     FfxFloat32 length2 = dot(u, u);
     FfxFloat32 gauge = sqrt(length2);
-    FfxFloat32x2 normal = aperture.bladeNormal;
-    FFX_DOF_LOOP
-    for (FfxUInt32 walked = 0u; walked < aperture.bladeSidesWalked; ++walked)
-    {
-        FfxFloat32 reach = dot(normal, u);
-        gauge = max(gauge, max(reach, -reach * aperture.bladeOppositeSide));
-        normal = FfxFloat32x2(normal.x * aperture.bladeStep.x - normal.y * aperture.bladeStep.y,
-                              normal.x * aperture.bladeStep.y + normal.y * aperture.bladeStep.x);
-    }
-    FFX_DOF_LOOP
-    for (FfxUInt32 disc = 0u; disc < aperture.clipDiscs; ++disc)
-    {
-        // The t with |u / t - c| = 1: the smaller root of a quadratic, written without cancellation.
-        FfxFloat32 along = dot(u, aperture.clipCenter);
-        gauge = max(gauge, (sqrt(along * along + length2 * aperture.clipSlack) - along) / aperture.clipSlack);
-    }
-    return gauge;
+    FfxFloat32 alongAxis = dot(aperture.bladeAxis, u);
+    FfxFloat32x2 folded = FfxFloat32x2(max(alongAxis, alongAxis * aperture.bladeFoldAcross),
+                                       abs(aperture.bladeAxis.x * u.y - aperture.bladeAxis.y * u.x));
+    FFX_DOF_UNROLL
+    for (FfxInt32 side = 0; side < FFX_DOF_FOLDED_BLADE_SIDES; ++side)
+        gauge = max(gauge, dot(aperture.bladeFoldedSides[side], folded));
+    // The cat's eye: the t with |u / t - c| = 1, the smaller root of a quadratic, written without
+    // cancellation.
+    FfxFloat32 along = dot(u, aperture.clipCenter);
+    return max(gauge, (sqrt(along * along + length2 * aperture.clipSlack) - along) * aperture.inverseClipSlack);
 }
 
 // A sample spreads its energy over its disc: weight proportional to the inverse disc area, normalized

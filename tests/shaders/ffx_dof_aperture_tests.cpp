@@ -96,6 +96,47 @@ TEST_CASE("Blades: flat sides left and right at rotation 0, counter-clockwise ro
     CHECK(farGaugeAt(up, 0.0, -1.0) == Approx(1.0f).epsilon(1e-5));
 }
 
+// The folded gauge (ffxDofApertureDistance compares at most FFX_DOF_FOLDED_BLADE_SIDES sides) against the
+// largest n_k . u / inradius over every side of the polygon and the circle, for every blade count.
+TEST_CASE("The folded blade gauge is the largest over every side, for 3 to 16 blades", "[aperture]") {
+    for (uint32_t blades = 3; blades <= 16; ++blades) {
+        for (const float rotation : {0.0f, 17.0f, 45.0f, -100.0f}) {
+            for (const float roundness : {0.0f, 0.4f}) {
+                for (const float anamorphic : {1.0f, 1.5f}) {
+                    const FfxDofAperture aperture = makeAperture(blades, rotation, roundness, anamorphic);
+                    FfxDofConstants constants{};
+                    ffxdof::setApertureConstants(aperture, &constants);
+                    const FfxDofPixelAperture a = pixelAperture(aperture);
+                    const double inverseInradius = std::hypot(constants.bladeNormal.x, constants.bladeNormal.y);
+                    double largestError = 0.0;
+                    for (int i = 0; i < 400; ++i) {
+                        // Offsets on a spiral through every direction and a range of lengths.
+                        const double angle = i * 2.399963, length = 0.05 + 0.01 * i;
+                        const double x = length * std::cos(angle), y = length * std::sin(angle);
+                        for (const bool nearSample : {false, true}) {
+                            const double side = nearSample ? 1.0 : -1.0;
+                            const double ux = x * side * anamorphic, uy = -y * side;
+                            double expected = std::hypot(ux, uy);
+                            for (uint32_t k = 0; k < blades; ++k) {
+                                const double normalAngle = aperture.bladeRotation + 2.0 * kPi * k / blades;
+                                expected =
+                                    std::max(expected, (std::cos(normalAngle) * ux + std::sin(normalAngle) * uy) *
+                                                           inverseInradius);
+                            }
+                            const double gauge =
+                                ffxDofApertureDistance(a, FfxFloat32x2(float(x), float(y)), nearSample);
+                            largestError = std::max(largestError, std::abs(gauge - expected) / expected);
+                        }
+                    }
+                    INFO(blades << " blades, rotation " << rotation << ", roundness " << roundness << ", anamorphic "
+                                << anamorphic << ": largest relative error " << largestError);
+                    CHECK(largestError < 1e-5);
+                }
+            }
+        }
+    }
+}
+
 TEST_CASE("A near-field disc is the far-field disc turned 180 degrees", "[aperture]") {
     for (const FfxDofAperture& aperture :
          {makeAperture(5, 17.0f), makeAperture(3, 0.0f, 0.3f, 1.4f), makeAperture(0, 0.0f, 0.0f, 1.0f, 0.8f)}) {
