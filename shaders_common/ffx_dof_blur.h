@@ -646,8 +646,8 @@ FFX_DOF_INLINE void ffxDofGatherInnerRings(FFX_DOF_INOUT(FfxDofGather) gather, F
     // merged: merged, the surface weights that normalise a light are counted on the coarse texels'
     // lattice, and a point's triangle kept 0.96 to 0.97 of its energy, 0.056 from flat inside, against
     // 1.01 and 0.006 (the CPU test "A shaped far point through the passes"). None is needed where the
-    // outermost ring, widened inward by the rim inset, already reaches the inscribed circle (six blades on
-    // a flat far tile at quality 10 where the rings are at least 0.84 texels apart): walking it anyway
+    // outermost ring, widened inward by the rim inset, already reaches the inscribed circle (on a flat far
+    // tile wherever that circle lies within a ring of it: ffxDofBlurTexel): walking its empty rows anyway
     // cost six blades' blur and composite about 5% (docs/performance.md, "A gauge without loops").
     // Rings 1 .. mergeableRings form the groups. Round discs: every ring (their rim lies in the outermost one).
     FfxUInt32 mergeableRings = kernel.rings - 1u;
@@ -848,6 +848,13 @@ FFX_DOF_INLINE FfxDofBlurResult ffxDofBlurTexel(FfxUInt32x2 texel, FfxFloat32x4 
     fillAreaWeight = ffxDofApertureAreaWeight(kernel.aperture, abs(kernel.centerCoc));
     // A coarse texel's centre lies farther off in the aperture's units where the disc is narrowed.
     kernel.rimInset /= ffxDofApertureRingSpacingScale(constants);
+    // On a flat far tile the outermost ring reaches in to the shape's inscribed circle where that lies
+    // within a ring of it (six blades at quality 10, nine and more), so that no rim ring is walked
+    // (ffxDofGatherInnerRings); the ring inside it keeps part of its width.
+    FfxFloat32 toInscribed =
+        (FfxFloat32(kernel.rings) * (1.0f - kernel.aperture.inscribedRadius) - 0.5f) * kernel.spacing;
+    if (kernel.rimInset > 0.0f && toInscribed < kernel.spacing)
+        kernel.rimInset = max(kernel.rimInset, toInscribed);
     ffxDofGatherTileClass(gather, kernel, tileClass, true, constants);
 #else
     ffxDofGatherTileClass(gather, kernel, tileClass, false, constants);
