@@ -849,8 +849,8 @@ FFX_DOF_INLINE FfxDofBlurResult ffxDofBlurTexel(FfxUInt32x2 texel, FfxFloat32x4 
     // A coarse texel's centre lies farther off in the aperture's units where the disc is narrowed.
     kernel.rimInset /= ffxDofApertureRingSpacingScale(constants);
     // On a flat far tile the outermost ring reaches in to the shape's inscribed circle where that lies
-    // within a ring of it (six blades at quality 10, nine and more), so that no rim ring is walked
-    // (ffxDofGatherInnerRings); the ring inside it keeps part of its width.
+    // within one ring spacing of the ring's inner border (six blades up to 11 rings, nine blades up to 24),
+    // so that no rim ring is walked (ffxDofGatherInnerRings); the ring inside it keeps part of its width.
     FfxFloat32 toInscribed =
         (FfxFloat32(kernel.rings) * (1.0f - kernel.aperture.inscribedRadius) - 0.5f) * kernel.spacing;
     if (kernel.rimInset > 0.0f && toInscribed < kernel.spacing)
