@@ -113,6 +113,12 @@ FFX_DOF_INLINE FfxFloat32x2 ffxDofFramePosition(FfxFloat32x2 pixel, FfxFloat32x2
     return FfxFloat32x2(pixel.x - 0.5f * frameSize.x, 0.5f * frameSize.y - pixel.y) / halfDiagonal;
 }
 
+// The next side's normal: `normal` turned counter-clockwise by the angle whose (cos, sin) is `step`.
+FFX_DOF_INLINE FfxFloat32x2 ffxDofNextBladeSide(FfxFloat32x2 normal, FfxFloat32x2 step)
+{
+    return FfxFloat32x2(normal.x * step.x - normal.y * step.y, normal.x * step.y + normal.y * step.x);
+}
+
 // Rows the area of a bladed cat's eye is integrated over (ffxDofBladedCatEyeArea): 0.1% at most.
 #define FFX_DOF_CAT_EYE_AREA_ROWS 48u
 
@@ -145,8 +151,7 @@ FFX_DOF_INLINE FfxFloat32 ffxDofBladedCatEyeArea(FfxDofPixelAperture aperture, F
                 last = min(last, bound / normal.x);
             else
                 first = max(first, bound / normal.x);
-            normal = FfxFloat32x2(normal.x * aperture.bladeStep.x - normal.y * aperture.bladeStep.y,
-                                  normal.x * aperture.bladeStep.y + normal.y * aperture.bladeStep.x);
+            normal = ffxDofNextBladeSide(normal, aperture.bladeStep);
         }
         area += max(last - first, 0.0f) * rowHeight;
     }
@@ -173,8 +178,7 @@ FFX_DOF_INLINE FfxDofPixelAperture ffxDofMakeAperture(FfxDofConstants constants,
     for (FfxInt32 side = 0; side < FFX_DOF_FOLDED_BLADE_SIDES; ++side)
     {
         aperture.bladeFoldedSides[side] = FfxUInt32(side) < foldedSides ? sideNormal : FfxFloat32x2(0.0f, 0.0f);
-        sideNormal = FfxFloat32x2(sideNormal.x * aperture.bladeStep.x - sideNormal.y * aperture.bladeStep.y,
-                                  sideNormal.x * aperture.bladeStep.y + sideNormal.y * aperture.bladeStep.x);
+        sideNormal = ffxDofNextBladeSide(sideNormal, aperture.bladeStep);
     }
     aperture.clipCenter = constants.catEye * ffxDofFramePosition(pixel, frameSize);
     FfxFloat32 offset2 = dot(aperture.clipCenter, aperture.clipCenter);
