@@ -27,7 +27,11 @@
 // side's normal n_0, and for even N also about the line across it, so u folded onto the positive side
 // of those lines meets its largest value among the sides whose normals lie there: k = 0 .. (N - 1) / 2
 // for odd N, k = 0 .. N / 4 for even N; at most FFX_DOF_FOLDED_BLADE_SIDES (15 blades), the slots past
-// N's zero (a zero normal never raises the gauge, which is at least |u|).
+// N's zero (a zero normal never raises the gauge, which is at least |u|). Most lenses need fewer: the
+// blur's permutation FFX_DOF_APERTURE_SHAPES_COMPACT, which the core runs for a dispatch whose aperture
+// has no cat's eye and folds to at most FFX_DOF_COMPACT_BLADE_SIDES sides (none, 3, 4 or 6 blades),
+// compares that many and leaves the cat's-eye disc out: six blades' blur and composite 1.10 times the
+// circle's instead of 1.17 (docs/performance.md, "A compact gauge per dispatch").
 #ifndef FFX_DOF_APERTURE_H
 #define FFX_DOF_APERTURE_H
 
@@ -40,6 +44,23 @@
 #define FFX_DOF_CAT_EYE_MIN_SLACK 0.001f
 // Sides of the folded polygon the gauge compares (the most, (15 - 1) / 2 + 1, is for 15 blades).
 #define FFX_DOF_FOLDED_BLADE_SIDES 8
+// The values of FFX_DOF_OPTION_APERTURE_SHAPES (ffx_dof_common.h) past 0, the circle's code alone:
+#define FFX_DOF_APERTURE_SHAPES_ANY 1      // every aperture
+#define FFX_DOF_APERTURE_SHAPES_COMPACT 2  // apertures whose gauge is compact (ffxDofApertureGaugeIsCompact)
+// Folded sides the compact gauge compares.
+#define FFX_DOF_COMPACT_BLADE_SIDES 2
+
+// What this permutation's gauge compares: folded sides, and whether the cat's-eye disc.
+#define FFX_DOF_GAUGE_SIDES FFX_DOF_FOLDED_BLADE_SIDES
+#define FFX_DOF_GAUGE_CAT_EYE 1
+#if defined(FFX_DOF_OPTION_APERTURE_SHAPES)
+#if FFX_DOF_OPTION_APERTURE_SHAPES == FFX_DOF_APERTURE_SHAPES_COMPACT
+#undef FFX_DOF_GAUGE_SIDES
+#undef FFX_DOF_GAUGE_CAT_EYE
+#define FFX_DOF_GAUGE_SIDES FFX_DOF_COMPACT_BLADE_SIDES
+#define FFX_DOF_GAUGE_CAT_EYE 0
+#endif
+#endif
 
 // ---- Areas (host and shader) ------------------------------------------------------------------------
 
@@ -68,6 +89,20 @@ FFX_DOF_INLINE FfxFloat32 ffxDofUnitLensArea(FfxFloat32 d)
     return 2.0f * (acos(h) - h * sqrt(max(1.0f - h * h, 0.0f)));
 }
 
+// Sides of an N-bladed polygon folded onto its symmetry lines (ffxDofApertureDistance): 0 for no blades.
+FFX_DOF_INLINE FfxUInt32 ffxDofFoldedBladeSideCount(FfxUInt32 blades)
+{
+    if (blades == 0u)
+        return 0u;
+    return (blades & 1u) == 0u ? blades / 4u + 1u : (blades - 1u) / 2u + 1u;
+}
+
+// Whether FFX_DOF_APERTURE_SHAPES_COMPACT draws an aperture of these constants (bladeCount, catEye).
+FFX_DOF_INLINE FfxBoolean ffxDofApertureGaugeIsCompact(FfxUInt32 blades, FfxFloat32 catEye)
+{
+    return catEye == 0.0f && ffxDofFoldedBladeSideCount(blades) <= FFX_DOF_COMPACT_BLADE_SIDES;
+}
+
 // ---- The per-pixel aperture -------------------------------------------------------------------------
 
 struct FfxDofPixelAperture
@@ -78,7 +113,7 @@ struct FfxDofPixelAperture
     FfxFloat32x2 bladeAxis;      // n_0, the first side's unit normal: the line u is folded about
     FfxFloat32 bladeFoldAcross;  // -1 for even N (folded across the line too: x = |n_0 . u|), else 1
     // n_k / inradius in n_0's frame, k = 0 .. the folded sides of N (ffxDofApertureDistance); zero past them.
-    FfxFloat32x2 bladeFoldedSides[FFX_DOF_FOLDED_BLADE_SIDES];
+    FfxFloat32x2 bladeFoldedSides[FFX_DOF_GAUGE_SIDES];
     FfxFloat32x2 clipCenter;  // the cat's-eye disc's centre
     FfxFloat32 clipSlack;     // 1 - |clipCenter|^2
     FfxFloat32 inverseClipSlack;
@@ -96,7 +131,7 @@ FFX_DOF_INLINE FfxDofPixelAperture ffxDofRoundAperture()
     aperture.bladeAxis = FfxFloat32x2(1.0f, 0.0f);
     aperture.bladeFoldAcross = 1.0f;
     FFX_DOF_UNROLL
-    for (FfxInt32 side = 0; side < FFX_DOF_FOLDED_BLADE_SIDES; ++side)
+    for (FfxInt32 side = 0; side < FFX_DOF_GAUGE_SIDES; ++side)
         aperture.bladeFoldedSides[side] = FfxFloat32x2(0.0f, 0.0f);
     aperture.clipCenter = FfxFloat32x2(0.0f, 0.0f);
     aperture.clipSlack = 1.0f;
@@ -172,10 +207,10 @@ FFX_DOF_INLINE FfxDofPixelAperture ffxDofMakeAperture(FfxDofConstants constants,
     FfxFloat32 inverseInradius = length(constants.bladeNormal);
     aperture.bladeAxis = blades != 0u ? constants.bladeNormal / inverseInradius : FfxFloat32x2(1.0f, 0.0f);
     aperture.bladeFoldAcross = even ? -1.0f : 1.0f;
-    FfxUInt32 foldedSides = blades == 0u ? 0u : (even ? blades / 4u + 1u : (blades - 1u) / 2u + 1u);
+    FfxUInt32 foldedSides = ffxDofFoldedBladeSideCount(blades);
     FfxFloat32x2 sideNormal = FfxFloat32x2(inverseInradius, 0.0f);
     FFX_DOF_UNROLL
-    for (FfxInt32 side = 0; side < FFX_DOF_FOLDED_BLADE_SIDES; ++side)
+    for (FfxInt32 side = 0; side < FFX_DOF_GAUGE_SIDES; ++side)
     {
         aperture.bladeFoldedSides[side] = FfxUInt32(side) < foldedSides ? sideNormal : FfxFloat32x2(0.0f, 0.0f);
         sideNormal = ffxDofNextBladeSide(sideNormal, aperture.bladeStep);
@@ -216,12 +251,15 @@ FFX_DOF_INLINE FfxFloat32 ffxDofApertureDistance(FfxDofPixelAperture aperture, F
     FfxFloat32x2 folded = FfxFloat32x2(max(alongAxis, alongAxis * aperture.bladeFoldAcross),
                                        abs(aperture.bladeAxis.x * u.y - aperture.bladeAxis.y * u.x));
     FFX_DOF_UNROLL
-    for (FfxInt32 side = 0; side < FFX_DOF_FOLDED_BLADE_SIDES; ++side)
+    for (FfxInt32 side = 0; side < FFX_DOF_GAUGE_SIDES; ++side)
         gauge = max(gauge, dot(aperture.bladeFoldedSides[side], folded));
+#if FFX_DOF_GAUGE_CAT_EYE
     // The cat's eye: the t with |u / t - c| = 1, the smaller root of a quadratic, written without
     // cancellation.
     FfxFloat32 along = dot(u, aperture.clipCenter);
-    return max(gauge, (sqrt(along * along + length2 * aperture.clipSlack) - along) * aperture.inverseClipSlack);
+    gauge = max(gauge, (sqrt(along * along + length2 * aperture.clipSlack) - along) * aperture.inverseClipSlack);
+#endif
+    return gauge;
 }
 
 // A sample spreads its energy over its disc: weight proportional to the inverse disc area, normalized

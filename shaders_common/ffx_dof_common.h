@@ -38,7 +38,8 @@
 #else
 #define FFX_DOF_RING_MERGE_LOG 1
 #endif
-// 1: the blur can draw shaped apertures (FFX_DOF_ENABLE_APERTURE_SHAPES); 0: the circle's code alone.
+// Not 0: the blur draws shaped apertures (FFX_DOF_ENABLE_APERTURE_SHAPES), any of them (1) or those whose
+// gauge is compact (2, ffx_dof_aperture.h), the core choosing per dispatch; 0: the circle's code alone.
 #ifndef FFX_DOF_OPTION_APERTURE_SHAPES
 #define FFX_DOF_OPTION_APERTURE_SHAPES 0
 #endif

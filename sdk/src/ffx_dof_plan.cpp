@@ -73,17 +73,34 @@ FfxDofErrorCode planPass(const ContextPlan& context, Pass pass, const shaders::P
     }
     out->table = table;
 
-    std::vector<shaders::Define> key;
+    // The pass's per-dispatch axis, where the context's flag sets it: one variant per value.
+    const AxisDispatchValues* dispatchValues = nullptr;
+    Axis dispatchAxis = Axis(0);
     for (uint32_t a = 0; a < kPassAxisCount[p]; ++a) {
         const Axis axis = kPassAxes[p][a];
-        key.emplace_back(kAxisMacros[uint32_t(axis)], axisValue(context.axes, axis));
+        if (kAxisDispatchValues[uint32_t(axis)].count > 0 && axisValue(context.axes, axis) != 0) {
+            dispatchValues = &kAxisDispatchValues[uint32_t(axis)];
+            dispatchAxis = axis;
+        }
     }
-    std::string error;
-    if (!shaders::findPermutationIndex(*table, key, &out->permutationIndex, &error)) {
-        return fail(FFX_DOF_ERROR_UNSUPPORTED, "no %s permutation of the pass %s: %s", table->language, kPassNames[p],
-                    error.c_str());
+    out->variantCount = dispatchValues ? dispatchValues->count : 1;
+    for (uint32_t v = 0; v < out->variantCount; ++v) {
+        PassVariant& variant = out->variants[v];
+        std::vector<shaders::Define> key;
+        for (uint32_t a = 0; a < kPassAxisCount[p]; ++a) {
+            const Axis axis = kPassAxes[p][a];
+            const bool perDispatch = dispatchValues && axis == dispatchAxis;
+            if (perDispatch) variant.dispatchValue = dispatchValues->values[v];
+            key.emplace_back(kAxisMacros[uint32_t(axis)],
+                             perDispatch ? dispatchValues->values[v] : axisValue(context.axes, axis));
+        }
+        std::string error;
+        if (!shaders::findPermutationIndex(*table, key, &variant.permutationIndex, &error)) {
+            return fail(FFX_DOF_ERROR_UNSUPPORTED, "no %s permutation of the pass %s: %s", table->language,
+                        kPassNames[p], error.c_str());
+        }
+        variant.blob = &table->blobs[table->permutationToBlob[variant.permutationIndex]];
     }
-    out->blob = &table->blobs[table->permutationToBlob[out->permutationIndex]];
     out->groups = passGroups(context.constants, pass);
 
     for (uint32_t b = 0; b < table->bindingCount; ++b) {
@@ -300,6 +317,14 @@ void setApertureConstants(const FfxDofAperture& a, FfxDofConstants* c) {
     c->catEye = a.catEye;
 }
 
+uint32_t dispatchAxisValue(Axis axis, const FfxDofConstants& constants) {
+    if (axis == Axis::ApertureShapes) {
+        return ffxDofApertureGaugeIsCompact(constants.bladeCount, constants.catEye) ? FFX_DOF_APERTURE_SHAPES_COMPACT
+                                                                                    : FFX_DOF_APERTURE_SHAPES_ANY;
+    }
+    return 0;
+}
+
 DispatchPlan planDispatch(const ContextPlan& plan, const FfxDofDispatchDescription& dispatch, uint32_t frameIndex,
                           bool resetAutofocus) {
     DispatchPlan out;
@@ -330,6 +355,18 @@ DispatchPlan planDispatch(const ContextPlan& plan, const FfxDofDispatchDescripti
         c.focusMaxDistance = side * a->maxFocusDistance;
         c.focusBlend = a->timeConstant > 0.0f ? float(1.0 - std::exp(-double(a->deltaTime) / a->timeConstant)) : 1.0f;
         c.focusFlags = FFX_DOF_FOCUS_FLAG_AUTO | (resetAutofocus ? FFX_DOF_FOCUS_FLAG_RESET : 0u);
+    }
+    for (uint32_t p = 0; p < kPassCount; ++p) {
+        const PlannedPass& pass = plan.passes[p];
+        if (pass.variantCount < 2) continue;
+        for (uint32_t a = 0; a < kPassAxisCount[p]; ++a) {
+            const Axis axis = kPassAxes[p][a];
+            if (kAxisDispatchValues[uint32_t(axis)].count == 0) continue;
+            const uint32_t value = dispatchAxisValue(axis, out.constants);
+            for (uint32_t v = 0; v < pass.variantCount; ++v) {
+                if (pass.variants[v].dispatchValue == value) out.variants[p] = v;
+            }
+        }
     }
     return out;
 }

@@ -50,10 +50,19 @@ struct PlannedImage {
     uint32_t width = 0, height = 0, mipLevels = 1;
 };
 
+// One pipeline of a pass: the permutation it runs.
+struct PassVariant {
+    const shaders::Blob* blob = nullptr;
+    uint32_t permutationIndex = 0;
+    uint32_t dispatchValue = 0;  // the value of the pass's per-dispatch axis (0 without one)
+};
+
 struct PlannedPass {
     const shaders::PassTable* table = nullptr;
-    const shaders::Blob* blob = nullptr;  // the permutation this context runs
-    uint32_t permutationIndex = 0;
+    // One variant per value of the pass's per-dispatch axis (perDispatch in the permutations JSON)
+    // where the context's flag sets it, each dispatch running one (DispatchPlan::variants); else one.
+    PassVariant variants[kMaxPassVariants];
+    uint32_t variantCount = 1;
     PassGrid groups;            // workgroup counts
     uint32_t sampledSlots = 0;  // bit i: FFX_DOF_SRV_* slot i is declared (reflected)
     uint32_t storageSlots = 0;  // bit i: FFX_DOF_UAV_* image slot i
@@ -93,9 +102,10 @@ struct DispatchPlan {
     FfxDofResource color{};
     FfxDofResource depth{};
     FfxDofResource output{};
-    FfxDofConstants constants{};  // the backend may only add FFX_DOF_OUTPUT_FLAG_* bits
-    bool outputIsColor = false;   // in place: output and color are the same image
-    bool runs[kPassCount] = {};   // the passes to record (autofocus only when the dispatch asks for it)
+    FfxDofConstants constants{};         // the backend may only add FFX_DOF_OUTPUT_FLAG_* bits
+    bool outputIsColor = false;          // in place: output and color are the same image
+    bool runs[kPassCount] = {};          // the passes to record (autofocus only when the dispatch asks for it)
+    uint32_t variants[kPassCount] = {};  // the PlannedPass::variants entry each pass runs
 };
 
 // Checks an autofocus description; FFX_DOF_ERROR_INVALID_ARGUMENT naming the field otherwise.
@@ -109,6 +119,11 @@ bool isRoundAperture(const FfxDofAperture& aperture);
 // The aperture's constants (ffx_dof_aperture.h) for a checked description; the round aperture's
 // are contextConstants' defaults.
 void setApertureConstants(const FfxDofAperture& aperture, FfxDofConstants* constants);
+
+// The value a per-dispatch axis takes for a dispatch of these constants: FFX_DOF_OPTION_APERTURE_SHAPES
+// is FFX_DOF_APERTURE_SHAPES_COMPACT where the aperture's gauge fits it (ffxDofApertureGaugeIsCompact),
+// else FFX_DOF_APERTURE_SHAPES_ANY. Axes without perDispatch values: 0.
+uint32_t dispatchAxisValue(Axis axis, const FfxDofConstants& constants);
 
 // The per-frame values added to the context's constants. resetAutofocus: autofocus ignores its
 // previous distance (ffxDofContextResetAutofocus).

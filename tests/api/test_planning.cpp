@@ -2,6 +2,7 @@
 // the real GLSL tables' reflection) and the per-dispatch constants and workgroup counts for awkward
 // sizes (rounding must be symmetric and cover every pixel, tile and half-resolution texel exactly once).
 #include "fake_backend.h"
+#include "ffx_dof_aperture.h"
 #include "ffx_dof_plan.h"
 #include "ffx_dof_readback_ring.h"
 
@@ -109,15 +110,79 @@ TEST_CASE("each pass runs the permutation of the context's axes") {
         INFO("pass " << kPassNames[p]);
         REQUIRE(pass.table != nullptr);
         CHECK(std::string(pass.table->pass) == kPassNames[p]);
-        for (const shaders::Define& define : shaders::permutationDefines(*pass.table, pass.permutationIndex)) {
+        REQUIRE(pass.variantCount == 1);  // without FFX_DOF_ENABLE_APERTURE_SHAPES no axis varies per dispatch
+        const PassVariant& variant = pass.variants[0];
+        for (const shaders::Define& define : shaders::permutationDefines(*pass.table, variant.permutationIndex)) {
             uint32_t expected = 99;
             for (uint32_t a = 0; a < kAxisCount; ++a) {
                 if (define.first == kAxisMacros[a]) expected = axisValue(plan.axes, Axis(a));
             }
             CHECK(define.second == expected);
         }
-        CHECK(pass.blob == &pass.table->blobs[pass.table->permutationToBlob[pass.permutationIndex]]);
+        CHECK(variant.blob == &pass.table->blobs[pass.table->permutationToBlob[variant.permutationIndex]]);
     }
+}
+
+namespace {
+
+// The value of `macro` in the permutation a pass's variant runs (99 when the key lacks it).
+uint32_t variantAxisValue(const PlannedPass& pass, uint32_t variant, const char* macro) {
+    for (const shaders::Define& define :
+         shaders::permutationDefines(*pass.table, pass.variants[variant].permutationIndex))
+        if (define.first == macro) return define.second;
+    return 99;
+}
+
+// The FFX_DOF_OPTION_APERTURE_SHAPES value the blur of a dispatch with this aperture runs.
+uint32_t blurApertureShapes(const ContextPlan& context, const FfxDofAperture* aperture) {
+    FfxDofDispatchDescription dispatch{};
+    dispatch.cocScale = -3.0f;
+    dispatch.cocBias = 2.0f;
+    dispatch.pAperture = aperture;
+    const DispatchPlan planned = planDispatch(context, dispatch, 0);
+    const PlannedPass& blur = context.passes[uint32_t(Pass::Blur)];
+    return variantAxisValue(blur, planned.variants[uint32_t(Pass::Blur)], "FFX_DOF_OPTION_APERTURE_SHAPES");
+}
+
+}  // namespace
+
+TEST_CASE("a shaped context runs the compact blur where the dispatch's aperture allows, the general one elsewhere") {
+    const bool ringMerge = GENERATE(false, true);
+    const ContextPlan context =
+        contextPlan(64, 48, FFX_DOF_ENABLE_APERTURE_SHAPES | (ringMerge ? 0u : uint32_t(FFX_DOF_DISABLE_RING_MERGE)));
+    const PlannedPass& blur = context.passes[uint32_t(Pass::Blur)];
+    REQUIRE(blur.variantCount == 2);
+    // Both variants keep the context's other axes; they differ in the aperture axis alone.
+    for (uint32_t v = 0; v < 2; ++v) {
+        CHECK(variantAxisValue(blur, v, "FFX_DOF_OPTION_DISABLE_RING_MERGE") == (ringMerge ? 0u : 1u));
+        CHECK(variantAxisValue(blur, v, "FFX_DOF_OPTION_APERTURE_SHAPES") == blur.variants[v].dispatchValue);
+    }
+    CHECK(blur.variants[0].blob != blur.variants[1].blob);
+    for (uint32_t p = 0; p < kPassCount; ++p)
+        CHECK(context.passes[p].variantCount == (Pass(p) == Pass::Blur ? 2u : 1u));
+
+    const uint32_t compact = FFX_DOF_APERTURE_SHAPES_COMPACT;
+    const uint32_t any = FFX_DOF_APERTURE_SHAPES_ANY;
+    CHECK(blurApertureShapes(context, nullptr) == compact);
+    const FfxDofAperture anamorphic{0, 0.0f, 0.0f, 1.5f, 0.0f};
+    CHECK(blurApertureShapes(context, &anamorphic) == compact);
+    // Blades whose polygon folds to at most two sides: 3, 4 and 6 (and 0).
+    for (uint32_t blades = 3; blades <= FFX_DOF_MAX_APERTURE_BLADES; ++blades) {
+        INFO(blades << " blades");
+        const FfxDofAperture bladed{blades, 0.3f, 0.2f, 1.0f, 0.0f};
+        const bool fits = blades == 3 || blades == 4 || blades == 6;
+        CHECK(blurApertureShapes(context, &bladed) == (fits ? compact : any));
+        // Any cat's eye takes the general blur, whatever the blades.
+        const FfxDofAperture catEye{blades, 0.3f, 0.2f, 1.0f, 0.01f};
+        CHECK(blurApertureShapes(context, &catEye) == any);
+    }
+    // Fully round blades are no blades.
+    const FfxDofAperture roundBlades{9, 0.0f, 1.0f, 1.0f, 0.0f};
+    CHECK(blurApertureShapes(context, &roundBlades) == compact);
+
+    // A context without the flag has one blur, the circle's, for every dispatch.
+    const ContextPlan round = contextPlan(64, 48);
+    CHECK(blurApertureShapes(round, nullptr) == 0u);
 }
 
 TEST_CASE("the passes' reflected reads and writes form the pipeline's data flow") {

@@ -3,6 +3,7 @@
 #include <catch2/catch.hpp>
 
 #include "ffx_dof_aperture.h"
+#include "ffx_dof_aperture_test_support.h"
 #include "ffx_dof_cpu_pipeline.h"
 #include "ffx_dof_plan.h"
 
@@ -10,22 +11,9 @@
 #include <cmath>
 #include <vector>
 
+using namespace ffxdof::testing;
+
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
-
-FfxDofAperture makeAperture(uint32_t blades, float rotationDegrees = 0.0f, float roundness = 0.0f,
-                            float anamorphic = 1.0f, float catEye = 0.0f) {
-    return FfxDofAperture{blades, float(rotationDegrees * kPi / 180.0), roundness, anamorphic, catEye};
-}
-
-// The aperture a pixel at `pixel` of a `frame`-sized half-res image sees.
-FfxDofPixelAperture pixelAperture(const FfxDofAperture& aperture, FfxFloat32x2 pixel = FfxFloat32x2(50.0f, 50.0f),
-                                  FfxFloat32x2 frame = FfxFloat32x2(100.0f, 100.0f)) {
-    FfxDofConstants constants{};
-    ffxdof::setApertureConstants(aperture, &constants);
-    return ffxDofMakeAperture(constants, pixel, frame);
-}
 
 // The screen position (y up) relative to a far point at which a pixel is reached by it: the gauge takes
 // the offset from the pixel to the sample, y down.
@@ -103,31 +91,8 @@ TEST_CASE("The folded blade gauge is the largest over every side, for 3 to 16 bl
         for (const float rotation : {0.0f, 17.0f, 45.0f, -100.0f}) {
             for (const float roundness : {0.0f, 0.4f}) {
                 for (const float anamorphic : {1.0f, 1.5f}) {
-                    const FfxDofAperture aperture = makeAperture(blades, rotation, roundness, anamorphic);
-                    FfxDofConstants constants{};
-                    ffxdof::setApertureConstants(aperture, &constants);
-                    const FfxDofPixelAperture a = pixelAperture(aperture);
-                    const double inverseInradius = std::hypot(constants.bladeNormal.x, constants.bladeNormal.y);
-                    double largestError = 0.0;
-                    for (int i = 0; i < 400; ++i) {
-                        // Offsets on a spiral through every direction and a range of lengths.
-                        const double angle = i * 2.399963, length = 0.05 + 0.01 * i;
-                        const double x = length * std::cos(angle), y = length * std::sin(angle);
-                        for (const bool nearSample : {false, true}) {
-                            const double side = nearSample ? 1.0 : -1.0;
-                            const double ux = x * side * anamorphic, uy = -y * side;
-                            double expected = std::hypot(ux, uy);
-                            for (uint32_t k = 0; k < blades; ++k) {
-                                const double normalAngle = aperture.bladeRotation + 2.0 * kPi * k / blades;
-                                expected =
-                                    std::max(expected, (std::cos(normalAngle) * ux + std::sin(normalAngle) * uy) *
-                                                           inverseInradius);
-                            }
-                            const double gauge =
-                                ffxDofApertureDistance(a, FfxFloat32x2(float(x), float(y)), nearSample);
-                            largestError = std::max(largestError, std::abs(gauge - expected) / expected);
-                        }
-                    }
+                    const double largestError =
+                        largestBladeGaugeError(makeAperture(blades, rotation, roundness, anamorphic));
                     INFO(blades << " blades, rotation " << rotation << ", roundness " << roundness << ", anamorphic "
                                 << anamorphic << ": largest relative error " << largestError);
                     CHECK(largestError < 1e-5);

@@ -133,7 +133,7 @@ private:
 
     const Backend& backend_;
     const ContextPlan& plan_;
-    ComPtr<ID3D12PipelineState> pipelines_[kPassCount];
+    ComPtr<ID3D12PipelineState> pipelines_[kPassCount][kMaxPassVariants];  // [pass][variant]
     InternalImage images_[kInternalImageCount];
     ComPtr<ID3D12Resource> globals_;
     // The focus distances of the last autofocus dispatches (ffxDofContextGetAutofocusDistance): a
@@ -159,16 +159,18 @@ FfxDofErrorCode Context::init() {
 
 FfxDofErrorCode Context::createPipelines() {
     for (uint32_t p = 0; p < kPassCount; ++p) {
-        const shaders::Blob& blob = *plan_.passes[p].blob;
-        D3D12_COMPUTE_PIPELINE_STATE_DESC desc{};
-        desc.pRootSignature = backend_.rootSignature();
-        desc.CS = {blob.words, blob.wordCount * sizeof(uint32_t)};
-        const HRESULT hr = backend_.device()->CreateComputePipelineState(&desc, IID_PPV_ARGS(&pipelines_[p]));
-        if (FAILED(hr))
-            return fail(FFX_DOF_ERROR_BACKEND,
-                        "ID3D12Device::CreateComputePipelineState failed for pass '%s' permutation %u (HRESULT "
-                        "0x%08lx)",
-                        kPassNames[p], plan_.passes[p].permutationIndex, static_cast<unsigned long>(hr));
+        for (uint32_t v = 0; v < plan_.passes[p].variantCount; ++v) {
+            const PassVariant& variant = plan_.passes[p].variants[v];
+            D3D12_COMPUTE_PIPELINE_STATE_DESC desc{};
+            desc.pRootSignature = backend_.rootSignature();
+            desc.CS = {variant.blob->words, variant.blob->wordCount * sizeof(uint32_t)};
+            const HRESULT hr = backend_.device()->CreateComputePipelineState(&desc, IID_PPV_ARGS(&pipelines_[p][v]));
+            if (FAILED(hr))
+                return fail(FFX_DOF_ERROR_BACKEND,
+                            "ID3D12Device::CreateComputePipelineState failed for pass '%s' permutation %u (HRESULT "
+                            "0x%08lx)",
+                            kPassNames[p], variant.permutationIndex, static_cast<unsigned long>(hr));
+        }
     }
     return FFX_DOF_OK;
 }
@@ -429,7 +431,7 @@ FfxDofErrorCode Context::dispatch(const DispatchPlan& plan) {
         const PlannedPass& pass = plan_.passes[p];
         tracker.beforePass(slots, pass, globals_.Get());
         tracker.flush(list);
-        list->SetPipelineState(pipelines_[p].Get());
+        list->SetPipelineState(pipelines_[p][plan.variants[p]].Get());
         list->Dispatch(pass.groups.x, pass.groups.y, pass.groups.z);
         tracker.afterPass(pass);
     }

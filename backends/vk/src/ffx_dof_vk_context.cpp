@@ -35,7 +35,7 @@ ContextVK::~ContextVK() {
     const VkAllocationCallbacks* allocator = backend_.allocator;
     fn.vkDestroyDescriptorPool(device, descriptorPool_, allocator);
     for (uint32_t pass = 0; pass < kPassCount; ++pass) {
-        fn.vkDestroyPipeline(device, pipelines_[pass], allocator);
+        for (VkPipeline pipeline : pipelines_[pass]) fn.vkDestroyPipeline(device, pipeline, allocator);
         fn.vkDestroyPipelineLayout(device, pipelineLayouts_[pass], allocator);
         fn.vkDestroyDescriptorSetLayout(device, setLayouts_[pass], allocator);
     }
@@ -185,15 +185,52 @@ FfxDofErrorCode ContextVK::createReadback() {
     return FFX_DOF_OK;
 }
 
+FfxDofErrorCode ContextVK::createPipeline(uint32_t pass, const shaders::Blob& blob, VkPipeline* pipeline) {
+    const Functions& fn = backend_.fn;
+    const VkDevice device = backend_.device;
+    const VkAllocationCallbacks* allocator = backend_.allocator;
+    auto moduleInfo = makeInfo<VkShaderModuleCreateInfo>(VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO);
+    moduleInfo.codeSize = blob.wordCount * sizeof(uint32_t);
+    moduleInfo.pCode = blob.words;
+    VkShaderModule module = VK_NULL_HANDLE;
+    FFX_DOF_VK_CHECK(fn.vkCreateShaderModule(device, &moduleInfo, allocator, &module), "vkCreateShaderModule");
+
+    auto subgroupSize = makeInfo<VkPipelineShaderStageRequiredSubgroupSizeCreateInfo>(
+        VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_REQUIRED_SUBGROUP_SIZE_CREATE_INFO);
+    subgroupSize.requiredSubgroupSize = 64;
+    auto pipelineInfo = makeInfo<VkComputePipelineCreateInfo>(VK_STRUCTURE_TYPE_COMPUTE_PIPELINE_CREATE_INFO);
+    pipelineInfo.stage.sType = VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO;
+    pipelineInfo.stage.stage = VK_SHADER_STAGE_COMPUTE_BIT;
+    pipelineInfo.stage.module = module;
+    pipelineInfo.stage.pName = "main";
+    if (plan_.axes.wave64) {
+        // The wave64 shaders assume every subgroup is 64 lanes wide and full.
+        pipelineInfo.stage.pNext = &subgroupSize;
+        pipelineInfo.stage.flags = VK_PIPELINE_SHADER_STAGE_CREATE_REQUIRE_FULL_SUBGROUPS_BIT;
+    }
+    pipelineInfo.layout = pipelineLayouts_[pass];
+    const VkResult created =
+        fn.vkCreateComputePipelines(device, backend_.pipelineCache, 1, &pipelineInfo, allocator, pipeline);
+    fn.vkDestroyShaderModule(device, module, allocator);
+    if (created != VK_SUCCESS) {
+        const std::string what = std::string("vkCreateComputePipelines (") + kPassNames[pass] + ")";
+        return failVk(created, what.c_str());
+    }
+    return FFX_DOF_OK;
+}
+
 FfxDofErrorCode ContextVK::createPipelines() {
     const Functions& fn = backend_.fn;
     const VkDevice device = backend_.device;
     const VkAllocationCallbacks* allocator = backend_.allocator;
     for (uint32_t pass = 0; pass < kPassCount; ++pass) {
         const PlannedPass& planned = plan_.passes[pass];
-        const FfxDofErrorCode supported = checkShaderFeatures(backend_.features, *planned.blob, kPassNames[pass],
-                                                              plan_.axes.half != 0, plan_.axes.wave64 != 0);
-        if (supported != FFX_DOF_OK) return supported;
+        for (uint32_t v = 0; v < planned.variantCount; ++v) {
+            const FfxDofErrorCode supported =
+                checkShaderFeatures(backend_.features, *planned.variants[v].blob, kPassNames[pass],
+                                    plan_.axes.half != 0, plan_.axes.wave64 != 0);
+            if (supported != FFX_DOF_OK) return supported;
+        }
         std::vector<VkDescriptorSetLayoutBinding> bindings;
         for (const SlotClass& slotClass : kSlotClasses) {
             const uint32_t slots = planned.*slotClass.slots;
@@ -223,32 +260,11 @@ FfxDofErrorCode ContextVK::createPipelines() {
         FFX_DOF_VK_CHECK(fn.vkCreatePipelineLayout(device, &layoutInfo, allocator, &pipelineLayouts_[pass]),
                          "vkCreatePipelineLayout");
 
-        auto moduleInfo = makeInfo<VkShaderModuleCreateInfo>(VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO);
-        moduleInfo.codeSize = planned.blob->wordCount * sizeof(uint32_t);
-        moduleInfo.pCode = planned.blob->words;
-        VkShaderModule module = VK_NULL_HANDLE;
-        FFX_DOF_VK_CHECK(fn.vkCreateShaderModule(device, &moduleInfo, allocator, &module), "vkCreateShaderModule");
-
-        auto subgroupSize = makeInfo<VkPipelineShaderStageRequiredSubgroupSizeCreateInfo>(
-            VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_REQUIRED_SUBGROUP_SIZE_CREATE_INFO);
-        subgroupSize.requiredSubgroupSize = 64;
-        auto pipelineInfo = makeInfo<VkComputePipelineCreateInfo>(VK_STRUCTURE_TYPE_COMPUTE_PIPELINE_CREATE_INFO);
-        pipelineInfo.stage.sType = VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO;
-        pipelineInfo.stage.stage = VK_SHADER_STAGE_COMPUTE_BIT;
-        pipelineInfo.stage.module = module;
-        pipelineInfo.stage.pName = "main";
-        if (plan_.axes.wave64) {
-            // The wave64 shaders assume every subgroup is 64 lanes wide and full.
-            pipelineInfo.stage.pNext = &subgroupSize;
-            pipelineInfo.stage.flags = VK_PIPELINE_SHADER_STAGE_CREATE_REQUIRE_FULL_SUBGROUPS_BIT;
-        }
-        pipelineInfo.layout = pipelineLayouts_[pass];
-        const VkResult created =
-            fn.vkCreateComputePipelines(device, backend_.pipelineCache, 1, &pipelineInfo, allocator, &pipelines_[pass]);
-        fn.vkDestroyShaderModule(device, module, allocator);
-        if (created != VK_SUCCESS) {
-            const std::string what = std::string("vkCreateComputePipelines (") + kPassNames[pass] + ")";
-            return failVk(created, what.c_str());
+        for (uint32_t v = 0; v < planned.variantCount; ++v) {
+            if (const FfxDofErrorCode status = createPipeline(pass, *planned.variants[v].blob, &pipelines_[pass][v]);
+                status != FFX_DOF_OK) {
+                return status;
+            }
         }
     }
     return FFX_DOF_OK;

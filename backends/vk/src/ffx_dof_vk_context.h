@@ -47,6 +47,8 @@ private:
     FfxDofErrorCode createGlobals();
     FfxDofErrorCode createReadback();
     FfxDofErrorCode createPipelines();
+    // One pipeline of the pass, on its layout (pipelineLayouts_[pass]).
+    FfxDofErrorCode createPipeline(uint32_t pass, const shaders::Blob& blob, VkPipeline* pipeline);
     FfxDofErrorCode createDescriptors();
     void writeInternalDescriptors();
     VkImageView internalView(const SlotTarget& target, bool storage) const;
@@ -75,7 +77,7 @@ private:
 
     std::array<VkDescriptorSetLayout, kPassCount> setLayouts_{};
     std::array<VkPipelineLayout, kPassCount> pipelineLayouts_{};
-    std::array<VkPipeline, kPassCount> pipelines_{};
+    std::array<std::array<VkPipeline, kMaxPassVariants>, kPassCount> pipelines_{};  // [pass][variant]
 
     VkDescriptorPool descriptorPool_ = VK_NULL_HANDLE;
     std::vector<std::array<VkDescriptorSet, kPassCount>> sets_;  // [ring slot][pass]

@@ -195,7 +195,7 @@ FfxDofErrorCode ContextVK::dispatch(const DispatchPlan& dispatch) {
         writtenSinceBarrier |= planned.writes;
         readSinceBarrier |= planned.reads;
 
-        fn.vkCmdBindPipeline(commandBuffer, VK_PIPELINE_BIND_POINT_COMPUTE, pipelines_[pass]);
+        fn.vkCmdBindPipeline(commandBuffer, VK_PIPELINE_BIND_POINT_COMPUTE, pipelines_[pass][dispatch.variants[pass]]);
         fn.vkCmdBindDescriptorSets(commandBuffer, VK_PIPELINE_BIND_POINT_COMPUTE, pipelineLayouts_[pass], 0, 1,
                                    &sets_[ringSlot][pass], 0, nullptr);
         fn.vkCmdPushConstants(commandBuffer, pipelineLayouts_[pass], VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof(constants),
