@@ -13,7 +13,9 @@
 //   coverage (ffxDofFarNearerShare, ffxDofComposeFarLayers). A sample only counts within its own
 //   radius, so in-focus and foreground color never spreads into the far field beyond it. A far
 //   sample whose light over its own disc exceeds display white (in the input's units: GLOBALS'
-//   colour scale) spreads over a slightly smaller disc (ffxDofHighlightSpreadRadius).
+//   colour scale) spreads over a slightly smaller disc (ffxDofHighlightSpreadRadius). Where the layers
+//   in front leave most of the disc open, what lies behind is also read beyond the kernel, as far as
+//   the far radii that reach the tile (ffxDofGatherBehind).
 //   Hole filling: when the texel itself is near, every far-field sample, whatever its reach, is
 //   also summed as the fill, its color weighted by proximity (ffxDofFillProximity), and added to
 //   the far color at the end with the weight that as many samples of the texel's own radius would
@@ -441,7 +443,8 @@ struct FfxDofKernel
     FfxFloat32x2 origin;
     FfxFloat32 centerCoc;
     FfxFloat32 spacing;
-    FfxFloat32 rimInset;       // how far the rim border moves in where coarse texels judge it (ffxDofWalkBorderRadius)
+    FfxFloat32 rimInset;      // how far the rim border moves in where coarse texels judge it (ffxDofWalkBorderRadius)
+    FfxFloat32 behindRadius;  // how far beyond the kernel far samples may reach the texel (ffxDofGatherBehind); 0: none
     FfxBoolean mergeResolved;  // the tile's radii allow merged rings (ffxDofMergedRingsResolve)
     FfxUInt32 baseMip;
     FfxUInt32 rings;
@@ -578,16 +581,9 @@ FFX_DOF_INLINE void ffxDofWalkSamples(FFX_DOF_INOUT(FfxDofGather) gather, FFX_DO
     }
 }
 
-// Gathers rings firstRing..lastRing from MIP `mip`: every texel of that MIP whose centre lies in
-// the rings' annulus around the kernel origin, once. A sample weighs the texel's area (4^mip
-// half-res px^2), so rings from different MIPs add up, and the whole ring counts `presence` (0..1)
-// times. trackSpread (a literal at every call, so it compiles away) records the radius spread of
-// the samples for the ring-merge decision: only the outermost ring needs it. Hole filling needs both
-// fields (a near texel with background samples around it): only the mixed path has it.
-FFX_DOF_INLINE void ffxDofGatherRing(FFX_DOF_INOUT(FfxDofGather) gather, FfxDofKernel kernel, FfxUInt32 firstRing,
-                                     FfxUInt32 lastRing, FfxUInt32 mip, FfxUInt32 innerBorderMip,
-                                     FfxUInt32 outerBorderMip, FfxFloat32 presence, FfxBoolean trackSpread,
-                                     FfxDofGatherParts parts, FfxDofConstants constants)
+// What a walk at MIP `mip` shares with its samples; `presence` (0..1): how much the walk counts.
+FFX_DOF_INLINE FfxDofRingWalk ffxDofMakeRingWalk(FfxDofKernel kernel, FfxUInt32 mip, FfxFloat32 presence,
+                                                 FfxBoolean trackSpread, FfxDofConstants constants)
 {
     FfxDofRingWalk ring;
     ring.mip = mip;
@@ -599,11 +595,27 @@ FFX_DOF_INLINE void ffxDofGatherRing(FFX_DOF_INOUT(FfxDofGather) gather, FfxDofK
     ring.levelScale = ring.texelSize * ring.texelSize * kernel.aperture.areaScale * kernel.inverseColorScale *
                       (1.0f / (FFX_DOF_PI * FFX_DOF_HIGHLIGHT_LEVEL));
     FfxFloat32 mipScale = 1.0f / ring.texelSize;
-    FfxFloat32 spacing = kernel.spacing * mipScale;
     // In units of MIP texels: the kernel centre less half a texel, so that (texel - centre) is the
     // offset of the texel's centre.
     ring.centerToCorner = kernel.center * mipScale - FfxFloat32x2(0.5f, 0.5f);
     ring.lastTexel = FfxFloat32x2(ffxDofMipSize(constants.halfSize, mip) - FfxUInt32x2(1u, 1u));
+    return ring;
+}
+
+// Gathers rings firstRing..lastRing from MIP `mip`: every texel of that MIP whose centre lies in
+// the rings' annulus around the kernel origin, once. A sample weighs the texel's area (4^mip
+// half-res px^2), so rings from different MIPs add up, and the whole ring counts `presence` (0..1)
+// times. trackSpread (a literal at every call, so it compiles away) records the radius spread of
+// the samples for the ring-merge decision: only the outermost ring needs it. Hole filling needs both
+// fields (a near texel with background samples around it): only the mixed path has it.
+FFX_DOF_INLINE void ffxDofGatherRing(FFX_DOF_INOUT(FfxDofGather) gather, FfxDofKernel kernel, FfxUInt32 firstRing,
+                                     FfxUInt32 lastRing, FfxUInt32 mip, FfxUInt32 innerBorderMip,
+                                     FfxUInt32 outerBorderMip, FfxFloat32 presence, FfxBoolean trackSpread,
+                                     FfxDofGatherParts parts, FfxDofConstants constants)
+{
+    FfxDofRingWalk ring = ffxDofMakeRingWalk(kernel, mip, presence, trackSpread, constants);
+    FfxFloat32 mipScale = 1.0f / ring.texelSize;
+    FfxFloat32 spacing = kernel.spacing * mipScale;
     // Borders shared with a walk at a coarser MIP are judged by its texels (FfxDofAnnulus).
     FfxFloat32 rimInset = kernel.rimInset * mipScale;
     FfxFloat32 innerRadius =
@@ -735,6 +747,55 @@ FFX_DOF_INLINE FfxDofBlurResult ffxDofFinishGather(FfxDofGather gather, FfxDofKe
     return result;
 }
 
+FFX_DOF_INLINE FfxDofGatherParts ffxDofMakeGatherParts(FfxBoolean nearField, FfxBoolean farField,
+                                                       FfxBoolean equalWeights, FfxBoolean shaped)
+{
+    FfxDofGatherParts parts;
+    parts.nearField = nearField;
+    parts.farField = farField;
+    parts.equalWeights = equalWeights;
+    parts.shaped = shaped;
+    return parts;
+}
+
+// Coverage of the layers in front (nearer and front, over pi) from which ffxDofGatherBehind is not walked.
+// On a sloped surface the front layer (radii within 1.5 px of the texel's own) covers only a band of the
+// kernel, so a threshold near 1 walked most of the benchmark's floor for what the floor itself hides: the
+// blur 1.05 times as long; from 0.5, no measurable cost, and the same figures for every light of
+// docs/quality.md (docs/performance.md, "What lies behind the kernel").
+#define FFX_DOF_BEHIND_HIDDEN_COVERAGE 0.5f
+
+// Far samples beyond the kernel that still reach the texel. A far texel's kernel is its own radius, but
+// a sample behind it of a larger radius reaches farther: where the texel's own surface covers only part
+// of its disc (a small light, the rim of an object) what lies behind shows through, a light there
+// included. Without this, a dim light on a bright light's disc cut the bright disc at its own texels as
+// if opaque: it added 0.79 of its energy instead of 1.00 (docs/quality.md, a dim light beside a bright
+// one). Walked at the kernel's MIP from the outermost ring's outer border (the same figures, so the two
+// share no texel and miss none) out to the farthest far radius that reaches the tile (dilate's far end),
+// only where the layers in front do not hide it already. Not on equal-weight tiles, whose samples are all
+// taken at the texel's own radius.
+FFX_DOF_INLINE void ffxDofGatherBehind(FFX_DOF_INOUT(FfxDofGather) gather, FfxDofKernel kernel, FfxDofGatherParts parts,
+                                       FfxDofConstants constants)
+{
+    FfxFloat32 covered = (gather.farNearer.weight + gather.farFront.weight) * (1.0f / FFX_DOF_PI);
+    if (kernel.behindRadius <= 0.0f || covered >= FFX_DOF_BEHIND_HIDDEN_COVERAGE)
+        return;
+    FfxDofRingWalk ring = ffxDofMakeRingWalk(kernel, kernel.baseMip, 1.0f, false, constants);
+    FfxFloat32 mipScale = 1.0f / ring.texelSize;
+    FfxFloat32 innerRadius = ffxDofRingInnerRadius(kernel.rings + 1u, kernel.spacing * mipScale);
+    FfxFloat32 outerRadius = max((kernel.behindRadius + 0.5f * kernel.spacing) * mipScale, innerRadius);
+    FfxDofAnnulus annulus = ffxDofMakeAnnulus(kernel.origin * mipScale, innerRadius, outerRadius, 1.0f, 1.0f,
+                                              parts.shaped ? 1.0f / kernel.aperture.anamorphicRatio : 1.0f);
+    // Far buckets only: near samples this far out cannot reach (the kernel covers the near radii).
+    FfxDofGatherParts behindParts = ffxDofMakeGatherParts(false, true, false, parts.shaped);
+    FfxFloat32x3 unusedFillSum = FfxFloat32x3(0.0f, 0.0f, 0.0f);
+    FfxFloat32x2 unusedFillWeights = FfxFloat32x2(0.0f, 0.0f);
+    if (kernel.baseMip == 0u)
+        ffxDofWalkSamples(gather, unusedFillSum, unusedFillWeights, kernel, ring, annulus, false, behindParts);
+    else
+        ffxDofWalkSamples(gather, unusedFillSum, unusedFillWeights, kernel, ring, annulus, true, behindParts);
+}
+
 // Gathers the whole kernel with the parts of one tile class.
 // The outermost ring is always gathered at full resolution (it keeps the circle), and it tells how
 // flat the radii around the texel are: the merged path is taken by how flat, per texel, from the
@@ -757,17 +818,8 @@ FFX_DOF_INLINE void ffxDofGatherKernel(FFX_DOF_INOUT(FfxDofGather) gather, FfxDo
     if (mergeEligible)
         mergeAmount = parts.equalWeights ? 1.0f : ffxDofRingMergeAmount(gather.cocSpread);
     ffxDofGatherInnerRings(gather, kernel, mergeEligible, mergeAmount, parts, constants);
-}
-
-FFX_DOF_INLINE FfxDofGatherParts ffxDofMakeGatherParts(FfxBoolean nearField, FfxBoolean farField,
-                                                       FfxBoolean equalWeights, FfxBoolean shaped)
-{
-    FfxDofGatherParts parts;
-    parts.nearField = nearField;
-    parts.farField = farField;
-    parts.equalWeights = equalWeights;
-    parts.shaped = shaped;
-    return parts;
+    if (parts.farField && !parts.equalWeights)
+        ffxDofGatherBehind(gather, kernel, parts, constants);
 }
 
 // Gathers the kernel on the path of its tile class (`shaped`: a literal at each call).
@@ -817,6 +869,9 @@ FFX_DOF_INLINE FfxDofBlurResult ffxDofBlurTexel(FfxUInt32x2 texel, FfxFloat32x4 
     // 0.95 to 1.02, and a bright near patch over a far field gained 1.4% instead of 0.5%.
     FfxBoolean flatFarTile = dilated.w < FFX_DOF_NEAR_THRESHOLD && ffxDofFootprintFlat(dilated);
     kernel.rimInset = flatFarTile ? FFX_DOF_RING_MERGE_RIM_INSET * FfxFloat32(1u << kernel.baseMip) : 0.0f;
+    // Far samples may reach a far texel from as far as the farthest radius that reaches its tile.
+    FfxFloat32 farReach = -dilated.x;
+    kernel.behindRadius = kernel.centerCoc <= -FFX_DOF_IN_FOCUS_RADIUS && farReach > kernelRadius ? farReach : 0.0f;
     kernel.center = FfxFloat32x2(texel) + FfxFloat32x2(0.5f, 0.5f);
     kernel.aperture = ffxDofRoundAperture();
     kernel.origin = kernel.center + ffxDofKernelJitter(texel, constants.frameIndex);

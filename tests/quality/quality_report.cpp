@@ -360,7 +360,15 @@ void writeLightPairs(std::ostream& md, vkrun::Device& device) {
           "lies (its light offset), 0.93 to 0.95 (1.23 to 1.49 with a half-texel rim inset); since the coarse "
           "levels are packed in one texel (COARSE_MIPS, docs/technique.md) the figures above: the packed radius "
           "is rounded to nearest where lavapipe's R16 float store truncated it, and a build that truncates it "
-          "gives the earlier figures to the last digit.\n\n";
+          "gives the earlier figures to the last digit. Where the discs overlap most (16 px) the dim light lies on the "
+          "bright disc's rim. Until 2026-11-28 a far texel's kernel reached its own radius only, so the dim light's "
+          "own texels (radius 3 or 6.5 half-res px) never read the bright light 8 texels away, whose disc reaches "
+          "them: the dim light cut the bright disc at its own texels as if opaque and kept 0.79 to 0.82. Far samples "
+          "beyond the kernel that reach a texel are now gathered where the layers in front cover less than half "
+          "its disc (`ffxDofGatherBehind`, docs/technique.md): the figures above. What is left lies in the "
+          "composite: its joint-bilateral upsample takes a full-res pixel's far colour from the half-res texels "
+          "of a radius like its own, so the pixels of the dim light and the background pixels beside it take the "
+          "bright disc's rim from texels up to one farther out, where the rim is dimmer.\n\n";
 }
 
 // Issue 17's light-kept gate in the mid-lights scene itself (tests/quality/test_small_lights.cpp).

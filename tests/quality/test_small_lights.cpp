@@ -95,10 +95,14 @@ TEST_CASE("mid-lights: every light measured alone, and no fewer lights within 5%
 // (COARSE_MIPS) the merged cases from 24 px on kept 0.93 to 0.95 (6 of 12; 4 before the whole-texel rim
 // inset, 0.81 to 0.93 while coarse texels were drawn about their centres): lavapipe's R16 float stores
 // truncated the coarse radius, which the packing rounds to nearest.
+// Until 2026-11-28 (ffxDofGatherBehind) the dim light's own texels never read the bright light, whose
+// disc reaches them from beyond their kernel, and cut its disc as if opaque: the cases at 16 px kept 0.79
+// to 0.82; since, 0.91 to 0.94 (every case at least kLeastBeside).
 // Until every case passes, the count is a ratchet: it may rise (raise kWithinFivePercent), never fall.
 TEST_CASE("small lights: a dim light beside a bright one adds its energy within 5%, and no fewer cases than measured",
           "[quality][vulkan][lights]") {
     constexpr size_t kWithinFivePercent = 8;  // of 12
+    constexpr double kLeastBeside = 0.9;
     quality::validatedDevice().clearValidationMessages();
     const std::vector<quality::LightPairCase> pairs = quality::runLightPairCases(quality::validatedDevice());
     REQUIRE(pairs.size() == 12);
@@ -106,6 +110,7 @@ TEST_CASE("small lights: a dim light beside a bright one adds its energy within 
     for (const quality::LightPairCase& pair : pairs) {
         INFO(pair.describe());
         CHECK(std::abs(pair.aloneRatio - 1.0) <= 0.05);
+        CHECK(pair.besideRatio >= kLeastBeside);
         within += pair.energyOk();
     }
     CHECK(within >= kWithinFivePercent);
