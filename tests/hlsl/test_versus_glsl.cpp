@@ -124,7 +124,8 @@ TEST_CASE("HLSL matches GLSL in every permutation on far-highlights 67x41", "[vu
 }
 
 // The aperture's constants reach both languages' shaders alike (docs/aperture.md): odd blades (whose
-// near and far discs differ), rounded blades with an anamorphic squeeze, and the cat's eye.
+// near and far discs differ), rounded blades with an anamorphic squeeze, and the cat's eye; the first
+// and the last run the general blur pipeline, the second the compact one (docs/permutations.md).
 TEST_CASE("HLSL matches GLSL with aperture shapes on far-highlights 67x41", "[vulkan][hlsl][aperture]") {
     const SceneInputs inputs = makeSceneInputs("far-highlights", 67, 41);
     const FfxDofAperture apertures[] = {
