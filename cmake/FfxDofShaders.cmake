@@ -58,7 +58,18 @@ function(ffx_dof_add_shader_library target)
   elseif(arg_DXC)
     message(FATAL_ERROR "ffx_dof_add_shader_library(${target}): DXC is for LANGUAGE dxil only")
   endif()
-  if(NOT TARGET ffx-dof-shaderc)
+  # FFX_DOF_SHADERC: a prebuilt ffx-dof-shaderc that compiles the permutations instead of this build's
+  # own. The sanitizer build (tools/test.sh) takes the Release build's: its own, a Debug build under
+  # ASan, took five times as long for the same blobs (about six minutes of CI for every pass).
+  if(FFX_DOF_SHADERC)
+    if(NOT EXISTS "${FFX_DOF_SHADERC}")
+      message(FATAL_ERROR "FFX_DOF_SHADERC is '${FFX_DOF_SHADERC}', which does not exist (build ffx-dof-shaderc "
+                          "first, or leave FFX_DOF_SHADERC empty to use this build's)")
+    endif()
+    set(shaderc "${FFX_DOF_SHADERC}")
+  elseif(TARGET ffx-dof-shaderc)
+    set(shaderc ffx-dof-shaderc)
+  else()
     message(FATAL_ERROR "ffx_dof_add_shader_library(${target}): the ffx-dof-shaderc tool is not part of this build "
                         "(it is built with FFX_DOF_BUILD_VULKAN)")
   endif()
@@ -129,9 +140,9 @@ function(ffx_dof_add_shader_library target)
     set(stem "ffx_dof_${pass}_${arg_LANGUAGE}")
     add_custom_command(
       OUTPUT "${out_dir}/${stem}.h" "${out_dir}/${stem}.cpp" "${out_dir}/${stem}.json"
-      COMMAND ffx-dof-shaderc "${source}" --pass ${pass} ${common_args} ${axis_args} -o "${out_dir}"
+      COMMAND ${shaderc} "${source}" --pass ${pass} ${common_args} ${axis_args} -o "${out_dir}"
               --basename ${stem} --depfile "${out_dir}/${stem}.d"
-      DEPENDS ffx-dof-shaderc "${source}" ${dxc_depends}
+      DEPENDS ${shaderc} "${source}" ${dxc_depends}
       DEPFILE "${out_dir}/${stem}.d"
       COMMENT "ffx-dof-shaderc: all permutations of ${pass} (${arg_LANGUAGE})"
       VERBATIM)
