@@ -602,6 +602,28 @@ FFX_DOF_INLINE FfxDofRingWalk ffxDofMakeRingWalk(FfxDofKernel kernel, FfxUInt32 
     return ring;
 }
 
+// The annulus from `innerRadius` to `outerRadius` (texels of the walk's MIP) around the kernel origin,
+// its borders judged in blocks of `innerBlock` and `outerBlock` texels (FfxDofAnnulus); squeezed by the
+// aperture's anamorphic ratio where the kernel is shaped.
+FFX_DOF_INLINE FfxDofAnnulus ffxDofKernelAnnulus(FfxDofKernel kernel, FfxDofRingWalk ring, FfxFloat32 innerRadius,
+                                                 FfxFloat32 outerRadius, FfxFloat32 innerBlock, FfxFloat32 outerBlock,
+                                                 FfxBoolean shaped)
+{
+    return ffxDofMakeAnnulus(kernel.origin * (1.0f / ring.texelSize), innerRadius, outerRadius, innerBlock, outerBlock,
+                             shaped ? 1.0f / kernel.aperture.anamorphicRatio : 1.0f);
+}
+
+// Walks `annulus` at the walk's MIP (ffxDofWalkSamples, with `coarse` a literal at each call).
+FFX_DOF_INLINE void ffxDofWalkAnnulus(FFX_DOF_INOUT(FfxDofGather) gather, FFX_DOF_INOUT(FfxFloat32x3) ringFillSum,
+                                      FFX_DOF_INOUT(FfxFloat32x2) ringFillWeights, FfxDofKernel kernel,
+                                      FfxDofRingWalk ring, FfxDofAnnulus annulus, FfxDofGatherParts parts)
+{
+    if (ring.mip == 0u)
+        ffxDofWalkSamples(gather, ringFillSum, ringFillWeights, kernel, ring, annulus, false, parts);
+    else
+        ffxDofWalkSamples(gather, ringFillSum, ringFillWeights, kernel, ring, annulus, true, parts);
+}
+
 // Gathers rings firstRing..lastRing from MIP `mip`: every texel of that MIP whose centre lies in
 // the rings' annulus around the kernel origin, once. A sample weighs the texel's area (4^mip
 // half-res px^2), so rings from different MIPs add up, and the whole ring counts `presence` (0..1)
@@ -624,14 +646,11 @@ FFX_DOF_INLINE void ffxDofGatherRing(FFX_DOF_INOUT(FfxDofGather) gather, FfxDofK
         ffxDofWalkBorderRadius(lastRing + 1u, spacing, kernel.rings, outerBorderMip != kernel.baseMip, rimInset);
     FfxFloat32 innerBlock = FfxFloat32(1u << (innerBorderMip - mip));
     FfxFloat32 outerBlock = FfxFloat32(1u << (outerBorderMip - mip));
-    FfxDofAnnulus annulus = ffxDofMakeAnnulus(kernel.origin * mipScale, innerRadius, outerRadius, innerBlock,
-                                              outerBlock, parts.shaped ? 1.0f / kernel.aperture.anamorphicRatio : 1.0f);
+    FfxDofAnnulus annulus =
+        ffxDofKernelAnnulus(kernel, ring, innerRadius, outerRadius, innerBlock, outerBlock, parts.shaped);
     FfxFloat32x3 ringFillSum = FfxFloat32x3(0.0f, 0.0f, 0.0f);
     FfxFloat32x2 ringFillWeights = FfxFloat32x2(0.0f, 0.0f);
-    if (mip == 0u)
-        ffxDofWalkSamples(gather, ringFillSum, ringFillWeights, kernel, ring, annulus, false, parts);
-    else
-        ffxDofWalkSamples(gather, ringFillSum, ringFillWeights, kernel, ring, annulus, true, parts);
+    ffxDofWalkAnnulus(gather, ringFillSum, ringFillWeights, kernel, ring, annulus, parts);
     gather.fillSum += ringFillSum * ring.sampleWeight;
     gather.fillWeights += ringFillWeights * ring.sampleWeight;
 }
@@ -784,16 +803,12 @@ FFX_DOF_INLINE void ffxDofGatherBehind(FFX_DOF_INOUT(FfxDofGather) gather, FfxDo
     FfxFloat32 mipScale = 1.0f / ring.texelSize;
     FfxFloat32 innerRadius = ffxDofRingInnerRadius(kernel.rings + 1u, kernel.spacing * mipScale);
     FfxFloat32 outerRadius = max((kernel.behindRadius + 0.5f * kernel.spacing) * mipScale, innerRadius);
-    FfxDofAnnulus annulus = ffxDofMakeAnnulus(kernel.origin * mipScale, innerRadius, outerRadius, 1.0f, 1.0f,
-                                              parts.shaped ? 1.0f / kernel.aperture.anamorphicRatio : 1.0f);
+    FfxDofAnnulus annulus = ffxDofKernelAnnulus(kernel, ring, innerRadius, outerRadius, 1.0f, 1.0f, parts.shaped);
     // Far buckets only: near samples this far out cannot reach (the kernel covers the near radii).
     FfxDofGatherParts behindParts = ffxDofMakeGatherParts(false, true, false, parts.shaped);
     FfxFloat32x3 unusedFillSum = FfxFloat32x3(0.0f, 0.0f, 0.0f);
     FfxFloat32x2 unusedFillWeights = FfxFloat32x2(0.0f, 0.0f);
-    if (kernel.baseMip == 0u)
-        ffxDofWalkSamples(gather, unusedFillSum, unusedFillWeights, kernel, ring, annulus, false, behindParts);
-    else
-        ffxDofWalkSamples(gather, unusedFillSum, unusedFillWeights, kernel, ring, annulus, true, behindParts);
+    ffxDofWalkAnnulus(gather, unusedFillSum, unusedFillWeights, kernel, ring, annulus, behindParts);
 }
 
 // Gathers the whole kernel with the parts of one tile class.

@@ -6,6 +6,7 @@
 
 #include "ffx_dof_aperture.h"
 
+#include <cassert>
 #include <cmath>
 #include <cstring>
 #include <string>
@@ -363,9 +364,17 @@ DispatchPlan planDispatch(const ContextPlan& plan, const FfxDofDispatchDescripti
             const Axis axis = kPassAxes[p][a];
             if (kAxisDispatchValues[uint32_t(axis)].count == 0) continue;
             const uint32_t value = dispatchAxisValue(axis, out.constants);
+            bool planned = false;
             for (uint32_t v = 0; v < pass.variantCount; ++v) {
-                if (pass.variants[v].dispatchValue == value) out.variants[p] = v;
+                if (pass.variants[v].dispatchValue == value) {
+                    out.variants[p] = v;
+                    planned = true;
+                }
             }
+            // dispatchAxisValue may only answer values of the JSON's "perDispatch" list, which planPass made
+            // variants of: a value without one is a rule that forgot an axis value, not a user error.
+            assert(planned && "dispatchAxisValue returned a value the pass has no variant for");
+            (void)planned;
         }
     }
     return out;

@@ -1,9 +1,9 @@
-// The five real passes as the backends embed them: counts from the permutations JSON, every key
+// The real passes as the Vulkan backend embeds them: counts from the permutations JSON, every key
 // resolving, GLSL and HLSL agreeing on slots, and the push constants laid out like FfxDofConstants.
 #define FFX_CPU 1
 #include "ffx_dof_constants.h"
-#include "ffx_dof_all_passes_glsl.h"
-#include "ffx_dof_all_passes_hlsl.h"
+#include "ffx_dof_vk_shaders_glsl.h"
+#include "ffx_dof_vk_shaders_hlsl.h"
 
 #include <catch2/catch.hpp>
 #include <nlohmann/json.hpp>
@@ -26,8 +26,8 @@ nlohmann::json permutationsJson() {
 }
 
 const PassTable* tableOf(const std::string& language, const std::string& pass) {
-    return language == "glsl" ? ffxdof::test::all_glsl::findPassTable(pass.c_str())
-                              : ffxdof::test::all_hlsl::findPassTable(pass.c_str());
+    return language == "glsl" ? ffxdof::shaders::glsl::findPassTable(pass.c_str())
+                              : ffxdof::shaders::hlsl::findPassTable(pass.c_str());
 }
 
 std::string leafName(const std::string& name) { return name.substr(name.rfind('.') + 1); }
