@@ -712,9 +712,20 @@ TEST_CASE("Upsample position maps full-res pixel centres into half-res texel spa
 
 TEST_CASE("Upsample CoC weight favours matching radii", "[upsample]") {
     CHECK(ffxDofUpsampleCocWeight(-30.0f, -30.0f) == 1.0f);
-    CHECK(ffxDofUpsampleCocWeight(-27.0f, -30.0f) == Approx(0.8f));
     CHECK(ffxDofUpsampleCocWeight(0.0f, -30.0f) == Approx(1e-3f));
+    CHECK(ffxDofUpsampleCocWeight(-30.0f, 0.0f) == Approx(1e-3f));
     CHECK(ffxDofUpsampleCocWeight(0.5f, 0.0f) == Approx(0.5f));
+    // Near and in-focus pixels judge a tap against half their own radius.
+    CHECK(ffxDofUpsampleCocWeight(27.0f, 30.0f) == Approx(0.8f));
+    CHECK(ffxDofUpsampleCocWeight(15.0f, 30.0f) == Approx(1e-3f));
+    // Two far radii: the smaller over the larger, whichever is the pixel's.
+    CHECK(ffxDofUpsampleCocWeight(-27.0f, -30.0f) == Approx(0.9f));
+    CHECK(ffxDofUpsampleCocWeight(-6.5f, -16.0f) == Approx(6.5f / 16.0f));
+    CHECK(ffxDofUpsampleCocWeight(-16.0f, -6.5f) == Approx(6.5f / 16.0f));
+    CHECK(ffxDofUpsampleCocWeight(-1.0f, -3000.0f) == Approx(1e-3f));
+    // A far tap for a near pixel, and the reverse, are still rejected.
+    CHECK(ffxDofUpsampleCocWeight(-16.0f, 16.0f) == Approx(1e-3f));
+    CHECK(ffxDofUpsampleCocWeight(16.0f, -16.0f) == Approx(1e-3f));
 }
 
 TEST_CASE("Layer blend weights match the variance of the pixel's disc", "[composite]") {
