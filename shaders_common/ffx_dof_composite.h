@@ -128,21 +128,29 @@ FFX_DOF_INLINE FfxFloat32x2 ffxDofUpsamplePosition(FfxUInt32x2 fullPixel, FFX_DO
 
 // Joint-bilateral factor of a half-res tap for a full-res pixel: how well the tap's radius matches
 // the pixel's. Never exactly 0, so a pixel that matches no tap falls back to plain bilinear weights.
-// Between two far-field radii, the smaller over the larger: what far content spreads onto a place does
-// not depend on which far surface the pinhole sees there, so far texels of other radii hold much the same
-// layers and only their own surface's share differs. Judged against half the pixel's radius instead (as
-// near and in-focus pixels are), a small far light's pixels and the background's around it (6.5 and 16
-// half-res px) each rejected the other's texels, and on a bright disc's rim both took it from texels
-// farther out: the dim light of docs/quality.md's light pair kept 0.912 to 0.936 of its energy instead of
-// 0.921 to 0.939, and busy-background's halo band was 0.30 dB lower. Plain bilinear between far taps
-// (weight 1) gained more there (0.19 dB overall) but drew a light at radius 6 px twice where the
-// composite hands it from its full-res gather to the layers (1.047 of its energy).
+// A far tap for a far pixel weighs at least the smaller radius over the larger, where the tap's far layer
+// holds the texel's own surface (its radius from FFX_DOF_FAR_LAYER_ONLY_RADIUS, ramped in over
+// FFX_DOF_OWN_SURFACE_FADE below): what far content spreads onto a place does not depend on which far
+// surface the pinhole sees there, so such texels hold much the same layers. Judged against half the
+// pixel's radius only (as near and in-focus pixels judge theirs), a small far light's pixels and the
+// background's around it (6.5 and 16 half-res px) each rejected the other's texels, and on a bright disc's
+// rim both took it from texels farther out: the dim light of docs/quality.md's light pair kept 0.912 to
+// 0.936 of its energy instead of 0.921 to 0.939, busy-background's halo band 0.36 dB less. The far layer of
+// a texel of smaller radius leaves out the surface the composite gathers at full resolution
+// (ffxDofOwnGatherShare): background pixels that took it drew a light of 2 or 3 px at radius 0.8 twice
+// (1.05 to 1.08 of its energy). Plain bilinear between far taps drew a light at radius 6 px twice too
+// (1.047).
 FFX_DOF_INLINE FfxFloat32 ffxDofUpsampleCocWeight(FfxFloat32 tapCoc, FfxFloat32 pixelCoc)
 {
-    if (tapCoc <= -FFX_DOF_IN_FOCUS_RADIUS && pixelCoc <= -FFX_DOF_IN_FOCUS_RADIUS)
-        return max(max(tapCoc, pixelCoc) / min(tapCoc, pixelCoc), 1e-3f);
     FfxFloat32 tolerance = max(1.0f, 0.5f * abs(pixelCoc));
-    return max(ffxDofSaturate(1.0f - abs(tapCoc - pixelCoc) / tolerance), 1e-3f);
+    FfxFloat32 weight = ffxDofSaturate(1.0f - abs(tapCoc - pixelCoc) / tolerance);
+    if (tapCoc <= -FFX_DOF_IN_FOCUS_RADIUS && pixelCoc <= -FFX_DOF_IN_FOCUS_RADIUS)
+    {
+        FfxFloat32 tapHoldsOwnSurface =
+            ffxDofSaturate(-tapCoc - FFX_DOF_FAR_LAYER_ONLY_RADIUS + FFX_DOF_OWN_SURFACE_FADE);
+        weight = max(weight, tapHoldsOwnSurface * max(tapCoc, pixelCoc) / min(tapCoc, pixelCoc));
+    }
+    return max(weight, 1e-3f);
 }
 
 // Blend weights of the layers below the near field, from the pixel's |radius| (half-res px). The
@@ -445,14 +453,14 @@ FFX_DOF_INLINE FfxFloat32 ffxDofOwnSurfaceLayerShare(FfxFloat32 absCoc)
                           (1.0f / FFX_DOF_OWN_SURFACE_FADE));
 }
 
-// The composed color of one full-res pixel, `inQuad` (0..1 each way) in its invocation's quad;
+// The composed color of one full-res pixel whose input is `color` and fixed 3x3 blur `fixedBlur`;
 // `filteredOrigin` is the half-res texel at filtered index 0; `ownSurfaceTile` whether the group loaded
 // the full-res neighbourhood from `ownSurfaceOrigin` (ffxDofTileGathersOwnSurface). Returns false (and leaves `color`
 // alone) when the pixel keeps its input value.
-FFX_DOF_INLINE FfxBoolean ffxDofComposePixel(FfxUInt32x2 pixel, FfxUInt32x2 inQuad, FfxInt32x2 filteredOrigin,
-                                             FfxDofConstants constants, FfxDofQuadNeighbourhood neighbourhood,
-                                             FfxBoolean ownSurfaceTile, FfxBoolean smallSourceTile,
-                                             FfxInt32x2 ownSurfaceOrigin, FFX_DOF_INOUT(FfxFloat32x4) color)
+FFX_DOF_INLINE FfxBoolean ffxDofComposePixel(FfxUInt32x2 pixel, FfxInt32x2 filteredOrigin, FfxDofConstants constants,
+                                             FfxFloat32x3 fixedBlur, FfxBoolean ownSurfaceTile,
+                                             FfxBoolean smallSourceTile, FfxInt32x2 ownSurfaceOrigin,
+                                             FFX_DOF_INOUT(FfxFloat32x4) color)
 {
     FfxFloat32 coc =
         ffxDofCocFromDepth(ffxDofLoadInputDepth(pixel), constants.cocScale, constants.cocBias, constants.cocLimit);
@@ -518,7 +526,7 @@ FFX_DOF_INLINE FfxBoolean ffxDofComposePixel(FfxUInt32x2 pixel, FfxUInt32x2 inQu
     {
         FfxFloat32 fixedBlurBlend = ffxDofFixedBlurBlend(absCoc, ownNear ? 0.0f : nearOpacity);
         if (fixedBlurBlend > 0.0f)
-            result = ffxDofLerp(result, ffxDofFixedBlur(neighbourhood, inQuad), fixedBlurBlend);
+            result = ffxDofLerp(result, fixedBlur, fixedBlurBlend);
     }
     FfxFloat32x3 ownBlur = result;
     if (farWeight > 0.0f)
@@ -640,7 +648,22 @@ FFX_DOF_INLINE void ffxDofComposite(FfxUInt32x2 groupId, FfxUInt32 localIndex)
     }
     ffxDofGroupBarrier();
 
-    FfxDofQuadNeighbourhood neighbourhood = ffxDofLoadQuadNeighbourhood(quad, constants.fullSize, scale);
+    // The quad's four fixed 3x3 blurs and input colours, taken from its 4 x 4 neighbourhood before the
+    // pixels are composed, so that 28 values stay live through the (unrolled) composition instead of the
+    // neighbourhood's 64: on lavapipe the pass took 0.8 times as long (docs/performance.md, "Issue 17's
+    // speed gate"). Each blur is computed whether its pixel uses it or not: 36 multiply-adds per quad.
+    FfxFloat32x3 fixedBlurs[4];
+    FfxFloat32x4 inputColors[4];
+    {
+        FfxDofQuadNeighbourhood neighbourhood = ffxDofLoadQuadNeighbourhood(quad, constants.fullSize, scale);
+        FFX_DOF_UNROLL
+        for (FfxUInt32 k = 0u; k < 4u; ++k)
+        {
+            FfxUInt32x2 inQuad = FfxUInt32x2(k & 1u, k >> 1u);
+            fixedBlurs[k] = ffxDofFixedBlur(neighbourhood, inQuad);
+            inputColors[k] = neighbourhood.color[(inQuad.y + 1u) * 4u + inQuad.x + 1u];
+        }
+    }
     FFX_DOF_UNROLL
     for (FfxUInt32 k = 0u; k < 4u; ++k)
     {
@@ -648,13 +671,13 @@ FFX_DOF_INLINE void ffxDofComposite(FfxUInt32x2 groupId, FfxUInt32 localIndex)
         FfxUInt32x2 pixel = quad + inQuad;
         if (pixel.x >= constants.fullSize.x || pixel.y >= constants.fullSize.y)
             continue;
-        FfxFloat32x4 color = neighbourhood.color[(inQuad.y + 1u) * 4u + inQuad.x + 1u];
+        FfxFloat32x4 color = inputColors[k];
 #if FFX_DOF_OPTION_OUTPUT_PRE_INIT
-        if (ffxDofComposePixel(pixel, inQuad, filteredOrigin, constants, neighbourhood, ownSurfaceTile, smallSourceTile,
+        if (ffxDofComposePixel(pixel, filteredOrigin, constants, fixedBlurs[k], ownSurfaceTile, smallSourceTile,
                                ownSurfaceOrigin, color))
             ffxDofStoreOutput(pixel, ffxDofUnscaleColor(color, scale));
 #else
-        if (ffxDofComposePixel(pixel, inQuad, filteredOrigin, constants, neighbourhood, ownSurfaceTile, smallSourceTile,
+        if (ffxDofComposePixel(pixel, filteredOrigin, constants, fixedBlurs[k], ownSurfaceTile, smallSourceTile,
                                ownSurfaceOrigin, color))
             ffxDofStoreOutput(pixel, ffxDofUnscaleColor(color, scale));
         else

@@ -718,11 +718,19 @@ TEST_CASE("Upsample CoC weight favours matching radii", "[upsample]") {
     // Near and in-focus pixels judge a tap against half their own radius.
     CHECK(ffxDofUpsampleCocWeight(27.0f, 30.0f) == Approx(0.8f));
     CHECK(ffxDofUpsampleCocWeight(15.0f, 30.0f) == Approx(1e-3f));
-    // Two far radii: the smaller over the larger, whichever is the pixel's.
+    // A far tap whose layer holds its own surface, for a far pixel: the smaller radius over the larger,
+    // whichever is the pixel's.
     CHECK(ffxDofUpsampleCocWeight(-27.0f, -30.0f) == Approx(0.9f));
     CHECK(ffxDofUpsampleCocWeight(-6.5f, -16.0f) == Approx(6.5f / 16.0f));
     CHECK(ffxDofUpsampleCocWeight(-16.0f, -6.5f) == Approx(6.5f / 16.0f));
-    CHECK(ffxDofUpsampleCocWeight(-1.0f, -3000.0f) == Approx(1e-3f));
+    CHECK(ffxDofUpsampleCocWeight(-16.0f, -2.0f) == Approx(2.0f / 16.0f));
+    CHECK(ffxDofUpsampleCocWeight(-3.0f, -3000.0f) == Approx(1e-3f));
+    // A tap whose own surface the composite gathers at full resolution (its far layer leaves it out): as
+    // before, ramped in from FFX_DOF_FAR_LAYER_ONLY_RADIUS - FFX_DOF_OWN_SURFACE_FADE.
+    CHECK(ffxDofUpsampleCocWeight(-0.8f, -16.0f) == Approx(1e-3f));
+    CHECK(ffxDofUpsampleCocWeight(-2.0f, -16.0f) == Approx(1e-3f));
+    CHECK(ffxDofUpsampleCocWeight(-2.5f, -16.0f) == Approx(0.5f * 2.5f / 16.0f));
+    CHECK(ffxDofUpsampleCocWeight(-3.0f, -16.0f) == Approx(3.0f / 16.0f));
     // A far tap for a near pixel, and the reverse, are still rejected.
     CHECK(ffxDofUpsampleCocWeight(-16.0f, 16.0f) == Approx(1e-3f));
     CHECK(ffxDofUpsampleCocWeight(16.0f, -16.0f) == Approx(1e-3f));
