@@ -373,8 +373,9 @@ void writeLightPairs(std::ostream& md, vkrun::Device& device) {
           "the larger for a far pixel (`ffxDofUpsampleCocWeight`): the figures above. What is left is the layering "
           "itself: the dim light is nearer than the bright one, and "
           "where its disc lies on the bright disc the gather lets it hide what lies behind by its coverage there. "
-          "In the thin lens the bright light's cone, at the dim light's depth, is |18.2 - r| px wide (5.2 and 12.2 "
-          "px for the two radii), short of the 16 px to the dim light, so it hides nothing. Hiding the bright disc "
+          "In the thin lens the bright light's cone, at the dim light's depth, reaches |18.2 - r| px from the "
+          "bright light (5.2 and 12.2 px for the two radii), short of the 16 px to the dim light, so it hides "
+          "nothing. Hiding the bright disc "
           "(level 8.65) by the whole of the dim light's coverage would cost it at most 4 px x 8.65 = 35 of its 200: "
           "the measured shortfall, 6 to 8%, is within what the layered model takes.\n\n";
 }
