@@ -655,17 +655,20 @@ FFX_DOF_INLINE void ffxDofGatherRing(FFX_DOF_INOUT(FfxDofGather) gather, FfxDofK
     gather.fillWeights += ringFillWeights * ring.sampleWeight;
 }
 
-// Gathers every ring inside the outermost one, from the outside in. Rings 1 .. rings - 1 form groups
-// of 2^FFX_DOF_RING_MERGE_LOG; a group is gathered either ring by ring at the kernel's MIP
-// (full) or in one walk over the group's annulus from a MIP that much coarser (merged). A border
-// between the two levels is judged by each side's own texel centres, so there a one-texel source
-// can be read twice or not at all (docs/technique.md, Kernel shape and walk). mergeAmount (0..1) merges
-// the groups one after the other, from the outside in, and mixes the one group it is part-way
-// through: that group's merged ring with presence f and its full rings with presence 1 - f. So the
-// result is continuous in mergeAmount, and a texel walks at most one ring more than the full path.
-// One loop walks one ring per pass whatever each lane's schedule is: on devices that run groups of
-// lanes in lock step (lavapipe: 8), lanes that merge and lanes that do not share the passes instead
-// of running a merged loop and a full loop one after the other.
+// Gathers every ring inside the outermost one. Rings 1 .. rings - 1 form groups of
+// 2^FFX_DOF_RING_MERGE_LOG; a group is gathered either at the kernel's MIP (full) or from a MIP that
+// much coarser (merged). A border between the two levels is judged by each side's own texel centres, so
+// there a one-texel source can be read twice or not at all (docs/technique.md, Kernel shape and walk).
+// mergeAmount (0..1) merges the groups one after the other, from the outside in, and mixes the one group
+// it is part-way through: that group merged with presence f and full with presence 1 - f. So the result
+// is continuous in mergeAmount, and a texel walks at most one group more than the full path.
+// Rings that are walked at the same MIP, with the same presence and next to each other, are walked as
+// one annulus: the rings tile it exactly (ffxDofRingInnerRadius), so it holds the same texels, and a walk
+// costs its set-up and, on devices that run groups of lanes in lock step (lavapipe: 8), the steps its
+// slowest lane takes, many of them on rows a thin ring leaves empty. So a texel takes at most five walks,
+// outside in: the rim rings of a shaped disc (never merged), the merged groups, the part-merged group
+// merged and full, and every ring below them with ring 0. One loop runs them, so that lanes with
+// different schedules share its passes.
 FFX_DOF_INLINE void ffxDofGatherInnerRings(FFX_DOF_INOUT(FfxDofGather) gather, FfxDofKernel kernel,
                                            FfxBoolean mergeEligible, FfxFloat32 mergeAmount, FfxDofGatherParts parts,
                                            FfxDofConstants constants)
@@ -673,61 +676,60 @@ FFX_DOF_INLINE void ffxDofGatherInnerRings(FFX_DOF_INOUT(FfxDofGather) gather, F
     FfxUInt32 mergeLog = FfxUInt32(FFX_DOF_RING_MERGE_LOG);
     FfxUInt32 groupSize = 1u << mergeLog;
     // The rim of a bladed or cat's-eye disc lies inside the walk's circle, down to the circle inscribed in
-    // the shape. Rings reaching beyond that circle are walked one by one at the kernel's MIP, never
-    // merged: merged, the surface weights that normalise a light are counted on the coarse texels'
-    // lattice, and a point's triangle kept 0.96 to 0.97 of its energy, 0.056 from flat inside, against
-    // 1.01 and 0.006 (the CPU test "A shaped far point through the passes"). None is needed where the
-    // outermost ring, widened inward by the rim inset, already reaches the inscribed circle (on a flat far
-    // tile wherever that circle lies within a ring of it: ffxDofBlurTexel): walking its empty rows anyway
-    // cost six blades' blur and composite about 5% (docs/performance.md, "A gauge without loops").
+    // the shape. Rings reaching beyond that circle are walked at the kernel's MIP, never merged: merged,
+    // the surface weights that normalise a light are counted on the coarse texels' lattice, and a point's
+    // triangle kept 0.96 to 0.97 of its energy, 0.056 from flat inside, against 1.01 and 0.006 (the CPU
+    // test "A shaped far point through the passes"). None is needed where the outermost ring, widened
+    // inward by the rim inset, already reaches the inscribed circle (on a flat far tile wherever that
+    // circle lies within a ring of it: ffxDofBlurTexel): walking its empty rows anyway cost six blades'
+    // blur and composite about 5% (docs/performance.md, "A gauge without loops").
     // Rings 1 .. mergeableRings form the groups. Round discs: every ring (their rim lies in the outermost one).
     FfxUInt32 mergeableRings = kernel.rings - 1u;
     FfxFloat32 inscribedRings = kernel.aperture.inscribedRadius * FfxFloat32(kernel.rings);
     FfxBoolean rimInBand = FfxFloat32(kernel.rings) - 0.5f - kernel.rimInset / kernel.spacing <= inscribedRings;
     if (parts.shaped && !rimInBand)
         mergeableRings = min(mergeableRings, FfxUInt32(max(floor(inscribedRings - 0.5f), 0.0f)));
+    FfxBoolean rimRings = mergeableRings + 1u < kernel.rings;
     FfxUInt32 groupCount = (mergeableRings + groupSize - 1u) / groupSize;
     FfxFloat32 mergedGroups = mergeAmount * FfxFloat32(groupCount);
+    FfxUInt32 fullyMerged = min(FfxUInt32(mergedGroups), groupCount);
+    FfxFloat32 partMerged = fullyMerged < groupCount ? mergedGroups - FfxFloat32(fullyMerged) : 0.0f;
+    FfxUInt32 unmerged = fullyMerged + (partMerged > 0.0f ? 1u : 0u);  // the first group merged not at all
+    // The top ring of group g is mergeableRings - g * groupSize; 0 past the last group (ring 0 lies below).
+    FfxUInt32 topOfPartMerged = fullyMerged < groupCount ? mergeableRings - fullyMerged * groupSize : 0u;
+    FfxUInt32 topOfUnmerged = unmerged < groupCount ? mergeableRings - unmerged * groupSize : 0u;
     FfxUInt32 coarseMip = min(kernel.baseMip + mergeLog, FfxUInt32(FFX_DOF_OPTION_MAX_MIP - 1));
-    // The border with the outermost ring is judged at the coarse MIP wherever merging may happen
-    // (ffxDofGatherKernel judges it so on the outermost ring's side).
-    FfxBoolean outerBorderCoarse = mergeEligible;
-    FfxInt32 top = FfxInt32(kernel.rings) - 1;  // outermost ring of the current group
-    FfxUInt32 group = 0u;
-    FfxUInt32 walk = 0u;  // rings of the current group walked so far
+    // A border next to a merged walk is judged at the coarse MIP by both walks; so is the border with the
+    // outermost ring wherever merging may happen (ffxDofGatherKernel judges it so on that ring's side).
+    FfxUInt32 belowRimBorderMip = mergedGroups > 0.0f ? coarseMip : kernel.baseMip;
+    FfxUInt32 topBorderMip = mergeEligible ? coarseMip : kernel.baseMip;
+    FfxUInt32 unmergedTopBorderMip = unmerged > 0u || (!rimRings && mergeEligible) ? coarseMip : kernel.baseMip;
+    // Walks still to take, one bit each, outside in: rim rings, merged groups, the part-merged group
+    // merged, the same full, the rest.
+    FfxUInt32 pending = (rimRings ? 1u : 0u) | (fullyMerged > 0u ? 2u : 0u) | (partMerged > 0.0f ? 12u : 0u) | 16u;
     FFX_DOF_LOOP
-    while (top >= 0)
+    while (pending != 0u)
     {
-        FfxUInt32 topRing = FfxUInt32(top);
-        FfxBoolean rimRing = topRing > mergeableRings;
-        // Ring 0 (the centre sample) is a group of its own, never merged; so is each rim ring.
-        FfxUInt32 first =
-            topRing == 0u || rimRing ? topRing : (topRing + 1u > groupSize ? topRing + 1u - groupSize : 1u);
-        FfxFloat32 merged = topRing == 0u || rimRing ? 0.0f : ffxDofSaturate(mergedGroups - FfxFloat32(group));
-        FfxUInt32 mergedWalks = merged > 0.0f ? 1u : 0u;
-        FfxUInt32 walks = mergedWalks + (merged < 1.0f ? topRing - first + 1u : 0u);
-        FfxBoolean mergedWalk = walk < mergedWalks;
-        FfxUInt32 ring = mergedWalk ? topRing : topRing + mergedWalks - walk;
-        FfxUInt32 mip = mergedWalk ? coarseMip : kernel.baseMip;
-        FfxFloat32 presence = mergedWalk ? merged : 1.0f - merged;
-        // A group with a merged part judges both its borders at the coarse MIP, in every walk of it; so
-        // does the last rim ring over a merged group.
-        FfxBoolean mergedBelow =
-            rimRing && first == mergeableRings + 1u && mergeableRings > 0u && mergedGroups > FfxFloat32(group);
-        FfxBoolean innerBorderCoarse = merged > 0.0f || mergedBelow;
-        FfxUInt32 firstWalked = mergedWalk ? first : ring;
-        FfxUInt32 innerBorderMip = firstWalked == first && innerBorderCoarse ? coarseMip : mip;
-        FfxUInt32 outerBorderMip = ring == topRing && outerBorderCoarse ? coarseMip : mip;
-        ffxDofGatherRing(gather, kernel, firstWalked, ring, mip, innerBorderMip, outerBorderMip, presence, false, parts,
-                         constants);
-        ++walk;
-        if (walk == walks)
-        {
-            top = FfxInt32(first) - 1;
-            group += rimRing ? 0u : 1u;
-            walk = 0u;
-            outerBorderCoarse = innerBorderCoarse;
-        }
+        FfxUInt32 walk = (pending & 1u) != 0u   ? 0u
+                         : (pending & 2u) != 0u ? 1u
+                         : (pending & 4u) != 0u ? 2u
+                         : (pending & 8u) != 0u ? 3u
+                                                : 4u;
+        pending &= pending - 1u;
+        FfxBoolean mergedWalk = walk == 1u || walk == 2u;
+        FfxUInt32 firstRing = walk == 0u   ? mergeableRings + 1u
+                              : walk == 1u ? topOfPartMerged + 1u
+                              : walk == 4u ? 0u
+                                           : topOfUnmerged + 1u;
+        FfxUInt32 lastRing = walk == 0u   ? kernel.rings - 1u
+                             : walk == 1u ? mergeableRings
+                             : walk == 4u ? topOfUnmerged
+                                          : topOfPartMerged;
+        FfxUInt32 innerBorderMip = walk == 0u ? belowRimBorderMip : walk == 4u ? kernel.baseMip : coarseMip;
+        FfxUInt32 outerBorderMip = walk == 0u ? topBorderMip : walk == 4u ? unmergedTopBorderMip : coarseMip;
+        FfxFloat32 presence = walk == 2u ? partMerged : walk == 3u ? 1.0f - partMerged : 1.0f;
+        ffxDofGatherRing(gather, kernel, firstRing, lastRing, mergedWalk ? coarseMip : kernel.baseMip, innerBorderMip,
+                         outerBorderMip, presence, false, parts, constants);
     }
 }
 
