@@ -554,8 +554,13 @@ FFX_DOF_INLINE void ffxDofWalkSamples(FFX_DOF_INOUT(FfxDofGather) gather, FFX_DO
         }
         if (parts.farField)
         {
-            FfxFloat32 frontShare = kernel.centerIsNear ? 0.0f : ffxDofFarFrontShare(absCoc, centerAbsCoc);
-            FfxFloat32 nearerShare = kernel.centerIsNear ? 0.0f : ffxDofFarNearerShare(absCoc, centerAbsCoc);
+            // On an equal-weight path every sample has the texel's own radius, so all of it is the texel's
+            // own surface: literals, so that the other buckets' sums compile away.
+            FfxFloat32 frontShare = parts.equalWeights    ? 1.0f
+                                    : kernel.centerIsNear ? 0.0f
+                                                          : ffxDofFarFrontShare(absCoc, centerAbsCoc);
+            FfxFloat32 nearerShare =
+                parts.equalWeights || kernel.centerIsNear ? 0.0f : ffxDofFarNearerShare(absCoc, centerAbsCoc);
             FfxFloat32 frontWeight = farWeight * frontShare;
             FfxFloat32 nearerWeight = farWeight * nearerShare;
             // The texel's own surface, where the composite gathers it at full resolution, stays out of
@@ -602,15 +607,15 @@ FFX_DOF_INLINE FfxDofRingWalk ffxDofMakeRingWalk(FfxDofKernel kernel, FfxUInt32 
     return ring;
 }
 
-// The annulus from `innerRadius` to `outerRadius` (texels of the walk's MIP) around the kernel origin,
-// its borders judged in blocks of `innerBlock` and `outerBlock` texels (FfxDofAnnulus); squeezed by the
+// The annulus from `innerRadius` to `outerRadius` (texels of MIP `mip`) around the kernel origin, its
+// borders judged in blocks of `innerBlock` and `outerBlock` texels (FfxDofAnnulus); squeezed by the
 // aperture's anamorphic ratio where the kernel is shaped.
-FFX_DOF_INLINE FfxDofAnnulus ffxDofKernelAnnulus(FfxDofKernel kernel, FfxDofRingWalk ring, FfxFloat32 innerRadius,
+FFX_DOF_INLINE FfxDofAnnulus ffxDofKernelAnnulus(FfxDofKernel kernel, FfxUInt32 mip, FfxFloat32 innerRadius,
                                                  FfxFloat32 outerRadius, FfxFloat32 innerBlock, FfxFloat32 outerBlock,
                                                  FfxBoolean shaped)
 {
-    return ffxDofMakeAnnulus(kernel.origin * (1.0f / ring.texelSize), innerRadius, outerRadius, innerBlock, outerBlock,
-                             shaped ? 1.0f / kernel.aperture.anamorphicRatio : 1.0f);
+    return ffxDofMakeAnnulus(kernel.origin * (1.0f / FfxFloat32(1u << mip)), innerRadius, outerRadius, innerBlock,
+                             outerBlock, shaped ? 1.0f / kernel.aperture.anamorphicRatio : 1.0f);
 }
 
 // Walks `annulus` at the walk's MIP (ffxDofWalkSamples, with `coarse` a literal at each call).
@@ -624,10 +629,28 @@ FFX_DOF_INLINE void ffxDofWalkAnnulus(FFX_DOF_INOUT(FfxDofGather) gather, FFX_DO
         ffxDofWalkSamples(gather, ringFillSum, ringFillWeights, kernel, ring, annulus, true, parts);
 }
 
+// The annulus of rings firstRing..lastRing at MIP `mip` around the kernel origin, in texels of that MIP;
+// each border judged by the texels of its own MIP (FfxDofAnnulus): a border shared with a walk at a
+// coarser MIP is judged by that walk's texels, so that the two read no fine texel twice and miss none.
+FFX_DOF_INLINE FfxDofAnnulus ffxDofRingsAnnulus(FfxDofKernel kernel, FfxUInt32 firstRing, FfxUInt32 lastRing,
+                                                FfxUInt32 mip, FfxUInt32 innerBorderMip, FfxUInt32 outerBorderMip,
+                                                FfxBoolean shaped)
+{
+    FfxFloat32 mipScale = 1.0f / FfxFloat32(1u << mip);
+    FfxFloat32 spacing = kernel.spacing * mipScale;
+    FfxFloat32 rimInset = kernel.rimInset * mipScale;
+    FfxFloat32 innerRadius =
+        ffxDofWalkBorderRadius(firstRing, spacing, kernel.rings, innerBorderMip != kernel.baseMip, rimInset);
+    FfxFloat32 outerRadius =
+        ffxDofWalkBorderRadius(lastRing + 1u, spacing, kernel.rings, outerBorderMip != kernel.baseMip, rimInset);
+    return ffxDofKernelAnnulus(kernel, mip, innerRadius, outerRadius, FfxFloat32(1u << (innerBorderMip - mip)),
+                               FfxFloat32(1u << (outerBorderMip - mip)), shaped);
+}
+
 // Gathers rings firstRing..lastRing from MIP `mip`: every texel of that MIP whose centre lies in
-// the rings' annulus around the kernel origin, once. A sample weighs the texel's area (4^mip
-// half-res px^2), so rings from different MIPs add up, and the whole ring counts `presence` (0..1)
-// times. trackSpread (a literal at every call, so it compiles away) records the radius spread of
+// the rings' annulus around the kernel origin, once (ffxDofRingsAnnulus). A sample weighs the texel's
+// area (4^mip half-res px^2), so rings from different MIPs add up, and the whole ring counts `presence`
+// (0..1) times. trackSpread (a literal at every call, so it compiles away) records the radius spread of
 // the samples for the ring-merge decision: only the outermost ring needs it. Hole filling needs both
 // fields (a near texel with background samples around it): only the mixed path has it.
 FFX_DOF_INLINE void ffxDofGatherRing(FFX_DOF_INOUT(FfxDofGather) gather, FfxDofKernel kernel, FfxUInt32 firstRing,
@@ -636,18 +659,8 @@ FFX_DOF_INLINE void ffxDofGatherRing(FFX_DOF_INOUT(FfxDofGather) gather, FfxDofK
                                      FfxDofGatherParts parts, FfxDofConstants constants)
 {
     FfxDofRingWalk ring = ffxDofMakeRingWalk(kernel, mip, presence, trackSpread, constants);
-    FfxFloat32 mipScale = 1.0f / ring.texelSize;
-    FfxFloat32 spacing = kernel.spacing * mipScale;
-    // Borders shared with a walk at a coarser MIP are judged by its texels (FfxDofAnnulus).
-    FfxFloat32 rimInset = kernel.rimInset * mipScale;
-    FfxFloat32 innerRadius =
-        ffxDofWalkBorderRadius(firstRing, spacing, kernel.rings, innerBorderMip != kernel.baseMip, rimInset);
-    FfxFloat32 outerRadius =
-        ffxDofWalkBorderRadius(lastRing + 1u, spacing, kernel.rings, outerBorderMip != kernel.baseMip, rimInset);
-    FfxFloat32 innerBlock = FfxFloat32(1u << (innerBorderMip - mip));
-    FfxFloat32 outerBlock = FfxFloat32(1u << (outerBorderMip - mip));
     FfxDofAnnulus annulus =
-        ffxDofKernelAnnulus(kernel, ring, innerRadius, outerRadius, innerBlock, outerBlock, parts.shaped);
+        ffxDofRingsAnnulus(kernel, firstRing, lastRing, mip, innerBorderMip, outerBorderMip, parts.shaped);
     FfxFloat32x3 ringFillSum = FfxFloat32x3(0.0f, 0.0f, 0.0f);
     FfxFloat32x2 ringFillWeights = FfxFloat32x2(0.0f, 0.0f);
     ffxDofWalkAnnulus(gather, ringFillSum, ringFillWeights, kernel, ring, annulus, parts);
@@ -655,26 +668,109 @@ FFX_DOF_INLINE void ffxDofGatherRing(FFX_DOF_INOUT(FfxDofGather) gather, FfxDofK
     gather.fillWeights += ringFillWeights * ring.sampleWeight;
 }
 
-// Gathers every ring inside the outermost one. Rings 1 .. rings - 1 form groups of
+// The walks over the rings inside the outermost one. Rings 1 .. rings - 1 form groups of
 // 2^FFX_DOF_RING_MERGE_LOG; a group is gathered either at the kernel's MIP (full) or from a MIP that
-// much coarser (merged). A border between the two levels is judged by each side's own texel centres, so
-// there a one-texel source can be read twice or not at all (docs/technique.md, Kernel shape and walk).
+// much coarser (merged). A border between the two levels is judged by the coarse texels on both sides
+// (FfxDofAnnulus), so that a one-texel source is read once (docs/technique.md, Kernel shape and walk).
 // mergeAmount (0..1) merges the groups one after the other, from the outside in, and mixes the one group
 // it is part-way through: that group merged with presence f and full with presence 1 - f. So the result
 // is continuous in mergeAmount, and a texel walks at most one group more than the full path.
-// Rings that are walked at the same MIP, with the same presence and next to each other, are walked as
-// one annulus: the rings tile it exactly (ffxDofRingInnerRadius), so it holds the same texels, and a walk
-// costs its set-up and, on devices that run groups of lanes in lock step (lavapipe: 8), the steps its
-// slowest lane takes, many of them on rows a thin ring leaves empty. So a texel takes at most five walks,
-// outside in: the rim rings of a shaped disc (never merged), the merged groups, the part-merged group
-// merged and full, and every ring below them with ring 0. One loop runs them, so that lanes with
-// different schedules share its passes.
+// Rings walked at the same MIP, with the same presence and next to each other, are walked as one
+// annulus: the rings tile it exactly (ffxDofRingInnerRadius), and a walk costs its set-up and, on
+// devices that run groups of lanes in lock step (lavapipe: 8), the steps its slowest lane takes, many of
+// them on rows a thin ring leaves empty (one walk per ring: the blur 1.06 times as long,
+// docs/performance.md). So there are at most five walks, outside in: the rim rings of a shaped disc
+// (never merged), the merged groups, the part-merged group merged, the same full, and every ring below
+// them with ring 0; `pending` holds one bit for each still to take.
+struct FfxDofInnerRingPlan
+{
+    FfxUInt32 pending;
+    FfxUInt32 rings;
+    FfxUInt32 mergeableRings;
+    FfxUInt32 baseMip;
+    FfxUInt32 coarseMip;
+    FfxUInt32 topOfPartMerged;  // top ring of the part-merged group (the top ring below the merged ones)
+    FfxUInt32 topOfUnmerged;    // top ring of the first group not merged at all; 0: ring 0 alone is left
+    FfxUInt32 borderMip;        // of every border between two walks
+    FfxFloat32 partMerged;      // the part-merged group's presence merged
+};
+
+// One walk of an FfxDofInnerRingPlan (ffxDofGatherRing's arguments).
+struct FfxDofInnerWalk
+{
+    FfxUInt32 firstRing;
+    FfxUInt32 lastRing;
+    FfxUInt32 mip;
+    FfxUInt32 innerBorderMip;
+    FfxUInt32 outerBorderMip;
+    FfxFloat32 presence;
+};
+
+// The plan of a kernel of `rings` rings at MIP `baseMip` whose rings 1 .. mergeableRings may merge
+// (mergeEligible: ffxDofGatherKernel's), merged by mergeAmount. The rings above mergeableRings (the rim
+// of a shaped disc, ffxDofGatherInnerRings) are walked at the kernel's MIP.
+FFX_DOF_INLINE FfxDofInnerRingPlan ffxDofPlanInnerRings(FfxUInt32 rings, FfxUInt32 mergeableRings, FfxUInt32 baseMip,
+                                                        FfxBoolean mergeEligible, FfxFloat32 mergeAmount)
+{
+    FfxUInt32 mergeLog = FfxUInt32(FFX_DOF_RING_MERGE_LOG);
+    FfxUInt32 groupSize = 1u << mergeLog;
+    FfxDofInnerRingPlan plan;
+    plan.rings = rings;
+    plan.mergeableRings = mergeableRings;
+    plan.baseMip = baseMip;
+    plan.coarseMip = min(baseMip + mergeLog, FfxUInt32(FFX_DOF_OPTION_MAX_MIP - 1));
+    FfxBoolean rimRings = mergeableRings + 1u < rings;
+    FfxUInt32 groupCount = (mergeableRings + groupSize - 1u) / groupSize;
+    FfxFloat32 mergedGroups = mergeAmount * FfxFloat32(groupCount);
+    FfxUInt32 fullyMerged = min(FfxUInt32(mergedGroups), groupCount);
+    plan.partMerged = fullyMerged < groupCount ? mergedGroups - FfxFloat32(fullyMerged) : 0.0f;
+    FfxUInt32 unmerged = fullyMerged + (plan.partMerged > 0.0f ? 1u : 0u);  // the first group merged not at all
+    // The top ring of group g is mergeableRings - g * groupSize.
+    plan.topOfPartMerged = fullyMerged < groupCount ? mergeableRings - fullyMerged * groupSize : 0u;
+    plan.topOfUnmerged = unmerged < groupCount ? mergeableRings - unmerged * groupSize : 0u;
+    // Wherever merging may happen, every border between two walks is judged at the coarse MIP by both,
+    // the outermost ring's included (ffxDofGatherKernel judges it so on that ring's side): a fine border
+    // less than a coarse texel's reach (0.71 fine texels) inside a coarse one let a fine texel lie inside
+    // the first and outside the second, read by the walks on both sides (a shaped disc's rim rings,
+    // narrowed by the rim inset, over unmerged rings).
+    plan.borderMip = mergeEligible ? plan.coarseMip : baseMip;
+    plan.pending = (rimRings ? 1u : 0u) | (fullyMerged > 0u ? 2u : 0u) | (plan.partMerged > 0.0f ? 12u : 0u) | 16u;
+    return plan;
+}
+
+// The next walk of the plan, which it takes off `plan.pending` (call while that is not 0).
+FFX_DOF_INLINE FfxDofInnerWalk ffxDofNextInnerWalk(FFX_DOF_INOUT(FfxDofInnerRingPlan) plan)
+{
+    FfxUInt32 pending = plan.pending;
+    FfxUInt32 walk = (pending & 1u) != 0u   ? 0u
+                     : (pending & 2u) != 0u ? 1u
+                     : (pending & 4u) != 0u ? 2u
+                     : (pending & 8u) != 0u ? 3u
+                                            : 4u;
+    plan.pending = pending & (pending - 1u);
+    FfxDofInnerWalk next;
+    next.firstRing = walk == 0u   ? plan.mergeableRings + 1u
+                     : walk == 1u ? plan.topOfPartMerged + 1u
+                     : walk == 4u ? 0u
+                                  : plan.topOfUnmerged + 1u;
+    next.lastRing = walk == 0u   ? plan.rings - 1u
+                    : walk == 1u ? plan.mergeableRings
+                    : walk == 4u ? plan.topOfUnmerged
+                                 : plan.topOfPartMerged;
+    next.mip = walk == 1u || walk == 2u ? plan.coarseMip : plan.baseMip;
+    // Ring 0's inner border is the kernel's centre: a radius of 0, whatever the MIP.
+    next.innerBorderMip = plan.borderMip;
+    next.outerBorderMip = plan.borderMip;
+    next.presence = walk == 2u ? plan.partMerged : walk == 3u ? 1.0f - plan.partMerged : 1.0f;
+    return next;
+}
+
+// Gathers every ring inside the outermost one (FfxDofInnerRingPlan). One loop runs the walks, so that
+// lanes with different plans share its passes.
 FFX_DOF_INLINE void ffxDofGatherInnerRings(FFX_DOF_INOUT(FfxDofGather) gather, FfxDofKernel kernel,
                                            FfxBoolean mergeEligible, FfxFloat32 mergeAmount, FfxDofGatherParts parts,
                                            FfxDofConstants constants)
 {
-    FfxUInt32 mergeLog = FfxUInt32(FFX_DOF_RING_MERGE_LOG);
-    FfxUInt32 groupSize = 1u << mergeLog;
     // The rim of a bladed or cat's-eye disc lies inside the walk's circle, down to the circle inscribed in
     // the shape. Rings reaching beyond that circle are walked at the kernel's MIP, never merged: merged,
     // the surface weights that normalise a light are counted on the coarse texels' lattice, and a point's
@@ -689,47 +785,14 @@ FFX_DOF_INLINE void ffxDofGatherInnerRings(FFX_DOF_INOUT(FfxDofGather) gather, F
     FfxBoolean rimInBand = FfxFloat32(kernel.rings) - 0.5f - kernel.rimInset / kernel.spacing <= inscribedRings;
     if (parts.shaped && !rimInBand)
         mergeableRings = min(mergeableRings, FfxUInt32(max(floor(inscribedRings - 0.5f), 0.0f)));
-    FfxBoolean rimRings = mergeableRings + 1u < kernel.rings;
-    FfxUInt32 groupCount = (mergeableRings + groupSize - 1u) / groupSize;
-    FfxFloat32 mergedGroups = mergeAmount * FfxFloat32(groupCount);
-    FfxUInt32 fullyMerged = min(FfxUInt32(mergedGroups), groupCount);
-    FfxFloat32 partMerged = fullyMerged < groupCount ? mergedGroups - FfxFloat32(fullyMerged) : 0.0f;
-    FfxUInt32 unmerged = fullyMerged + (partMerged > 0.0f ? 1u : 0u);  // the first group merged not at all
-    // The top ring of group g is mergeableRings - g * groupSize; 0 past the last group (ring 0 lies below).
-    FfxUInt32 topOfPartMerged = fullyMerged < groupCount ? mergeableRings - fullyMerged * groupSize : 0u;
-    FfxUInt32 topOfUnmerged = unmerged < groupCount ? mergeableRings - unmerged * groupSize : 0u;
-    FfxUInt32 coarseMip = min(kernel.baseMip + mergeLog, FfxUInt32(FFX_DOF_OPTION_MAX_MIP - 1));
-    // A border next to a merged walk is judged at the coarse MIP by both walks; so is the border with the
-    // outermost ring wherever merging may happen (ffxDofGatherKernel judges it so on that ring's side).
-    FfxUInt32 belowRimBorderMip = mergedGroups > 0.0f ? coarseMip : kernel.baseMip;
-    FfxUInt32 topBorderMip = mergeEligible ? coarseMip : kernel.baseMip;
-    FfxUInt32 unmergedTopBorderMip = unmerged > 0u || (!rimRings && mergeEligible) ? coarseMip : kernel.baseMip;
-    // Walks still to take, one bit each, outside in: rim rings, merged groups, the part-merged group
-    // merged, the same full, the rest.
-    FfxUInt32 pending = (rimRings ? 1u : 0u) | (fullyMerged > 0u ? 2u : 0u) | (partMerged > 0.0f ? 12u : 0u) | 16u;
+    FfxDofInnerRingPlan plan =
+        ffxDofPlanInnerRings(kernel.rings, mergeableRings, kernel.baseMip, mergeEligible, mergeAmount);
     FFX_DOF_LOOP
-    while (pending != 0u)
+    while (plan.pending != 0u)
     {
-        FfxUInt32 walk = (pending & 1u) != 0u   ? 0u
-                         : (pending & 2u) != 0u ? 1u
-                         : (pending & 4u) != 0u ? 2u
-                         : (pending & 8u) != 0u ? 3u
-                                                : 4u;
-        pending &= pending - 1u;
-        FfxBoolean mergedWalk = walk == 1u || walk == 2u;
-        FfxUInt32 firstRing = walk == 0u   ? mergeableRings + 1u
-                              : walk == 1u ? topOfPartMerged + 1u
-                              : walk == 4u ? 0u
-                                           : topOfUnmerged + 1u;
-        FfxUInt32 lastRing = walk == 0u   ? kernel.rings - 1u
-                             : walk == 1u ? mergeableRings
-                             : walk == 4u ? topOfUnmerged
-                                          : topOfPartMerged;
-        FfxUInt32 innerBorderMip = walk == 0u ? belowRimBorderMip : walk == 4u ? kernel.baseMip : coarseMip;
-        FfxUInt32 outerBorderMip = walk == 0u ? topBorderMip : walk == 4u ? unmergedTopBorderMip : coarseMip;
-        FfxFloat32 presence = walk == 2u ? partMerged : walk == 3u ? 1.0f - partMerged : 1.0f;
-        ffxDofGatherRing(gather, kernel, firstRing, lastRing, mergedWalk ? coarseMip : kernel.baseMip, innerBorderMip,
-                         outerBorderMip, presence, false, parts, constants);
+        FfxDofInnerWalk walk = ffxDofNextInnerWalk(plan);
+        ffxDofGatherRing(gather, kernel, walk.firstRing, walk.lastRing, walk.mip, walk.innerBorderMip,
+                         walk.outerBorderMip, walk.presence, false, parts, constants);
     }
 }
 
@@ -805,7 +868,7 @@ FFX_DOF_INLINE void ffxDofGatherBehind(FFX_DOF_INOUT(FfxDofGather) gather, FfxDo
     FfxFloat32 mipScale = 1.0f / ring.texelSize;
     FfxFloat32 innerRadius = ffxDofRingInnerRadius(kernel.rings + 1u, kernel.spacing * mipScale);
     FfxFloat32 outerRadius = max((kernel.behindRadius + 0.5f * kernel.spacing) * mipScale, innerRadius);
-    FfxDofAnnulus annulus = ffxDofKernelAnnulus(kernel, ring, innerRadius, outerRadius, 1.0f, 1.0f, parts.shaped);
+    FfxDofAnnulus annulus = ffxDofKernelAnnulus(kernel, ring.mip, innerRadius, outerRadius, 1.0f, 1.0f, parts.shaped);
     // Far buckets only: near samples this far out cannot reach (the kernel covers the near radii).
     FfxDofGatherParts behindParts = ffxDofMakeGatherParts(false, true, false, parts.shaped);
     FfxFloat32x3 unusedFillSum = FfxFloat32x3(0.0f, 0.0f, 0.0f);

@@ -261,9 +261,7 @@ TEST_CASE("Ring merge amount: merged when flat, full when not, continuous in bet
 namespace {
 
 // The texels a walk of the annulus visits, in order; fails on a runaway walk.
-std::vector<std::pair<int, int>> walkAnnulus(FfxFloat32x2 origin, float innerRadius, float outerRadius,
-                                             float innerBlock = 1.0f, float outerBlock = 1.0f) {
-    const FfxDofAnnulus annulus = ffxDofMakeAnnulus(origin, innerRadius, outerRadius, innerBlock, outerBlock, 1.0f);
+std::vector<std::pair<int, int>> walkAnnulus(const FfxDofAnnulus& annulus) {
     std::vector<std::pair<int, int>> texels;
     int steps = 0;
     for (FfxDofAnnulusWalk walk = ffxDofAnnulusBegin(annulus); ffxDofAnnulusRowsLeft(annulus, walk);
@@ -272,6 +270,11 @@ std::vector<std::pair<int, int>> walkAnnulus(FfxFloat32x2 origin, float innerRad
         REQUIRE(++steps < 100000);
     }
     return texels;
+}
+
+std::vector<std::pair<int, int>> walkAnnulus(FfxFloat32x2 origin, float innerRadius, float outerRadius,
+                                             float innerBlock = 1.0f, float outerBlock = 1.0f) {
+    return walkAnnulus(ffxDofMakeAnnulus(origin, innerRadius, outerRadius, innerBlock, outerBlock, 1.0f));
 }
 
 // Distance from `origin` to the centre of texel (x, y), in double precision.
@@ -310,6 +313,78 @@ TEST_CASE("Walks at two MIPs sharing a border judged by the coarse texels read e
         for (int y = 0; y < 48; ++y)
             for (int x = 0; x < 48; ++x)
                 if (centreDistance(origin, x, y) < kernelOuter - 1e-3) REQUIRE(reads.count({x, y}) == 1);
+    }
+}
+
+TEST_CASE("The blur's walks read every fine texel of a kernel once in all, at every merge amount", "[kernel]") {
+    // The real schedule: the outermost ring as ffxDofGatherKernel walks it, then the inner rings'
+    // plan (ffxDofPlanInnerRings), each walk's annulus as ffxDofGatherRing builds it. A texel of a
+    // coarser MIP stands for the fine texels it holds, at its walk's presence; in all, every fine texel of
+    // the kernel must count once. Rings walked one by one counted some twice where a part-merged group
+    // met the rings below it: its inner border is judged by the coarse texels, its rings' borders by the
+    // fine ones, and a block's corner texels lay beyond the next fine border.
+    std::mt19937 rng(31);
+    std::uniform_real_distribution<float> unit(0.0f, 1.0f);
+    for (int trial = 0; trial < 1500; ++trial) {
+        FfxDofKernel kernel{};
+        kernel.aperture = ffxDofRoundAperture();
+        kernel.rings = 1u + uint32_t(unit(rng) * 10.0f);
+        kernel.baseMip = uint32_t(trial % 2);
+        const float texel = float(1u << kernel.baseMip);
+        kernel.spacing = (0.71f + 0.7f * unit(rng)) * texel;
+        kernel.origin = FfxFloat32x2(40.0f + 4.0f * unit(rng), 40.0f + 4.0f * unit(rng)) * texel;
+        // As ffxDofGatherKernel, and rings merge only where the smallest radius spans two coarse texels
+        // (ffxDofMergedRingsResolve): at least 4 texels of the kernel's MIP.
+        const bool mergeEligible = FFX_DOF_RING_MERGE_LOG > 0 && kernel.rings >= 2u && trial % 5 != 0 &&
+                                   float(kernel.rings) * kernel.spacing >= 4.0f * texel;
+        kernel.rimInset = mergeEligible && trial % 3 != 0 ? FFX_DOF_RING_MERGE_RIM_INSET * texel : 0.0f;
+        // A shaped disc's rim rings are never merged: fewer mergeable rings. ffxDofGatherInnerRings has rim
+        // rings only where the rim border, moved in, lies above them (else the rim lies in the band).
+        uint32_t mergeableRings = kernel.rings - 1u;
+        if (trial % 4 == 0) {
+            const uint32_t candidate = uint32_t(unit(rng) * float(kernel.rings));
+            if ((float(candidate) + 0.5f) * kernel.spacing <
+                (float(kernel.rings) - 0.5f) * kernel.spacing - kernel.rimInset)
+                mergeableRings = candidate;
+        }
+        const float mergeAmount = !mergeEligible ? 0.0f : trial % 7 == 0 ? 1.0f : trial % 7 == 1 ? 0.0f : unit(rng);
+        const uint32_t coarseMip =
+            std::min(kernel.baseMip + uint32_t(FFX_DOF_RING_MERGE_LOG), uint32_t(FFX_DOF_OPTION_MAX_MIP - 1));
+
+        std::map<std::pair<int, int>, float> reads;
+        const auto addWalk = [&](uint32_t first, uint32_t last, uint32_t mip, uint32_t innerMip, uint32_t outerMip,
+                                 float presence) {
+            const int block = 1 << (mip - kernel.baseMip);
+            for (const auto& [x, y] :
+                 walkAnnulus(ffxDofRingsAnnulus(kernel, first, last, mip, innerMip, outerMip, false)))
+                for (int dy = 0; dy < block; ++dy)
+                    for (int dx = 0; dx < block; ++dx) reads[{x * block + dx, y * block + dy}] += presence;
+        };
+        addWalk(kernel.rings, kernel.rings, kernel.baseMip, mergeEligible ? coarseMip : kernel.baseMip, kernel.baseMip,
+                1.0f);
+        FfxDofInnerRingPlan plan =
+            ffxDofPlanInnerRings(kernel.rings, mergeableRings, kernel.baseMip, mergeEligible, mergeAmount);
+        int walks = 0;
+        while (plan.pending != 0u) {
+            const FfxDofInnerWalk walk = ffxDofNextInnerWalk(plan);
+            REQUIRE(walk.firstRing <= walk.lastRing);
+            REQUIRE(walk.lastRing < kernel.rings);
+            addWalk(walk.firstRing, walk.lastRing, walk.mip, walk.innerBorderMip, walk.outerBorderMip, walk.presence);
+            REQUIRE(++walks <= 5);
+        }
+        INFO("trial " << trial << ": rings " << kernel.rings << ", mergeable " << mergeableRings << ", base MIP "
+                      << kernel.baseMip << ", spacing " << kernel.spacing << ", merge amount " << mergeAmount
+                      << ", rim inset " << kernel.rimInset);
+        for (const auto& [fine, count] : reads) {
+            INFO("fine texel " << fine.first << ", " << fine.second);
+            REQUIRE(std::abs(count - 1.0f) < 1e-5f);
+        }
+        // Nothing of the kernel is missed.
+        const float kernelRadius = (float(kernel.rings) + 0.5f) * kernel.spacing / texel;
+        for (int y = 0; y < 100; ++y)
+            for (int x = 0; x < 100; ++x)
+                if (centreDistance(kernel.origin / texel, x, y) < kernelRadius - 1e-3)
+                    REQUIRE(reads.count({x, y}) == 1);
     }
 }
 
