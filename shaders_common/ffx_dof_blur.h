@@ -765,11 +765,10 @@ FFX_DOF_INLINE FfxDofInnerWalk ffxDofNextInnerWalk(FFX_DOF_INOUT(FfxDofInnerRing
     return next;
 }
 
-// Gathers every ring inside the outermost one (FfxDofInnerRingPlan). One loop runs the walks, so that
-// lanes with different plans share its passes.
+// Gathers every ring inside the outermost one of a kernel whose rings may merge (FfxDofInnerRingPlan).
+// One loop runs the walks, so that lanes with different plans share its passes.
 FFX_DOF_INLINE void ffxDofGatherInnerRings(FFX_DOF_INOUT(FfxDofGather) gather, FfxDofKernel kernel,
-                                           FfxBoolean mergeEligible, FfxFloat32 mergeAmount, FfxDofGatherParts parts,
-                                           FfxDofConstants constants)
+                                           FfxFloat32 mergeAmount, FfxDofGatherParts parts, FfxDofConstants constants)
 {
     // The rim of a bladed or cat's-eye disc lies inside the walk's circle, down to the circle inscribed in
     // the shape. Rings reaching beyond that circle are walked at the kernel's MIP, never merged: merged,
@@ -785,8 +784,7 @@ FFX_DOF_INLINE void ffxDofGatherInnerRings(FFX_DOF_INOUT(FfxDofGather) gather, F
     FfxBoolean rimInBand = FfxFloat32(kernel.rings) - 0.5f - kernel.rimInset / kernel.spacing <= inscribedRings;
     if (parts.shaped && !rimInBand)
         mergeableRings = min(mergeableRings, FfxUInt32(max(floor(inscribedRings - 0.5f), 0.0f)));
-    FfxDofInnerRingPlan plan =
-        ffxDofPlanInnerRings(kernel.rings, mergeableRings, kernel.baseMip, mergeEligible, mergeAmount);
+    FfxDofInnerRingPlan plan = ffxDofPlanInnerRings(kernel.rings, mergeableRings, kernel.baseMip, true, mergeAmount);
     FFX_DOF_LOOP
     while (plan.pending != 0u)
     {
@@ -892,12 +890,15 @@ FFX_DOF_INLINE void ffxDofGatherKernel(FFX_DOF_INOUT(FfxDofGather) gather, FfxDo
     // the coarse MIP wherever they may.
     FfxUInt32 coarseMip =
         min(kernel.baseMip + FfxUInt32(FFX_DOF_RING_MERGE_LOG), FfxUInt32(FFX_DOF_OPTION_MAX_MIP - 1));
-    ffxDofGatherRing(gather, kernel, kernel.rings, kernel.rings, kernel.baseMip,
+    // Where no ring can merge, the whole kernel is one walk at its MIP (the rings tile it exactly; near
+    // texels, tiles whose radii the coarse MIP does not resolve, FFX_DOF_DISABLE_RING_MERGE).
+    ffxDofGatherRing(gather, kernel, mergeEligible ? kernel.rings : 0u, kernel.rings, kernel.baseMip,
                      mergeEligible ? coarseMip : kernel.baseMip, kernel.baseMip, 1.0f, trackSpread, parts, constants);
-    FfxFloat32 mergeAmount = 0.0f;
     if (mergeEligible)
-        mergeAmount = parts.equalWeights ? 1.0f : ffxDofRingMergeAmount(gather.cocSpread);
-    ffxDofGatherInnerRings(gather, kernel, mergeEligible, mergeAmount, parts, constants);
+    {
+        FfxFloat32 mergeAmount = parts.equalWeights ? 1.0f : ffxDofRingMergeAmount(gather.cocSpread);
+        ffxDofGatherInnerRings(gather, kernel, mergeAmount, parts, constants);
+    }
     if (parts.farField && !parts.equalWeights)
         ffxDofGatherBehind(gather, kernel, parts, constants);
 }

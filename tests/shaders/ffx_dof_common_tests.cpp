@@ -360,12 +360,13 @@ TEST_CASE("The blur's walks read every fine texel of a kernel once in all, at ev
                 for (int dy = 0; dy < block; ++dy)
                     for (int dx = 0; dx < block; ++dx) reads[{x * block + dx, y * block + dy}] += presence;
         };
-        addWalk(kernel.rings, kernel.rings, kernel.baseMip, mergeEligible ? coarseMip : kernel.baseMip, kernel.baseMip,
-                1.0f);
+        // Where no ring can merge, ffxDofGatherKernel walks the whole kernel at once.
+        addWalk(mergeEligible ? kernel.rings : 0u, kernel.rings, kernel.baseMip,
+                mergeEligible ? coarseMip : kernel.baseMip, kernel.baseMip, 1.0f);
         FfxDofInnerRingPlan plan =
             ffxDofPlanInnerRings(kernel.rings, mergeableRings, kernel.baseMip, mergeEligible, mergeAmount);
         int walks = 0;
-        while (plan.pending != 0u) {
+        while (mergeEligible && plan.pending != 0u) {
             const FfxDofInnerWalk walk = ffxDofNextInnerWalk(plan);
             REQUIRE(walk.firstRing <= walk.lastRing);
             REQUIRE(walk.lastRing < kernel.rings);
