@@ -678,7 +678,7 @@ FFX_DOF_INLINE void ffxDofGatherRing(FFX_DOF_INOUT(FfxDofGather) gather, FfxDofK
 // Rings walked at the same MIP, with the same presence and next to each other, are walked as one
 // annulus: the rings tile it exactly (ffxDofRingInnerRadius), and a walk costs its set-up and, on
 // devices that run groups of lanes in lock step (lavapipe: 8), the steps its slowest lane takes, many of
-// them on rows a thin ring leaves empty (one walk per ring: the blur 1.06 times as long,
+// them on rows a thin ring leaves empty (one walk per ring: the blur about 1.12 times as long,
 // docs/performance.md). So there are at most five walks, outside in: the rim rings of a shaped disc
 // (never merged), the merged groups, the part-merged group merged, the same full, and every ring below
 // them with ring 0; `pending` holds one bit for each still to take.
@@ -691,7 +691,6 @@ struct FfxDofInnerRingPlan
     FfxUInt32 coarseMip;
     FfxUInt32 topOfPartMerged;  // top ring of the part-merged group (the top ring below the merged ones)
     FfxUInt32 topOfUnmerged;    // top ring of the first group not merged at all; 0: ring 0 alone is left
-    FfxUInt32 borderMip;        // of every border between two walks
     FfxFloat32 partMerged;      // the part-merged group's presence merged
 };
 
@@ -701,16 +700,19 @@ struct FfxDofInnerWalk
     FfxUInt32 firstRing;
     FfxUInt32 lastRing;
     FfxUInt32 mip;
-    FfxUInt32 innerBorderMip;
-    FfxUInt32 outerBorderMip;
     FfxFloat32 presence;
 };
 
-// The plan of a kernel of `rings` rings at MIP `baseMip` whose rings 1 .. mergeableRings may merge
-// (mergeEligible: ffxDofGatherKernel's), merged by mergeAmount. The rings above mergeableRings (the rim
-// of a shaped disc, ffxDofGatherInnerRings) are walked at the kernel's MIP.
+// The plan of a kernel of `rings` rings at MIP `baseMip` whose rings 1 .. mergeableRings merge by
+// mergeAmount (ffxDofGatherKernel makes one where rings may merge at all). The rings above
+// mergeableRings (the rim of a shaped disc, ffxDofGatherInnerRings) are walked at the kernel's MIP.
+// Every border between two walks is judged at the coarse MIP by both (ffxDofNextInnerWalk), the
+// outermost ring's included (ffxDofGatherKernel judges it so on that ring's side): a fine border less
+// than a coarse texel's reach (0.71 fine texels) inside a coarse one let a fine texel lie inside the
+// first and outside the second, read by the walks on both sides (a shaped disc's rim rings, narrowed by
+// the rim inset, over unmerged rings).
 FFX_DOF_INLINE FfxDofInnerRingPlan ffxDofPlanInnerRings(FfxUInt32 rings, FfxUInt32 mergeableRings, FfxUInt32 baseMip,
-                                                        FfxBoolean mergeEligible, FfxFloat32 mergeAmount)
+                                                        FfxFloat32 mergeAmount)
 {
     FfxUInt32 mergeLog = FfxUInt32(FFX_DOF_RING_MERGE_LOG);
     FfxUInt32 groupSize = 1u << mergeLog;
@@ -728,12 +730,6 @@ FFX_DOF_INLINE FfxDofInnerRingPlan ffxDofPlanInnerRings(FfxUInt32 rings, FfxUInt
     // The top ring of group g is mergeableRings - g * groupSize.
     plan.topOfPartMerged = fullyMerged < groupCount ? mergeableRings - fullyMerged * groupSize : 0u;
     plan.topOfUnmerged = unmerged < groupCount ? mergeableRings - unmerged * groupSize : 0u;
-    // Wherever merging may happen, every border between two walks is judged at the coarse MIP by both,
-    // the outermost ring's included (ffxDofGatherKernel judges it so on that ring's side): a fine border
-    // less than a coarse texel's reach (0.71 fine texels) inside a coarse one let a fine texel lie inside
-    // the first and outside the second, read by the walks on both sides (a shaped disc's rim rings,
-    // narrowed by the rim inset, over unmerged rings).
-    plan.borderMip = mergeEligible ? plan.coarseMip : baseMip;
     plan.pending = (rimRings ? 1u : 0u) | (fullyMerged > 0u ? 2u : 0u) | (plan.partMerged > 0.0f ? 12u : 0u) | 16u;
     return plan;
 }
@@ -758,9 +754,6 @@ FFX_DOF_INLINE FfxDofInnerWalk ffxDofNextInnerWalk(FFX_DOF_INOUT(FfxDofInnerRing
                     : walk == 4u ? plan.topOfUnmerged
                                  : plan.topOfPartMerged;
     next.mip = walk == 1u || walk == 2u ? plan.coarseMip : plan.baseMip;
-    // Ring 0's inner border is the kernel's centre: a radius of 0, whatever the MIP.
-    next.innerBorderMip = plan.borderMip;
-    next.outerBorderMip = plan.borderMip;
     next.presence = walk == 2u ? plan.partMerged : walk == 3u ? 1.0f - plan.partMerged : 1.0f;
     return next;
 }
@@ -784,13 +777,14 @@ FFX_DOF_INLINE void ffxDofGatherInnerRings(FFX_DOF_INOUT(FfxDofGather) gather, F
     FfxBoolean rimInBand = FfxFloat32(kernel.rings) - 0.5f - kernel.rimInset / kernel.spacing <= inscribedRings;
     if (parts.shaped && !rimInBand)
         mergeableRings = min(mergeableRings, FfxUInt32(max(floor(inscribedRings - 0.5f), 0.0f)));
-    FfxDofInnerRingPlan plan = ffxDofPlanInnerRings(kernel.rings, mergeableRings, kernel.baseMip, true, mergeAmount);
+    FfxDofInnerRingPlan plan = ffxDofPlanInnerRings(kernel.rings, mergeableRings, kernel.baseMip, mergeAmount);
     FFX_DOF_LOOP
     while (plan.pending != 0u)
     {
         FfxDofInnerWalk walk = ffxDofNextInnerWalk(plan);
-        ffxDofGatherRing(gather, kernel, walk.firstRing, walk.lastRing, walk.mip, walk.innerBorderMip,
-                         walk.outerBorderMip, walk.presence, false, parts, constants);
+        // Both borders at the coarse MIP (ring 0's inner border is the kernel's centre, whatever the MIP).
+        ffxDofGatherRing(gather, kernel, walk.firstRing, walk.lastRing, walk.mip, plan.coarseMip, plan.coarseMip,
+                         walk.presence, false, parts, constants);
     }
 }
 

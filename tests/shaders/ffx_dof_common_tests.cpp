@@ -363,14 +363,13 @@ TEST_CASE("The blur's walks read every fine texel of a kernel once in all, at ev
         // Where no ring can merge, ffxDofGatherKernel walks the whole kernel at once.
         addWalk(mergeEligible ? kernel.rings : 0u, kernel.rings, kernel.baseMip,
                 mergeEligible ? coarseMip : kernel.baseMip, kernel.baseMip, 1.0f);
-        FfxDofInnerRingPlan plan =
-            ffxDofPlanInnerRings(kernel.rings, mergeableRings, kernel.baseMip, mergeEligible, mergeAmount);
+        FfxDofInnerRingPlan plan = ffxDofPlanInnerRings(kernel.rings, mergeableRings, kernel.baseMip, mergeAmount);
         int walks = 0;
         while (mergeEligible && plan.pending != 0u) {
             const FfxDofInnerWalk walk = ffxDofNextInnerWalk(plan);
             REQUIRE(walk.firstRing <= walk.lastRing);
             REQUIRE(walk.lastRing < kernel.rings);
-            addWalk(walk.firstRing, walk.lastRing, walk.mip, walk.innerBorderMip, walk.outerBorderMip, walk.presence);
+            addWalk(walk.firstRing, walk.lastRing, walk.mip, coarseMip, coarseMip, walk.presence);
             REQUIRE(++walks <= 5);
         }
         INFO("trial " << trial << ": rings " << kernel.rings << ", mergeable " << mergeableRings << ", base MIP "
