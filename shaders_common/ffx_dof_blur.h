@@ -337,6 +337,13 @@ FFX_DOF_INLINE FfxBoolean ffxDofFootprintFlat(FfxFloat32x4 dilated)
 // that texel away from the light it holds: with two texels per radius, at most 0.35 of the radius.
 #define FFX_DOF_RING_MERGE_MIN_RADIUS_TEXELS 2.0f
 
+// The MIP that merged rings read for a kernel at `baseMip`: FFX_DOF_RING_MERGE_LOG levels coarser, within
+// the chain.
+FFX_DOF_INLINE FfxUInt32 ffxDofCoarseMip(FfxUInt32 baseMip)
+{
+    return min(baseMip + FfxUInt32(FFX_DOF_RING_MERGE_LOG), FfxUInt32(FFX_DOF_OPTION_MAX_MIP - 1));
+}
+
 // Whether merged rings can stand for every radius the kernels of a tile read (`dilated`: its
 // DILATED_TILES texel, footprint min and max in z and w): where those radii are flat (within
 // FFX_DOF_RING_MERGE_NOT_FLAT_SPREAD), or where the smallest of them spans
@@ -347,7 +354,7 @@ FFX_DOF_INLINE FfxBoolean ffxDofFootprintFlat(FfxFloat32x4 dilated)
 // px were drawn up to 5 px from where they are). In-focus and near-field radii in the footprint count as 0.
 FFX_DOF_INLINE FfxBoolean ffxDofMergedRingsResolve(FfxFloat32x4 dilated, FfxUInt32 baseMip)
 {
-    FfxUInt32 coarseMip = min(baseMip + FfxUInt32(FFX_DOF_RING_MERGE_LOG), FfxUInt32(FFX_DOF_OPTION_MAX_MIP - 1));
+    FfxUInt32 coarseMip = ffxDofCoarseMip(baseMip);
     FfxFloat32 smallestRadius = dilated.w < -FFX_DOF_IN_FOCUS_RADIUS ? -dilated.w : 0.0f;
     return ffxDofFootprintFlat(dilated) ||
            smallestRadius >= FFX_DOF_RING_MERGE_MIN_RADIUS_TEXELS * FfxFloat32(1u << coarseMip);
@@ -714,13 +721,12 @@ struct FfxDofInnerWalk
 FFX_DOF_INLINE FfxDofInnerRingPlan ffxDofPlanInnerRings(FfxUInt32 rings, FfxUInt32 mergeableRings, FfxUInt32 baseMip,
                                                         FfxFloat32 mergeAmount)
 {
-    FfxUInt32 mergeLog = FfxUInt32(FFX_DOF_RING_MERGE_LOG);
-    FfxUInt32 groupSize = 1u << mergeLog;
+    FfxUInt32 groupSize = 1u << FfxUInt32(FFX_DOF_RING_MERGE_LOG);
     FfxDofInnerRingPlan plan;
     plan.rings = rings;
     plan.mergeableRings = mergeableRings;
     plan.baseMip = baseMip;
-    plan.coarseMip = min(baseMip + mergeLog, FfxUInt32(FFX_DOF_OPTION_MAX_MIP - 1));
+    plan.coarseMip = ffxDofCoarseMip(baseMip);
     FfxBoolean rimRings = mergeableRings + 1u < rings;
     FfxUInt32 groupCount = (mergeableRings + groupSize - 1u) / groupSize;
     FfxFloat32 mergedGroups = mergeAmount * FfxFloat32(groupCount);
@@ -882,8 +888,7 @@ FFX_DOF_INLINE void ffxDofGatherKernel(FFX_DOF_INOUT(FfxDofGather) gather, FfxDo
                                kernel.centerCoc <= -FFX_DOF_IN_FOCUS_RADIUS && kernel.mergeResolved;
     // Whether the inner rings merge is known only after this ring, so its inner border is judged at
     // the coarse MIP wherever they may.
-    FfxUInt32 coarseMip =
-        min(kernel.baseMip + FfxUInt32(FFX_DOF_RING_MERGE_LOG), FfxUInt32(FFX_DOF_OPTION_MAX_MIP - 1));
+    FfxUInt32 coarseMip = ffxDofCoarseMip(kernel.baseMip);
     // Where no ring can merge, the whole kernel is one walk at its MIP (the rings tile it exactly; near
     // texels, tiles whose radii the coarse MIP does not resolve, FFX_DOF_DISABLE_RING_MERGE).
     ffxDofGatherRing(gather, kernel, mergeEligible ? kernel.rings : 0u, kernel.rings, kernel.baseMip,

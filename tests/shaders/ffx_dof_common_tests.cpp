@@ -348,8 +348,7 @@ TEST_CASE("The blur's walks read every fine texel of a kernel once in all, at ev
                 mergeableRings = candidate;
         }
         const float mergeAmount = !mergeEligible ? 0.0f : trial % 7 == 0 ? 1.0f : trial % 7 == 1 ? 0.0f : unit(rng);
-        const uint32_t coarseMip =
-            std::min(kernel.baseMip + uint32_t(FFX_DOF_RING_MERGE_LOG), uint32_t(FFX_DOF_OPTION_MAX_MIP - 1));
+        const uint32_t coarseMip = ffxDofCoarseMip(kernel.baseMip);
 
         std::map<std::pair<int, int>, float> reads;
         const auto addWalk = [&](uint32_t first, uint32_t last, uint32_t mip, uint32_t innerMip, uint32_t outerMip,
