@@ -24,6 +24,8 @@ packages=(
   # docs/quality.md and docs/performance.md come from the project's own C++ tools (ffx_dof_quality_report,
   # ffx-dof bench)
   python3 bc
+  # profiling: tools/profile-lavapipe.py (docs/performance.md, "Where the time goes on lavapipe")
+  linux-perf gdb
 )
 
 missing=()
