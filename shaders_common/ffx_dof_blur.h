@@ -152,6 +152,21 @@ FFX_DOF_INLINE FfxFloat32 ffxDofRingInnerRadius(FfxUInt32 ring, FfxFloat32 spaci
     return max(FfxFloat32(ring) - 0.5f, 0.0f) * spacing;
 }
 
+// How far beyond the outermost ring's outer radius a walk at MIP 1 or coarser reads, in its texels: a
+// texel's light lies up to sqrt(1/2) of a texel from its centre (its light offset), so a texel whose light
+// the kernel's reach takes may have its centre that much farther out. Without it a point's disc read from
+// MIP 1 was notched at its rim (1.06 px off the circle at radius 27 px, 1.78 at 54; now 0.17 to 0.26, and
+// 0.20 instead of 0.51 at radius 40 where MIP 1 was read before; docs/quality.md, point discs).
+#define FFX_DOF_LIGHT_OFFSET_REACH 0.75f
+
+// The outer radius of a kernel of `rings` rings `spacing` apart as its walks at MIP `mip` see it (in its
+// texels): the outermost ring's outer border and the inner border of the walk beyond the kernel
+// (ffxDofGatherBehind), so that the two share no texel and miss none.
+FFX_DOF_INLINE FfxFloat32 ffxDofKernelOuterRadius(FfxUInt32 rings, FfxFloat32 spacing, FfxUInt32 mip)
+{
+    return ffxDofRingInnerRadius(rings + 1u, spacing) + (mip > 0u ? FFX_DOF_LIGHT_OFFSET_REACH : 0.0f);
+}
+
 // Radius of the border at the inner edge of ring `ring` (rings `spacing` apart) as a walk sees it.
 // The rim border -- the outermost ring's inner edge, `rimRing` -- moves inward by `rimInset` where it
 // is judged by coarse texels (`coarseBorder`): inside it, merged rings read a light from the coarse
@@ -304,6 +319,49 @@ FFX_DOF_INLINE FfxUInt32 ffxDofRingCount(FfxFloat32 radius, FfxUInt32 maxRings)
 FFX_DOF_INLINE FfxFloat32 ffxDofMipForSpacing(FfxFloat32 spacing)
 {
     return clamp(floor(log2(max(spacing, 1.0f)) + 0.5f), 0.0f, FfxFloat32(FFX_DOF_OPTION_MAX_MIP - 1));
+}
+
+// The coarser level a far texel's kernel reads where nothing bright lies around it
+// (ffxDofKernelTakesCoarserMip): the finest whose texels are no smaller than the ring spacing, 0.5 to 1
+// texel, so a kernel reads a quarter as many texels where ffxDofMipForSpacing would round down. On
+// lavapipe the blur took 0.67 to 0.71 times as long at 1080p quality 10, the bench's floor reading MIP 1
+// instead of MIP 0 (one fetch per sample instead of two) and MIP 2 for its merged rings; against the
+// thin-lens truth no gated figure moved beyond 0.01 dB, and scenes rendered at 960x540 and 1920x1080
+// changed by +0.03 to -0.23 dB (docs/performance.md, "Far kernels at the coarser MIP").
+FFX_DOF_INLINE FfxFloat32 ffxDofCoarserMipForSpacing(FfxFloat32 spacing)
+{
+    return clamp(ceil(log2(max(spacing, 1.0f))), 0.0f, FfxFloat32(FFX_DOF_OPTION_MAX_MIP - 1));
+}
+
+// Largest colour channel (input units) in the 3 x 3 tiles around a texel up to which its kernel may take
+// the coarser MIP. Small bright lights want the finer texels: with every far kernel at the coarser MIP a
+// scene of small lights (mid-lights at 960x540) lost 4.9 dB, 1.8 dB with far-only tiles alone.
+#define FFX_DOF_COARSER_MIP_MAX_PEAK 1.0f
+
+// Whether a texel's kernel reads the coarser MIP (ffxDofCoarserMipForSpacing) rather than the nearest
+// (ffxDofMipForSpacing): a far texel in a tile that no near-field radius reaches (`dilated`: its tile's
+// DILATED_TILES texel; near objects, thin ones too, keep the finer texels: a 2 px bar at radius 24
+// doubled its veil from the coarser ones), no channel above FFX_DOF_COARSER_MIP_MAX_PEAK in the 3 x 3
+// tiles around it (`peakAround`), and everything the kernel reads, its walk beyond the kernel included,
+// inside the image with a margin of a texel of the coarser MIP and one of its merged rings' MIP (the
+// image continued by copies of its edge texels, and a MIP whose size was rounded down that misses the
+// last rows, extrapolate coarser there: busy-background's bottom 16 rows lost 2.6 dB).
+FFX_DOF_INLINE FfxBoolean ffxDofKernelTakesCoarserMip(FfxFloat32x2 center, FfxFloat32 centerCoc,
+                                                      FfxFloat32 kernelRadius, FfxFloat32x4 dilated,
+                                                      FfxFloat32 peakAround, FfxFloat32 coarserMip,
+                                                      FfxDofConstants constants)
+{
+    FfxFloat32 texel = exp2(coarserMip);
+    FfxFloat32 reach = max(kernelRadius, -dilated.x) * ffxDofApertureExtent(constants) +
+                       texel * (1.0f + exp2(FfxFloat32(FFX_DOF_RING_MERGE_LOG)));
+    FfxBoolean inside = min(center.x, center.y) >= reach && center.x + reach <= FfxFloat32(constants.halfSize.x) &&
+                        center.y + reach <= FfxFloat32(constants.halfSize.y);
+    // Not in the shaped permutation: a shaped disc's rim lies inside the walk's circle, in rings walked at
+    // the kernel's MIP, and from the coarser one a triangle's point over a sloped far field kept 0.957 of
+    // its energy (the CPU test "A shaped far point through the passes" asks 0.97).
+    FfxBoolean round = FFX_DOF_OPTION_APERTURE_SHAPES == 0;
+    return round && centerCoc <= -FFX_DOF_IN_FOCUS_RADIUS && dilated.y < FFX_DOF_NEAR_THRESHOLD &&
+           peakAround <= FFX_DOF_COARSER_MIP_MAX_PEAK && inside;
 }
 
 // Random sub-pixel kernel origin for one pixel and frame, in half-res px.
@@ -460,7 +518,7 @@ struct FfxDofKernel
     FfxFloat32 inverseColorScale;   // 1 / ffxDofColorRangeScale: the color MIPs back in input units
     FfxFloat32 highlightRampScale;  // 1 / the kernel radius^2 (ffxDofHighlightSpreadRadius)
     FfxFloat32 ownGatherShare;      // ffxDofOwnGatherShare of the texel's own radius, where the tile draws
-                                    // small sources at full resolution (ffxDofTileDrawsSmallSources), else 0
+                                    // small sources at full resolution (ffxDofSurveyTilesAround), else 0
     FfxFloat32 smallSourceCut;      // 1 where ffxDofSmallSourceShare leaves small sources out, else 0
 };
 
@@ -649,7 +707,9 @@ FFX_DOF_INLINE FfxDofAnnulus ffxDofRingsAnnulus(FfxDofKernel kernel, FfxUInt32 f
     FfxFloat32 innerRadius =
         ffxDofWalkBorderRadius(firstRing, spacing, kernel.rings, innerBorderMip != kernel.baseMip, rimInset);
     FfxFloat32 outerRadius =
-        ffxDofWalkBorderRadius(lastRing + 1u, spacing, kernel.rings, outerBorderMip != kernel.baseMip, rimInset);
+        lastRing == kernel.rings
+            ? ffxDofKernelOuterRadius(kernel.rings, spacing, mip)
+            : ffxDofWalkBorderRadius(lastRing + 1u, spacing, kernel.rings, outerBorderMip != kernel.baseMip, rimInset);
     return ffxDofKernelAnnulus(kernel, mip, innerRadius, outerRadius, FfxFloat32(1u << (innerBorderMip - mip)),
                                FfxFloat32(1u << (outerBorderMip - mip)), shaped);
 }
@@ -847,6 +907,16 @@ FFX_DOF_INLINE FfxDofGatherParts ffxDofMakeGatherParts(FfxBoolean nearField, Ffx
 // docs/quality.md (docs/performance.md, "What lies behind the kernel").
 #define FFX_DOF_BEHIND_HIDDEN_COVERAGE 0.5f
 
+// What ffxDofGatherBehind walks, at the kernel's MIP: from the kernel's outer radius as its outermost ring
+// sees it (ffxDofKernelOuterRadius) out to the farthest far radius that reaches the tile.
+FFX_DOF_INLINE FfxDofAnnulus ffxDofBehindAnnulus(FfxDofKernel kernel, FfxBoolean shaped)
+{
+    FfxFloat32 mipScale = 1.0f / FfxFloat32(1u << kernel.baseMip);
+    FfxFloat32 innerRadius = ffxDofKernelOuterRadius(kernel.rings, kernel.spacing * mipScale, kernel.baseMip);
+    FfxFloat32 outerRadius = max((kernel.behindRadius + 0.5f * kernel.spacing) * mipScale, innerRadius);
+    return ffxDofKernelAnnulus(kernel, kernel.baseMip, innerRadius, outerRadius, 1.0f, 1.0f, shaped);
+}
+
 // Far samples beyond the kernel that still reach the texel. A far texel's kernel is its own radius, but
 // a sample behind it of a larger radius reaches farther: where the texel's own surface covers only part
 // of its disc (a small light, the rim of an object) what lies behind shows through, a light there
@@ -863,10 +933,7 @@ FFX_DOF_INLINE void ffxDofGatherBehind(FFX_DOF_INOUT(FfxDofGather) gather, FfxDo
     if (kernel.behindRadius <= 0.0f || covered >= FFX_DOF_BEHIND_HIDDEN_COVERAGE)
         return;
     FfxDofRingWalk ring = ffxDofMakeRingWalk(kernel, kernel.baseMip, 1.0f, false, constants);
-    FfxFloat32 mipScale = 1.0f / ring.texelSize;
-    FfxFloat32 innerRadius = ffxDofRingInnerRadius(kernel.rings + 1u, kernel.spacing * mipScale);
-    FfxFloat32 outerRadius = max((kernel.behindRadius + 0.5f * kernel.spacing) * mipScale, innerRadius);
-    FfxDofAnnulus annulus = ffxDofKernelAnnulus(kernel, ring.mip, innerRadius, outerRadius, 1.0f, 1.0f, parts.shaped);
+    FfxDofAnnulus annulus = ffxDofBehindAnnulus(kernel, parts.shaped);
     // Far buckets only: near samples this far out cannot reach (the kernel covers the near radii).
     FfxDofGatherParts behindParts = ffxDofMakeGatherParts(false, true, false, parts.shaped);
     FfxFloat32x3 unusedFillSum = FfxFloat32x3(0.0f, 0.0f, 0.0f);
@@ -940,7 +1007,14 @@ FFX_DOF_INLINE FfxDofBlurResult ffxDofBlurTexel(FfxUInt32x2 texel, FfxFloat32x4 
 
     kernel.centerIsNear = kernel.centerCoc >= FFX_DOF_NEAR_THRESHOLD;
     kernel.spacing = kernelRadius / FfxFloat32(kernel.rings);
-    kernel.baseMip = FfxUInt32(ffxDofMipForSpacing(kernel.spacing * ffxDofApertureRingSpacingScale(constants)));
+    kernel.center = FfxFloat32x2(texel) + FfxFloat32x2(0.5f, 0.5f);
+    FfxDofTilesAround around = ffxDofSurveyTilesAround(texel / FfxUInt32(FFX_DOF_TILE_SIZE), constants.tileCount);
+    FfxFloat32 mipSpacing = kernel.spacing * ffxDofApertureRingSpacingScale(constants);
+    FfxFloat32 coarserMip = ffxDofCoarserMipForSpacing(mipSpacing);
+    kernel.baseMip = FfxUInt32(ffxDofKernelTakesCoarserMip(kernel.center, kernel.centerCoc, kernelRadius, dilated,
+                                                           around.peak, coarserMip, constants)
+                                   ? coarserMip
+                                   : ffxDofMipForSpacing(mipSpacing));
     kernel.mergeResolved = ffxDofMergedRingsResolve(dilated, kernel.baseMip);
     // The rim border moves in only where every radius the tile's kernels read is far and flat
     // (ffxDofFootprintFlat), so the rims of the discs lie in the outermost ring. Where a light lies
@@ -952,14 +1026,12 @@ FFX_DOF_INLINE FfxDofBlurResult ffxDofBlurTexel(FfxUInt32x2 texel, FfxFloat32x4 
     // Far samples may reach a far texel from as far as the farthest radius that reaches its tile.
     FfxFloat32 farReach = -dilated.x;
     kernel.behindRadius = kernel.centerCoc <= -FFX_DOF_IN_FOCUS_RADIUS && farReach > kernelRadius ? farReach : 0.0f;
-    kernel.center = FfxFloat32x2(texel) + FfxFloat32x2(0.5f, 0.5f);
     kernel.aperture = ffxDofRoundAperture();
     kernel.origin = kernel.center + ffxDofKernelJitter(texel, constants.frameIndex);
     kernel.inverseColorScale = 1.0f / ffxDofLoadColorScale();
     kernel.highlightRampScale = ffxDofRoundAreaWeight(kernelRadius);
     // Near texels have no layer in front of their own surface to leave small sources out of.
-    FfxBoolean drawsSmallSources =
-        !kernel.centerIsNear && ffxDofTileDrawsSmallSources(texel / FfxUInt32(FFX_DOF_TILE_SIZE), constants.tileCount);
+    FfxBoolean drawsSmallSources = !kernel.centerIsNear && around.drawsSmallSources;
     kernel.ownGatherShare = drawsSmallSources ? ffxDofOwnGatherShare(kernel.centerCoc) : 0.0f;
     kernel.smallSourceCut = drawsSmallSources ? 1.0f : 0.0f;
 

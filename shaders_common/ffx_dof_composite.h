@@ -184,7 +184,7 @@ FFX_DOF_GROUPSHARED FfxDofFloat3 ffxDofSharedNear[FFX_DOF_FILTERED_SIDE * FFX_DO
 FFX_DOF_GROUPSHARED FfxDofFloat3 ffxDofSharedFar[FFX_DOF_FILTERED_SIDE * FFX_DOF_FILTERED_SIDE];
 FFX_DOF_GROUPSHARED FfxFloat32x2 ffxDofSharedAlpha[FFX_DOF_FILTERED_SIDE * FFX_DOF_FILTERED_SIDE];
 FFX_DOF_GROUPSHARED FfxFloat32 ffxDofSharedCoc[FFX_DOF_FILTERED_SIDE * FFX_DOF_FILTERED_SIDE];
-// Whether each of the 9 tiles around the group's may hold bright small sources (ffxDofTileDrawsSmallSources
+// Whether each of the 9 tiles around the group's may hold bright small sources (ffxDofSurveyTilesAround
 // with one load per invocation instead of nine per invocation).
 FFX_DOF_GROUPSHARED FfxUInt32 ffxDofSharedSmallSourceTiles[9];
 // Full-res input around the tile for the own-surface gather: per pixel its scaled color and |radius|

@@ -17,6 +17,7 @@
 #include <map>
 #include <random>
 #include <set>
+#include <set>
 #include <utility>
 #include <vector>
 
@@ -564,6 +565,96 @@ TEST_CASE("MIP level for a ring spacing: the texel size nearest the spacing in l
         const float texels = spacing / std::exp2(ffxDofMipForSpacing(spacing));
         CHECK(texels >= (spacing < 1.0f ? 0.5f : 0.7071f));
         CHECK(texels < 1.4143f);
+    }
+}
+
+TEST_CASE("The coarser MIP of far kernels: texels no smaller than the ring spacing", "[kernel]") {
+    CHECK(ffxDofCoarserMipForSpacing(0.6f) == 0.0f);
+    CHECK(ffxDofCoarserMipForSpacing(1.0f) == 0.0f);
+    CHECK(ffxDofCoarserMipForSpacing(1.01f) == 1.0f);
+    CHECK(ffxDofCoarserMipForSpacing(2.0f) == 1.0f);
+    CHECK(ffxDofCoarserMipForSpacing(2.01f) == 2.0f);
+    CHECK(ffxDofCoarserMipForSpacing(100.0f) == float(FFX_DOF_OPTION_MAX_MIP - 1));
+    for (float spacing = 0.5f; spacing < 8.0f; spacing *= 1.01f) {
+        const float texels = spacing / std::exp2(ffxDofCoarserMipForSpacing(spacing));
+        CHECK(texels <= 1.0f);
+        CHECK(texels > (spacing < 1.0f ? 0.49f : 0.5f));
+        // Never finer than the nearest level, at most one coarser.
+        CHECK(ffxDofCoarserMipForSpacing(spacing) >= ffxDofMipForSpacing(spacing));
+        CHECK(ffxDofCoarserMipForSpacing(spacing) <= ffxDofMipForSpacing(spacing) + 1.0f);
+    }
+}
+
+TEST_CASE("Which kernels read the coarser MIP: far, nothing near or bright around, inside the image", "[kernel]") {
+    FfxDofConstants constants{};
+    constants.halfSize = FfxUInt32x2(480, 270);
+    constants.anamorphicRatio = 1.0f;
+    // (far reach, near reach, footprint min, max) of a far tile that no near radius reaches.
+    const FfxFloat32x4 farTile(-12.0f, -11.0f, -12.0f, -11.0f);
+    const FfxFloat32x2 middle(240.5f, 135.5f);
+    const float radius = 11.5f;
+    const float coarser = ffxDofCoarserMipForSpacing(radius / 10.0f);
+    CHECK(ffxDofKernelTakesCoarserMip(middle, -radius, radius, farTile, 0.9f, coarser, constants));
+    // A near or in-focus texel, a near radius reaching the tile, a bright tile around: the nearest MIP.
+    CHECK_FALSE(ffxDofKernelTakesCoarserMip(middle, radius, radius, farTile, 0.9f, coarser, constants));
+    CHECK_FALSE(ffxDofKernelTakesCoarserMip(middle, -0.4f, radius, farTile, 0.9f, coarser, constants));
+    CHECK_FALSE(ffxDofKernelTakesCoarserMip(middle, -radius, radius, FfxFloat32x4(-12.0f, 8.0f, -12.0f, 8.0f), 0.9f,
+                                            coarser, constants));
+    CHECK_FALSE(ffxDofKernelTakesCoarserMip(middle, -radius, radius, farTile, 1.5f, coarser, constants));
+    // Everything it reads inside the image, the walk beyond the kernel (the tile's far reach) and a texel
+    // of the coarser MIP and of its merged rings' MIP included: not within that of any border.
+    const float reach = 12.0f + std::exp2(coarser) * (1.0f + std::exp2(float(FFX_DOF_RING_MERGE_LOG)));
+    for (const FfxFloat32x2 near :
+         {FfxFloat32x2(reach - 0.5f, 135.5f), FfxFloat32x2(240.5f, reach - 0.5f),
+          FfxFloat32x2(480.0f - reach + 0.5f, 135.5f), FfxFloat32x2(240.5f, 270.0f - reach + 0.5f)})
+        CHECK_FALSE(ffxDofKernelTakesCoarserMip(near, -radius, radius, farTile, 0.9f, coarser, constants));
+    for (const FfxFloat32x2 inside : {FfxFloat32x2(reach, 135.5f), FfxFloat32x2(240.5f, reach),
+                                      FfxFloat32x2(480.0f - reach, 135.5f), FfxFloat32x2(240.5f, 270.0f - reach)})
+        CHECK(ffxDofKernelTakesCoarserMip(inside, -radius, radius, farTile, 0.9f, coarser, constants));
+}
+
+TEST_CASE("A coarse outermost ring reads every texel whose light the kernel reaches, the walk beyond it the rest",
+          "[kernel]") {
+    // A texel of MIP 1 or coarser holds its light up to sqrt(1/2) texel from its centre (its light
+    // offset); the kernel's reach takes a light up to its radius + half a pixel away. The outermost
+    // ring's outer border lies far enough out for the centre of any such texel, and the walk beyond
+    // the kernel (ffxDofBehindAnnulus) starts at that border: the two share no texel and miss none.
+    std::mt19937 rng(7);
+    std::uniform_real_distribution<float> unit(0.0f, 1.0f);
+    for (int trial = 0; trial < 400; ++trial) {
+        FfxDofKernel kernel{};
+        kernel.aperture = ffxDofRoundAperture();
+        kernel.rings = 2u + uint32_t(unit(rng) * 9.0f);
+        kernel.baseMip = uint32_t(trial % 3);
+        const float texel = float(1u << kernel.baseMip);
+        kernel.spacing = (0.5f + 0.5f * unit(rng)) * texel;  // the coarser MIP: 0.5 to 1 texel per ring
+        if (kernel.baseMip == 0u) kernel.spacing = std::max(kernel.spacing, 0.5f);
+        kernel.origin = FfxFloat32x2(60.0f + 4.0f * unit(rng), 60.0f + 4.0f * unit(rng)) * texel;
+        const float radius = float(kernel.rings) * kernel.spacing;
+        kernel.behindRadius = radius * (1.2f + unit(rng));
+        INFO("trial " << trial << ": rings " << kernel.rings << ", MIP " << kernel.baseMip << ", spacing "
+                      << kernel.spacing);
+        const float outer = ffxDofKernelOuterRadius(kernel.rings, kernel.spacing / texel, kernel.baseMip);
+        if (kernel.baseMip > 0u && kernel.spacing >= 1.0f)
+            CHECK(outer * texel >= radius + 0.5f + std::sqrt(0.5f) * texel);
+        std::set<std::pair<int, int>> ring;
+        for (const auto& t : walkAnnulus(ffxDofRingsAnnulus(kernel, kernel.rings, kernel.rings, kernel.baseMip,
+                                                            kernel.baseMip, kernel.baseMip, false)))
+            ring.insert(t);
+        std::set<std::pair<int, int>> behind;
+        for (const auto& t : walkAnnulus(ffxDofBehindAnnulus(kernel, false))) {
+            REQUIRE(ring.count(t) == 0);
+            behind.insert(t);
+        }
+        const FfxFloat32x2 origin = kernel.origin / texel;
+        const float innerOfRing = ffxDofRingInnerRadius(kernel.rings, kernel.spacing / texel);
+        const float outerOfBehind = (kernel.behindRadius + 0.5f * kernel.spacing) / texel;
+        for (int y = 0; y < 140; ++y)
+            for (int x = 0; x < 140; ++x) {
+                const double d = centreDistance(origin, x, y);
+                if (d > innerOfRing + 1e-3 && d < outerOfBehind - 1e-3)
+                    REQUIRE(ring.count({x, y}) + behind.count({x, y}) == 1);
+            }
     }
 }
 
