@@ -53,13 +53,16 @@ FFX_DOF_INLINE FfxInt32 ffxDofDilateTileRange(FfxFloat32 globalMaxRadius)
 
 // Distance (half-res px, from texel centre to texel centre) within which the blur kernels of a tile
 // whose largest kernel radius is `kernelRadius` can read a texel or a MIP texel covering it: the
-// radius, the sub-pixel origin (FFX_DOF_DILATE_MARGIN covers it), and two ring spacings for the
-// extent of the MIP texels read (ffxDofMipForSpacing's texels are at most 1.41 spacings wide, a
-// merged ring's 2.83: half a diagonal is at most 2 spacings).
+// radius, the sub-pixel origin (FFX_DOF_DILATE_MARGIN covers it), and 3.5 ring spacings for the
+// MIP texels read. The outermost ring reads texel centres up to half a spacing and
+// FFX_DOF_LIGHT_OFFSET_REACH (0.75) texels beyond the radius, and each texel reaches half its diagonal
+// (0.71 texels) farther: with ffxDofCoarserMipForSpacing's texels, up to 2 spacings wide, 0.5 + 1.46 x 2
+// = 3.42 spacings (a merged ring's texels, up to 4 spacings wide, end inside that).
+#define FFX_DOF_FOOTPRINT_SPACINGS 3.5f
 FFX_DOF_INLINE FfxFloat32 ffxDofKernelFootprintRadius(FfxFloat32 kernelRadius, FfxUInt32 maxRings)
 {
     FfxFloat32 rings = FfxFloat32(clamp(maxRings, 1u, FfxUInt32(FFX_DOF_OPTION_MAX_RINGS)));
-    return kernelRadius + FFX_DOF_DILATE_MARGIN + 2.0f * max(kernelRadius / rings, 1.0f);
+    return kernelRadius + FFX_DOF_DILATE_MARGIN + FFX_DOF_FOOTPRINT_SPACINGS * max(kernelRadius / rings, 1.0f);
 }
 
 // The tiles within `range` tiles of `center` each way, clipped to the image: first..last inclusive.

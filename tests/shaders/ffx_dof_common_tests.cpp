@@ -1096,10 +1096,16 @@ TEST_CASE("The kernel footprint covers the radius, the texel rounding and the MI
         for (float radius : {0.0f, 0.5f, 3.0f, 12.0f, 40.0f, 100.0f}) {
             FfxUInt32 rings = std::max(ffxDofRingCount(radius, quality), 1u);
             float spacing = radius / float(rings);
-            // The widest texel read: a ring-merged MIP of the spacing's level, with its diagonal.
-            float mipTexel = std::exp2(ffxDofMipForSpacing(spacing) + float(FFX_DOF_RING_MERGE_LOG));
-            float farthestRead =
-                radius + 0.5f * std::sqrt(2.0f) * (FFX_DOF_JITTER_AMPLITUDE + 1.0f) + std::sqrt(2.0f) * 0.5f * mipTexel;
+            // The coarsest texels read (ffxDofCoarserMipForSpacing's): the outermost ring's, whose centres
+            // lie up to half a spacing and FFX_DOF_LIGHT_OFFSET_REACH texels beyond the radius, and the
+            // merged rings' inside it, each with half its diagonal, and the jittered origin.
+            const float texel = std::exp2(ffxDofCoarserMipForSpacing(spacing));
+            const float mergedTexel = texel * std::exp2(float(FFX_DOF_RING_MERGE_LOG));
+            const float halfDiagonal = 0.5f * std::sqrt(2.0f);
+            const float farthestRead =
+                halfDiagonal * (FFX_DOF_JITTER_AMPLITUDE + 1.0f) +
+                std::max(radius + 0.5f * spacing + (FFX_DOF_LIGHT_OFFSET_REACH + halfDiagonal) * texel,
+                         radius - 0.5f * spacing + halfDiagonal * mergedTexel);
             INFO("quality " << quality << ", radius " << radius);
             CHECK(ffxDofKernelFootprintRadius(radius, quality) >= farthestRead);
         }
