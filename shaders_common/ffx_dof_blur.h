@@ -155,8 +155,9 @@ FFX_DOF_INLINE FfxFloat32 ffxDofRingInnerRadius(FfxUInt32 ring, FfxFloat32 spaci
 // How far beyond the outermost ring's outer radius a walk at MIP 1 or coarser reads, in its texels: a
 // texel's light lies up to sqrt(1/2) of a texel from its centre (its light offset), so a texel whose light
 // the kernel's reach takes may have its centre that much farther out. Without it a point's disc read from
-// MIP 1 was notched at its rim (1.06 px off the circle at radius 27 px, 1.78 at 54; now 0.17 to 0.26, and
-// 0.20 instead of 0.51 at radius 40 where MIP 1 was read before; docs/quality.md, point discs).
+// the coarser MIP was notched at its rim (1.06 px off the circle at radius 27 px, 1.78 at 54, where every
+// far kernel read it); at radius 40, read from MIP 1 before as well, 0.20 px instead of 0.51
+// (docs/quality.md, point discs).
 #define FFX_DOF_LIGHT_OFFSET_REACH 0.75f
 
 // The outer radius of a kernel of `rings` rings `spacing` apart as its walks at MIP `mip` see it (in its
@@ -324,7 +325,7 @@ FFX_DOF_INLINE FfxFloat32 ffxDofMipForSpacing(FfxFloat32 spacing)
 // The coarser level a far texel's kernel reads where nothing bright lies around it
 // (ffxDofKernelTakesCoarserMip): the finest whose texels are no smaller than the ring spacing, 0.5 to 1
 // texel, so a kernel reads a quarter as many texels where ffxDofMipForSpacing would round down. On
-// lavapipe the blur took 0.67 to 0.71 times as long at 1080p quality 10, the bench's floor reading MIP 1
+// lavapipe the blur took 0.63 to 0.74 times as long at 1080p quality 10, the bench's floor reading MIP 1
 // instead of MIP 0 (one fetch per sample instead of two) and MIP 2 for its merged rings; against the
 // thin-lens truth no gated figure moved beyond 0.01 dB, and scenes rendered at 960x540 and 1920x1080
 // changed by +0.03 to -0.23 dB (docs/performance.md, "Far kernels at the coarser MIP").
