@@ -77,11 +77,10 @@ def main():
             fail(f"{tool} not found; run tools/setup.sh")
     if not os.access(args.bin, os.X_OK):
         fail(f"{args.bin} is not an executable; build it first (cmake --build --preset default --target ffx-dof)")
-    env = dict(os.environ)
-    if not env.get("XDG_RUNTIME_DIR"):
-        env["XDG_RUNTIME_DIR"] = tempfile.mkdtemp(prefix="xdg-")
-
     with tempfile.TemporaryDirectory(prefix="profile-lavapipe-") as work:
+        env = dict(os.environ)
+        if not env.get("XDG_RUNTIME_DIR"):
+            env["XDG_RUNTIME_DIR"] = work  # created 0700, as the Vulkan loader wants it
         bench = subprocess.Popen([args.bin, "bench", "--repeat", "10000", *args.bench_args], env=env,
                                  stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True)
         try:
@@ -123,7 +122,7 @@ def main():
             instructions = disassemble(path, start)
             function = start
             starts.append(function)
-            for i, (address, text) in enumerate(instructions):
+            for i, (_, text) in enumerate(instructions):
                 if text.startswith("vpgather") or text.startswith("vgather"):
                     kinds[function]["gathers"] += 1
                 elif text.startswith("vpinsr"):

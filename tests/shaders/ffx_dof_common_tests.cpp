@@ -604,10 +604,10 @@ TEST_CASE("Which kernels read the coarser MIP: far, nothing near or bright aroun
     // Everything it reads inside the image, the walk beyond the kernel (the tile's far reach) and a texel
     // of the coarser MIP and of its merged rings' MIP included: not within that of any border.
     const float reach = 12.0f + std::exp2(coarser) * (1.0f + std::exp2(float(FFX_DOF_RING_MERGE_LOG)));
-    for (const FfxFloat32x2 near :
+    for (const FfxFloat32x2 nearBorder :
          {FfxFloat32x2(reach - 0.5f, 135.5f), FfxFloat32x2(240.5f, reach - 0.5f),
           FfxFloat32x2(480.0f - reach + 0.5f, 135.5f), FfxFloat32x2(240.5f, 270.0f - reach + 0.5f)})
-        CHECK_FALSE(ffxDofKernelTakesCoarserMip(near, -radius, radius, farTile, 0.9f, coarser, constants));
+        CHECK_FALSE(ffxDofKernelTakesCoarserMip(nearBorder, -radius, radius, farTile, 0.9f, coarser, constants));
     for (const FfxFloat32x2 inside : {FfxFloat32x2(reach, 135.5f), FfxFloat32x2(240.5f, reach),
                                       FfxFloat32x2(480.0f - reach, 135.5f), FfxFloat32x2(240.5f, 270.0f - reach)})
         CHECK(ffxDofKernelTakesCoarserMip(inside, -radius, radius, farTile, 0.9f, coarser, constants));
@@ -628,7 +628,6 @@ TEST_CASE("A coarse outermost ring reads every texel whose light the kernel reac
         kernel.baseMip = uint32_t(trial % 3);
         const float texel = float(1u << kernel.baseMip);
         kernel.spacing = (0.5f + 0.5f * unit(rng)) * texel;  // the coarser MIP: 0.5 to 1 texel per ring
-        if (kernel.baseMip == 0u) kernel.spacing = std::max(kernel.spacing, 0.5f);
         kernel.origin = FfxFloat32x2(60.0f + 4.0f * unit(rng), 60.0f + 4.0f * unit(rng)) * texel;
         const float radius = float(kernel.rings) * kernel.spacing;
         kernel.behindRadius = radius * (1.2f + unit(rng));
