@@ -84,6 +84,8 @@ function(ffx_dof_generate_pass_list out_dir)
   set(all_macros "")
   set(dispatch_macros "")
   set(axis_dispatch_values "")
+  set(axis_tile_lists "")
+  set(tile_list_macros "")
   set(max_variants 1)
   math(EXPR last_axis "${axis_count} - 1")
   foreach(a RANGE ${last_axis})
@@ -92,6 +94,12 @@ function(ffx_dof_generate_pass_list out_dir)
     list(APPEND all_macros ${macro})
     # perDispatch: the values a context with the flag takes per dispatch, one pipeline each.
     string(JSON dispatch_count ERROR_VARIABLE no_dispatch LENGTH "${json}" axes ${macro} perDispatch)
+    if(chosen_by STREQUAL "tileLists")
+      string(APPEND axis_tile_lists "true, ")
+      list(APPEND tile_list_macros ${macro})
+    else()
+      string(APPEND axis_tile_lists "false, ")
+    endif()
     if(no_dispatch)
       string(APPEND axis_dispatch_values "{0, {}}, ")
       set(_ffx_dof_dispatch_values_${macro} "")
@@ -120,7 +128,12 @@ function(ffx_dof_generate_pass_list out_dir)
     set(enumerator "${head}${tail}")
     string(APPEND axis_enum "${enumerator}, ")
     string(APPEND axis_macros "\"${macro}\", ")
-    if(chosen_by STREQUAL "device")
+    if(chosen_by STREQUAL "tileLists")
+      if(NOT no_dispatch)
+        message(FATAL_ERROR "${json_file}: axis ${macro}: an axis chosen by tileLists takes no perDispatch values")
+      endif()
+      string(APPEND axis_fields "    uint32_t ${field} = 0;  // ${macro}: every value, one pipeline per tile list (kAxisRunsPerTileList)\n")
+    elseif(chosen_by STREQUAL "device")
       string(APPEND axis_fields "    uint32_t ${field} = 0;  // ${macro}: chosen by the backend's device\n")
     elseif(chosen_by MATCHES "^FFX_DOF_[A-Z0-9_]+$" AND NOT no_dispatch)
       string(APPEND axis_fields "    uint32_t ${field} = 0;  // ${macro}: 1 when the context has ${chosen_by} (then one of ${joined} per dispatch)\n")
@@ -129,7 +142,7 @@ function(ffx_dof_generate_pass_list out_dir)
       string(APPEND axis_fields "    uint32_t ${field} = 0;  // ${macro}: 1 when the context has ${chosen_by}\n")
       string(APPEND flag_assignments "    axes->${field} = (flags & ${chosen_by}) ? 1u : 0u;\n")
     else()
-      message(FATAL_ERROR "${json_file}: axis ${macro}: chosenBy '${chosen_by}' is neither \"device\" nor a context flag")
+      message(FATAL_ERROR "${json_file}: axis ${macro}: chosenBy '${chosen_by}' is neither \"device\", \"tileLists\" nor a context flag")
     endif()
     string(APPEND axis_value_cases "        case Axis::${enumerator}: return axes.${field};\n")
   endforeach()
@@ -169,6 +182,16 @@ function(ffx_dof_generate_pass_list out_dir)
         if(NOT macro IN_LIST all_macros)
           message(FATAL_ERROR "${json_file}: pass ${name} has the axis ${macro}, which \"axes\" does not list")
         endif()
+        if(macro IN_LIST tile_list_macros)
+          math(EXPR pass_dispatch_axes "${pass_dispatch_axes} + 1")
+          string(JSON pass_values GET "${json}" passes ${p} axes ${macro})
+          string(REGEX REPLACE "[][ ]" "" pass_values "${pass_values}")
+          string(REPLACE "," ";" pass_values "${pass_values}")
+          list(LENGTH pass_values list_count)
+          if(list_count GREATER max_variants)
+            set(max_variants ${list_count})
+          endif()
+        endif()
         if(macro IN_LIST dispatch_macros)
           math(EXPR pass_dispatch_axes "${pass_dispatch_axes} + 1")
           string(JSON pass_values GET "${json}" passes ${p} axes ${macro})
@@ -188,7 +211,7 @@ function(ffx_dof_generate_pass_list out_dir)
       endforeach()
     endif()
     if(pass_dispatch_axes GREATER 1)
-      message(FATAL_ERROR "${json_file}: pass ${name} has more than one perDispatch axis; a pass's pipelines are chosen by one")
+      message(FATAL_ERROR "${json_file}: pass ${name} has more than one perDispatch or tileLists axis; a pass's pipelines are chosen by one")
     endif()
     string(APPEND pass_axis_rows "    {${row}},  // ${name}\n")
     string(APPEND pass_axis_counts "${pass_axis_count}, ")
@@ -234,7 +257,7 @@ ${axis_value_cases}    }
 inline void setAxesFromContextFlags(uint32_t flags, PermutationAxes* axes) {
 ${flag_assignments}}
 
-// The most values one axis takes per dispatch, and so the most pipelines of one pass.
+// The most values one axis takes per dispatch or runs per tile list, and so the most pipelines of one pass.
 constexpr uint32_t kMaxPassVariants = ${max_variants};
 // The values an axis takes per dispatch where its context flag is set (perDispatch; count 0: the
 // context's value for every dispatch). A pass has at most one such axis.
@@ -243,6 +266,10 @@ struct AxisDispatchValues {
     uint32_t values[kMaxPassVariants];
 };
 constexpr AxisDispatchValues kAxisDispatchValues[kAxisCount] = {${axis_dispatch_values}};
+// Axes chosen by \"tileLists\": every dispatch runs the pass once per value of the axis the pass lists,
+// each time with that value's pipeline and indirectly over the tile list of the same number
+// (TILE_LIST_ARGS, TILE_LISTS in ffx_dof_resources.h).
+constexpr bool kAxisRunsPerTileList[kAxisCount] = {${axis_tile_lists}};
 
 // The axes of each pass, in the order of its shader table.
 constexpr uint32_t kPassAxisCount[kPassCount] = {${pass_axis_counts}};

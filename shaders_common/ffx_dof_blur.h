@@ -61,6 +61,7 @@ void ffxDofStoreNearColor(FfxUInt32x2 texel, FfxDofFloat3 color);
 void ffxDofStoreFarColor(FfxUInt32x2 texel, FfxDofFloat3 color);
 void ffxDofStoreLayerAlpha(FfxUInt32x2 texel, FfxFloat32x2 nearOpacityFarValidity);
 FfxFloat32 ffxDofLoadColorScale();
+void ffxDofResetGlobals();
 #endif
 
 // ---- Tuning constants -------------------------------------------------------------------------------
@@ -1073,6 +1074,9 @@ FFX_DOF_INLINE FfxDofBlurResult ffxDofBlurTexel(FfxUInt32x2 texel, FfxFloat32x4 
 FFX_DOF_INLINE void ffxDofBlurTile(FfxUInt32x2 groupId, FfxUInt32 localIndex, FfxFloat32x4 dilated, FfxUInt32 tileClass)
 {
     FfxDofConstants constants = ffxDofGetConstants();
+    // Dilate has read the global radius; the next dispatch's pass 1 needs it at 0.
+    if (groupId.x == 0u && groupId.y == 0u && localIndex == 0u)
+        ffxDofResetGlobals();
     FfxUInt32x2 texel = groupId * FfxUInt32(FFX_DOF_TILE_SIZE) + ffxDofLocalCoord(localIndex);
     if (texel.x >= constants.halfSize.x || texel.y >= constants.halfSize.y)
         return;

@@ -197,4 +197,38 @@ void ffxDofStoreFocus(FfxFloat32 distance, FfxFloat32 cocScale, FfxFloat32 cocBi
 }
 #endif
 
+#if FFX_DOF_USES_RW_TILE_LIST_ARGS
+FFX_DOF_BINDING_UAV_BUFFER(FFX_DOF_UAV_BUFFER_TILE_LIST_ARGS) buffer FfxDofTileListArgs
+{
+    uint ffxDofTileListArgWords[FFX_DOF_TILE_LIST_COUNT * FFX_DOF_TILE_LIST_ARGS_WORDS];
+};
+void ffxDofResetTileLists()
+{
+    for (uint list = 0u; list < FFX_DOF_TILE_LIST_COUNT; ++list)
+    {
+        ffxDofTileListArgWords[list * FFX_DOF_TILE_LIST_ARGS_WORDS + 0u] = 0u;
+        ffxDofTileListArgWords[list * FFX_DOF_TILE_LIST_ARGS_WORDS + 1u] = 1u;
+        ffxDofTileListArgWords[list * FFX_DOF_TILE_LIST_ARGS_WORDS + 2u] = 1u;
+    }
+}
+#endif
+
+#if FFX_DOF_USES_RW_TILE_LISTS || FFX_DOF_USES_TILE_LISTS
+FFX_DOF_BINDING_UAV_BUFFER(FFX_DOF_UAV_BUFFER_TILE_LISTS) buffer FfxDofTileLists { uint ffxDofTileListWords[]; };
+#endif
+#if FFX_DOF_USES_RW_TILE_LISTS
+void ffxDofAppendToTileList(FfxUInt32 list, FfxUInt32x2 tile, FfxUInt32 tilesPerList)
+{
+    uint index = atomicAdd(ffxDofTileListArgWords[list * FFX_DOF_TILE_LIST_ARGS_WORDS], 1u);
+    ffxDofTileListWords[list * tilesPerList + index] = tile.x | (tile.y << 16u);
+}
+#endif
+#if FFX_DOF_USES_TILE_LISTS
+FfxUInt32x2 ffxDofLoadListedTile(FfxUInt32 list, FfxUInt32 index, FfxUInt32 tilesPerList)
+{
+    uint packed = ffxDofTileListWords[list * tilesPerList + index];
+    return FfxUInt32x2(packed & 0xffffu, packed >> 16u);
+}
+#endif
+
 #endif  // FFX_DOF_CALLBACKS_GLSL_H

@@ -1,7 +1,7 @@
 // HLSL bindings and accessors of ffx-dof. The entry point defines FFX_HLSL and one
 // FFX_DOF_PASS_<NAME>; only the bindings that pass uses are declared.
-// D3D12: t#/u#/s# = the index from ffx_dof_resources.h in space 0; the GLOBALS storage buffer is
-// u0 in space 1 (u# is shared by images and buffers on D3D12). Constants are root constants (the
+// D3D12: t#/u#/s# = the index from ffx_dof_resources.h in space 0; the storage buffers are u<index>
+// in space 1 (u# is shared by images and buffers on D3D12). Constants are root constants (the
 // only constant buffer, so b0). Vulkan (glslang or dxc -spirv): [[vk::binding(base + index, 0)]]
 // gives the same bindings as the GLSL path, and the constants become push constants.
 // Storage images carry no format on Vulkan: compile with glslang's --no-storage-format (dxc picks
@@ -14,6 +14,9 @@
 
 #define FFX_DOF_HLSL_REGISTER_(registerClass, index) register(registerClass##index)
 #define FFX_DOF_HLSL_REGISTER(registerClass, index) FFX_DOF_HLSL_REGISTER_(registerClass, index)
+// Storage buffers: u<index> in space 1.
+#define FFX_DOF_HLSL_BUFFER_REGISTER_(index) register(u##index, space1)
+#define FFX_DOF_HLSL_BUFFER_REGISTER(index) FFX_DOF_HLSL_BUFFER_REGISTER_(index)
 #define FFX_DOF_BINDING_SRV(index) [[vk::binding(FFX_DOF_SRV_BASE + index, 0)]]
 #define FFX_DOF_BINDING_UAV_IMAGE(index) [[vk::binding(FFX_DOF_UAV_IMAGE_BASE + index, 0)]]
 #define FFX_DOF_BINDING_UAV_BUFFER(index) [[vk::binding(FFX_DOF_UAV_BUFFER_BASE + index, 0)]]
@@ -187,7 +190,8 @@ FfxFloat32x4 ffxDofLoadInputColor(FfxUInt32x2 pixel)
 #endif
 
 #if FFX_DOF_USES_GLOBALS
-FFX_DOF_BINDING_UAV_BUFFER(FFX_DOF_UAV_BUFFER_GLOBALS) RWStructuredBuffer<uint> ffxDofGlobals : register(u0, space1);
+FFX_DOF_BINDING_UAV_BUFFER(FFX_DOF_UAV_BUFFER_GLOBALS)
+RWStructuredBuffer<uint> ffxDofGlobals : FFX_DOF_HLSL_BUFFER_REGISTER(FFX_DOF_UAV_BUFFER_GLOBALS);
 FfxFloat32 ffxDofLoadGlobalMaxRadius() { return asfloat(ffxDofGlobals[FFX_DOF_GLOBALS_MAX_RADIUS]); }
 void ffxDofAtomicMaxGlobalRadius(FfxFloat32 radius)
 {
@@ -216,6 +220,40 @@ void ffxDofStoreFocus(FfxFloat32 distance, FfxFloat32 cocScale, FfxFloat32 cocBi
     ffxDofGlobals[FFX_DOF_GLOBALS_FOCUS_DISTANCE] = asuint(distance);
     ffxDofGlobals[FFX_DOF_GLOBALS_FOCUS_COC_SCALE] = asuint(cocScale);
     ffxDofGlobals[FFX_DOF_GLOBALS_FOCUS_COC_BIAS] = asuint(cocBias);
+}
+#endif
+
+#if FFX_DOF_USES_RW_TILE_LIST_ARGS
+FFX_DOF_BINDING_UAV_BUFFER(FFX_DOF_UAV_BUFFER_TILE_LIST_ARGS)
+RWStructuredBuffer<uint> ffxDofTileListArgs : FFX_DOF_HLSL_BUFFER_REGISTER(FFX_DOF_UAV_BUFFER_TILE_LIST_ARGS);
+void ffxDofResetTileLists()
+{
+    for (uint list = 0u; list < FFX_DOF_TILE_LIST_COUNT; ++list)
+    {
+        ffxDofTileListArgs[list * FFX_DOF_TILE_LIST_ARGS_WORDS + 0u] = 0u;
+        ffxDofTileListArgs[list * FFX_DOF_TILE_LIST_ARGS_WORDS + 1u] = 1u;
+        ffxDofTileListArgs[list * FFX_DOF_TILE_LIST_ARGS_WORDS + 2u] = 1u;
+    }
+}
+#endif
+
+#if FFX_DOF_USES_RW_TILE_LISTS || FFX_DOF_USES_TILE_LISTS
+FFX_DOF_BINDING_UAV_BUFFER(FFX_DOF_UAV_BUFFER_TILE_LISTS)
+RWStructuredBuffer<uint> ffxDofTileLists : FFX_DOF_HLSL_BUFFER_REGISTER(FFX_DOF_UAV_BUFFER_TILE_LISTS);
+#endif
+#if FFX_DOF_USES_RW_TILE_LISTS
+void ffxDofAppendToTileList(FfxUInt32 list, FfxUInt32x2 tile, FfxUInt32 tilesPerList)
+{
+    uint index;
+    InterlockedAdd(ffxDofTileListArgs[list * FFX_DOF_TILE_LIST_ARGS_WORDS], 1u, index);
+    ffxDofTileLists[list * tilesPerList + index] = tile.x | (tile.y << 16u);
+}
+#endif
+#if FFX_DOF_USES_TILE_LISTS
+FfxUInt32x2 ffxDofLoadListedTile(FfxUInt32 list, FfxUInt32 index, FfxUInt32 tilesPerList)
+{
+    uint packed = ffxDofTileLists[list * tilesPerList + index];
+    return FfxUInt32x2(packed & 0xffffu, packed >> 16u);
 }
 #endif
 

@@ -1,8 +1,10 @@
 // Pass 5 of 5: composition at full resolution.
 //
-// One workgroup covers one tile (16 x 16 full-res px); each invocation writes a 2 x 2 quad.
-//   1. A tile that is in focus and that no near-field blur reaches is copied (or, with
-//      FFX_DOF_OPTION_OUTPUT_PRE_INIT, left alone): exactly what the per-pixel path would do.
+// One workgroup covers one tile (16 x 16 full-res px); each invocation writes a 2 x 2 quad. The pass runs
+// one pipeline per class of tiles (ffx_dof_composite_classes.h), each an indirect dispatch over the tiles
+// dilate listed under that class (TILE_LISTS): no workgroup runs for a tile another class composes.
+//   1. A tile that is in focus and that no near-field blur reaches (class COPY) is copied (with
+//      FFX_DOF_OPTION_OUTPUT_PRE_INIT not dispatched at all): exactly what the per-pixel path would do.
 //   2. The group loads the 12 x 12 half-res texels around the tile and post-filters the 10 x 10 that
 //      bilinear upsampling touches, once per texel: luminance of near and far color clamped to the
 //      range of the 8 neighbours (an outlier filter that keeps edges and energy),
@@ -20,8 +22,9 @@
 //      pixel's own surface is instead gathered at full resolution from a 30 x 30 neighbourhood the
 //      group loads once (ffxDofGatherOwnSurface), the far layer showing where that surface does not
 //      cover the disc (near pixels too: their far layer is the background the blur extrapolates
-//      behind them), and handing over to the layers over the last half-res px.
-// The composite also writes 0 to GLOBALS for the next dispatch (pass 3 has read it).
+//      behind them), and handing over to the layers over the last half-res px. Only the FULL_RES class
+//      gathers at full resolution (own surface and small sources); the LAYERS class's pipeline has
+//      neither gather.
 // HDR range: the input color is multiplied by the frame's ffxDofColorRangeScale (from GLOBALS, written
 // by pass 2) as it is read, in 32-bit, so all the work happens in the range of the half-res layers;
 // a composed pixel is divided by the scale when stored (exact for the power-of-two scale unless the
@@ -31,6 +34,7 @@
 #define FFX_DOF_COMPOSITE_H
 
 #include "ffx_dof_common.h"
+#include "ffx_dof_composite_classes.h"
 #include "ffx_dof_focus.h"
 #include "ffx_dof_small_sources.h"
 
@@ -40,14 +44,13 @@ FfxFloat32 ffxDofLoadInputDepth(FfxUInt32x2 pixel);
 FfxFloat32x4 ffxDofLoadInputColor(FfxUInt32x2 pixel);
 FfxDofFloat3 ffxDofLoadHalfColor(FfxInt32x2 texel);
 FfxFloat32x2 ffxDofLoadTile(FfxUInt32x2 tile);
-FfxFloat32x4 ffxDofLoadDilatedTile(FfxUInt32x2 tile);
 FfxFloat32 ffxDofLoadHalfCoc(FfxInt32x2 texel);
 FfxDofFloat3 ffxDofLoadNearColor(FfxInt32x2 texel);
 FfxDofFloat3 ffxDofLoadFarColor(FfxInt32x2 texel);
 FfxFloat32x2 ffxDofLoadLayerAlpha(FfxInt32x2 texel);
 void ffxDofStoreOutput(FfxUInt32x2 pixel, FfxFloat32x4 color);
-void ffxDofResetGlobals();
 FfxFloat32 ffxDofLoadColorScale();
+FfxUInt32x2 ffxDofLoadListedTile(FfxUInt32 list, FfxUInt32 index, FfxUInt32 tilesPerList);
 #endif
 
 // ---- Tuning constants -------------------------------------------------------------------------------
@@ -344,16 +347,6 @@ FFX_DOF_INLINE FfxFloat32x3 ffxDofFixedBlur(FfxDofQuadNeighbourhood neighbourhoo
     return sum / weightSum;
 }
 
-// Whether a tile of (min, max) signed radii (TILES) holds pixels whose own surface is gathered at full
-// resolution: |radius| from FFX_DOF_OWN_SURFACE_MIN_RADIUS to FFX_DOF_FAR_LAYER_ONLY_RADIUS, near or far. Uniform
-// per workgroup, so the group loads the full-res neighbourhood only where a pixel needs it.
-FFX_DOF_INLINE FfxBoolean ffxDofTileGathersOwnSurface(FfxFloat32x2 tile)
-{
-    FfxBoolean far = tile.x <= -FFX_DOF_OWN_SURFACE_MIN_RADIUS && tile.y > -FFX_DOF_FAR_LAYER_ONLY_RADIUS;
-    FfxBoolean near = tile.y >= FFX_DOF_OWN_SURFACE_MIN_RADIUS && tile.x < FFX_DOF_FAR_LAYER_ONLY_RADIUS;
-    return far || near;
-}
-
 // The pixel's own surface blurred at full resolution: every input pixel q within its disc (2 |radius|
 // full-res px, + half a pixel) that reaches it by q's own radius, each weighing its reach over its
 // disc's area (scatter as gather, like the blur), so a sharper neighbour never spreads beyond its own
@@ -555,21 +548,20 @@ FFX_DOF_INLINE FfxBoolean ffxDofComposePixel(FfxUInt32x2 pixel, FfxInt32x2 filte
     return true;
 }
 
-FFX_DOF_INLINE void ffxDofComposite(FfxUInt32x2 groupId, FfxUInt32 localIndex)
+// Composes tile `listIndex` of the list of `compositeClass` (FFX_DOF_COMPOSITE_CLASS_*, which dilate chose
+// for it). The class is the pipeline's constant (FFX_DOF_OPTION_COMPOSITE_CLASS), so each pipeline holds only
+// its class's work: the copy, or the layers, or the layers and the full-resolution gathers.
+FFX_DOF_INLINE void ffxDofComposite(FfxUInt32 compositeClass, FfxUInt32 listIndex, FfxUInt32 localIndex)
 {
     FfxDofConstants constants = ffxDofGetFocusedConstants();
-    if (groupId.x == 0u && groupId.y == 0u && localIndex == 0u)
-        ffxDofResetGlobals();
-
+    FfxUInt32x2 groupId =
+        ffxDofLoadListedTile(compositeClass, listIndex, constants.tileCount.x * constants.tileCount.y);
     FfxUInt32 extent = FfxUInt32(FFX_DOF_COMPOSITE_GROUP_EXTENT);
     FfxUInt32x2 quad = groupId * extent + ffxDofLocalCoord(localIndex) * 2u;
-    FfxFloat32 scale = ffxDofLoadColorScale();
-    FfxFloat32x2 tile = ffxDofLoadTile(groupId);
-    FfxFloat32x4 dilatedTile = ffxDofLoadDilatedTile(groupId);
-    FfxFloat32x2 dilated = FfxFloat32x2(dilatedTile.x, dilatedTile.y);
-    // Uniform per workgroup, so returning before the barriers is allowed.
-    if (max(abs(tile.x), abs(tile.y)) < FFX_DOF_IN_FOCUS_RADIUS && dilated.y < FFX_DOF_NEAR_THRESHOLD)
+    if (compositeClass == FfxUInt32(FFX_DOF_COMPOSITE_CLASS_COPY))
     {
+        // In focus, and no near field reaches the tile (ffxDofTileKeepsInput). In place there is nothing to
+        // do, and the core dispatches no copy.
 #if !FFX_DOF_OPTION_OUTPUT_PRE_INIT
         FFX_DOF_UNROLL
         for (FfxUInt32 k = 0u; k < 4u; ++k)
@@ -581,6 +573,9 @@ FFX_DOF_INLINE void ffxDofComposite(FfxUInt32x2 groupId, FfxUInt32 localIndex)
 #endif
         return;
     }
+    FfxBoolean fullResTile = compositeClass == FfxUInt32(FFX_DOF_COMPOSITE_CLASS_FULL_RES);
+    FfxFloat32 scale = ffxDofLoadColorScale();
+    FfxFloat32x2 tile = ffxDofLoadTile(groupId);
 
 #if FFX_DOF_OPTION_OUTPUT_PRE_INIT
     FFX_DOF_UNROLL
@@ -592,7 +587,7 @@ FFX_DOF_INLINE void ffxDofComposite(FfxUInt32x2 groupId, FfxUInt32 localIndex)
                 ffxDofScaleColor(ffxDofLoadInputColor(pixel), scale);
     }
 #endif
-    if (localIndex < 9u)
+    if (fullResTile && localIndex < 9u)
         ffxDofSharedSmallSourceTiles[localIndex] = ffxDofTileMayHoldBrightSmallSources(ffxDofLoadTileRangeAndPeak(
                                                        ffxDofTileAround(groupId, localIndex, constants.tileCount)))
                                                        ? 1u
@@ -612,11 +607,14 @@ FFX_DOF_INLINE void ffxDofComposite(FfxUInt32x2 groupId, FfxUInt32 localIndex)
     ffxDofGroupBarrier();
     // The full-res neighbourhood of the own-surface gather, after the barrier above: in place, the
     // input of the group's own tile is read from group-shared memory (ffxDofCompositeInput).
-    FfxBoolean ownSurfaceTile = ffxDofTileGathersOwnSurface(tile);
+    FfxBoolean ownSurfaceTile = fullResTile && ffxDofTileGathersOwnSurface(tile);
     FfxUInt32 smallSourceTiles = 0u;
-    FFX_DOF_UNROLL
-    for (FfxUInt32 k = 0u; k < 9u; ++k)
-        smallSourceTiles |= ffxDofSharedSmallSourceTiles[k];
+    if (fullResTile)
+    {
+        FFX_DOF_UNROLL
+        for (FfxUInt32 k = 0u; k < 9u; ++k)
+            smallSourceTiles |= ffxDofSharedSmallSourceTiles[k];
+    }
     FfxBoolean smallSourceTile = smallSourceTiles != 0u;
     FfxInt32x2 ownSurfaceOrigin =
         FfxInt32x2(groupId * extent) - FfxInt32x2(FFX_DOF_OWN_SURFACE_BORDER, FFX_DOF_OWN_SURFACE_BORDER);

@@ -4,6 +4,7 @@
 // ffxDofTileReaches) is examined; a tile contributes its near (max) or far (min) end when that end's
 // radius can reach the nearest pixel of the central tile. The distance is measured from the
 // central tile's rectangle, not its centre, so nothing is ever under-dilated.
+// It also lists the tile for the composite under its class (ffxDofCompositeTileClass, TILE_LISTS).
 // Output (DILATED_TILES): x = most negative (far) radius, y = most positive (near) radius among the
 // tile itself and every tile that reaches it; z, w = smallest and largest signed radius of every tile
 // the blur's kernels of this tile can read (ffxDofKernelFootprintRadius): the blur's tile
@@ -13,6 +14,8 @@
 #define FFX_DOF_DILATE_H
 
 #include "ffx_dof_common.h"
+#include "ffx_dof_composite_classes.h"
+#include "ffx_dof_small_sources.h"
 
 #if defined(FFX_CPU)
 FfxDofConstants ffxDofGetConstants();
@@ -20,6 +23,7 @@ FfxFloat32 ffxDofLoadGlobalMaxRadius();
 FfxFloat32x2 ffxDofLoadTile(FfxUInt32x2 tile);
 void ffxDofStoreDilatedTile(FfxUInt32x2 tile, FfxFloat32x4 farNearFootprint);
 void ffxDofResetColorPeak();
+void ffxDofAppendToTileList(FfxUInt32 list, FfxUInt32x2 tile, FfxUInt32 tilesPerList);
 #endif
 
 // ---- Tile reach -------------------------------------------------------------------------------------
@@ -141,6 +145,9 @@ FFX_DOF_INLINE void ffxDofDilate(FfxUInt32x2 groupId, FfxUInt32 localIndex)
     FfxFloat32x2 farNear = ffxDofDilateTile(tile, constants.tileCount, ffxDofLoadGlobalMaxRadius(), extent);
     FfxFloat32 footprint = ffxDofKernelFootprintRadius(ffxDofTileKernelRadius(farNear) * extent, constants.maxRings);
     ffxDofStoreDilatedTile(tile, FfxFloat32x4(farNear, ffxDofFootprintRange(tile, constants.tileCount, footprint)));
+    FfxUInt32 compositeClass = ffxDofCompositeTileClass(
+        ffxDofLoadTile(tile), farNear.y, ffxDofSurveyTilesAround(tile, constants.tileCount).drawsSmallSources);
+    ffxDofAppendToTileList(compositeClass, tile, constants.tileCount.x * constants.tileCount.y);
 }
 
 #endif  // FFX_DOF_DILATE_H

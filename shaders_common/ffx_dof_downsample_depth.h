@@ -20,6 +20,7 @@ FfxFloat32x4 ffxDofLoadInputColor(FfxUInt32x2 pixel);
 void ffxDofAtomicMaxColorPeak(FfxFloat32 peak);
 void ffxDofStoreTile(FfxUInt32x2 tile, FfxFloat32x2 cocMinMax, FfxFloat32 colorPeak);
 void ffxDofAtomicMaxGlobalRadius(FfxFloat32 radius);
+void ffxDofResetTileLists();
 #endif
 
 // ---- Depth order ------------------------------------------------------------------------------------
@@ -85,6 +86,9 @@ FFX_DOF_INLINE FfxFloat32 ffxDofWaveFarthestDepth(FfxFloat32 depth)
 FFX_DOF_INLINE void ffxDofDownsampleDepth(FfxUInt32x2 groupId, FfxUInt32 localIndex)
 {
     FfxDofConstants constants = ffxDofGetFocusedConstants();
+    // Empty lists for dilate (the previous dispatch's composite has read them).
+    if (groupId.x == 0u && groupId.y == 0u && localIndex == 0u)
+        ffxDofResetTileLists();
     FfxUInt32x2 quad = groupId * FfxUInt32(FFX_DOF_DOWNSAMPLE_DEPTH_GROUP_EXTENT) + ffxDofLocalCoord(localIndex) * 2u;
     FfxUInt32x2 lastPixel = constants.fullSize - FfxUInt32x2(1u, 1u);
 

@@ -11,6 +11,7 @@
 #define FFX_DOF_USES_INPUT_DEPTH 1
 #define FFX_DOF_USES_RW_TILES 1
 #define FFX_DOF_USES_GLOBALS 1
+#define FFX_DOF_USES_RW_TILE_LIST_ARGS 1  // resets them for dilate
 #elif defined(FFX_DOF_PASS_DOWNSAMPLE_COLOR)
 #define FFX_DOF_USES_INPUT_COLOR 1
 #define FFX_DOF_USES_INPUT_DEPTH 1
@@ -20,6 +21,8 @@
 #define FFX_DOF_USES_TILES 1
 #define FFX_DOF_USES_RW_DILATED_TILES 1
 #define FFX_DOF_USES_GLOBALS 1
+#define FFX_DOF_USES_RW_TILE_LIST_ARGS 1
+#define FFX_DOF_USES_RW_TILE_LISTS 1
 #elif defined(FFX_DOF_PASS_BLUR)
 #define FFX_DOF_USES_TILES 1  // the colour peaks of ffx_dof_small_sources.h
 #define FFX_DOF_USES_HALF_COLOR 1
@@ -33,10 +36,10 @@
 #define FFX_DOF_USES_INPUT_DEPTH 1
 #define FFX_DOF_USES_HALF_COC 1
 #define FFX_DOF_USES_TILES 1
-#define FFX_DOF_USES_DILATED_TILES 1
 #define FFX_DOF_USES_LAYERS 1
 #define FFX_DOF_USES_RW_OUTPUT 1
 #define FFX_DOF_USES_GLOBALS 1
+#define FFX_DOF_USES_TILE_LISTS 1  // and TILE_LIST_ARGS as its indirect dispatch arguments, unbound
 #if FFX_DOF_OPTION_OUTPUT_PRE_INIT
 // In place, the input pixels next to the tile are read from the half-res color (other workgroups
 // write the full-res ones during the pass); see ffx_dof_composite.h.
@@ -87,6 +90,15 @@
 #endif
 #ifndef FFX_DOF_USES_GLOBALS
 #define FFX_DOF_USES_GLOBALS 0
+#endif
+#ifndef FFX_DOF_USES_RW_TILE_LIST_ARGS
+#define FFX_DOF_USES_RW_TILE_LIST_ARGS 0
+#endif
+#ifndef FFX_DOF_USES_RW_TILE_LISTS
+#define FFX_DOF_USES_RW_TILE_LISTS 0
+#endif
+#ifndef FFX_DOF_USES_TILE_LISTS
+#define FFX_DOF_USES_TILE_LISTS 0
 #endif
 
 #endif  // FFX_DOF_PASS_RESOURCES_H

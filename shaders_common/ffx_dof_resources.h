@@ -39,6 +39,13 @@
 //                  z, 0 before the first autofocus dispatch), kept across dispatches for smoothing;
 //                  [4], [5] (FFX_DOF_GLOBALS_FOCUS_COC_SCALE / _BIAS): its CoC line, which the passes
 //                  read instead of the constants' when FFX_DOF_FOCUS_FLAG_AUTO is set. [6], [7]: unused.
+//   TILE_LIST_ARGS storage buffer, FFX_DOF_TILE_LIST_COUNT x 4 uint words: per list the indirect dispatch
+//                  arguments (group counts x, y, z; the fourth word unused, so each starts 16-byte aligned).
+//                  Pass 1 sets them to (0, 1, 1), dilate counts its listed tiles in x (atomic add), the
+//                  composite is dispatched from them (one indirect dispatch per list), and never binds it.
+//   TILE_LISTS     storage buffer, FFX_DOF_TILE_LIST_COUNT x tiles uint words: list l holds, from word
+//                  l * tileCount.x * tileCount.y, the tiles dilate put in it (x | y << 16), in no order;
+//                  the composite's workgroup i of list l composes the list's tile i.
 #ifndef FFX_DOF_RESOURCES_H
 #define FFX_DOF_RESOURCES_H
 
@@ -75,6 +82,8 @@
 
 // Storage buffers
 #define FFX_DOF_UAV_BUFFER_GLOBALS 0
+#define FFX_DOF_UAV_BUFFER_TILE_LIST_ARGS 1
+#define FFX_DOF_UAV_BUFFER_TILE_LISTS 2
 
 // Words of GLOBALS
 #define FFX_DOF_GLOBALS_MAX_RADIUS 0
@@ -84,6 +93,16 @@
 #define FFX_DOF_GLOBALS_FOCUS_COC_SCALE 4
 #define FFX_DOF_GLOBALS_FOCUS_COC_BIAS 5
 #define FFX_DOF_GLOBALS_WORD_COUNT 8
+
+// The composite's tile lists (TILE_LIST_ARGS, TILE_LISTS): which work a tile of the composite needs, decided
+// by dilate (ffxDofCompositeTileClass), so that each workgroup runs a pipeline with only that work. On
+// a GPU a smaller pipeline needs fewer registers; on lavapipe every dispatched workgroup pays for the
+// whole shader, early return or not (docs/performance.md).
+#define FFX_DOF_COMPOSITE_CLASS_COPY 0      // in focus and no near field reaches it: the input, unchanged
+#define FFX_DOF_COMPOSITE_CLASS_LAYERS 1    // the half-res layers and the fixed 3x3 blur
+#define FFX_DOF_COMPOSITE_CLASS_FULL_RES 2  // and pixels gathered at full resolution (own surface, small sources)
+#define FFX_DOF_TILE_LIST_COUNT 3
+#define FFX_DOF_TILE_LIST_ARGS_WORDS 4  // words per list in TILE_LIST_ARGS
 
 // No samplers: every read is an integer texel fetch (texelFetch / Load), so no pass declares one and
 // a reflected sampler is refused at context creation.

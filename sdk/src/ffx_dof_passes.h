@@ -61,11 +61,20 @@ constexpr uint32_t kInternalImageCount = sizeof(kInternalImages) / sizeof(kInter
 // Shader slots per class (ffx_dof_resources.h): sampled images, storage images, storage buffers.
 constexpr uint32_t kSampledSlotCount = FFX_DOF_SRV_COARSE_MIPS + 1;
 constexpr uint32_t kStorageImageSlotCount = FFX_DOF_UAV_OUTPUT + 1;
-constexpr uint32_t kStorageBufferSlotCount = FFX_DOF_UAV_BUFFER_GLOBALS + 1;
+constexpr uint32_t kStorageBufferSlotCount = FFX_DOF_UAV_BUFFER_TILE_LISTS + 1;
 
 // The GLOBALS storage buffer (FFX_DOF_UAV_BUFFER_GLOBALS): 32-bit words.
 constexpr uint32_t kGlobalsWordCount = FFX_DOF_GLOBALS_WORD_COUNT;
 constexpr uint32_t kGlobalsBufferBytes = kGlobalsWordCount * 4;
+// TILE_LIST_ARGS (FFX_DOF_UAV_BUFFER_TILE_LIST_ARGS): per tile list its indirect dispatch arguments.
+constexpr uint32_t kTileListArgsWordCount = FFX_DOF_TILE_LIST_COUNT * FFX_DOF_TILE_LIST_ARGS_WORDS;
+constexpr uint32_t kTileListArgsBytes = kTileListArgsWordCount * 4;
+// The byte offset of a tile list's arguments in TILE_LIST_ARGS.
+constexpr uint32_t tileListArgsOffset(uint32_t list) { return list * FFX_DOF_TILE_LIST_ARGS_WORDS * 4; }
+// TILE_LISTS (FFX_DOF_UAV_BUFFER_TILE_LISTS): every list has room for every tile, one word each.
+constexpr uint32_t tileListsWordCount(uint32_t tileCountX, uint32_t tileCountY) {
+    return FFX_DOF_TILE_LIST_COUNT * tileCountX * tileCountY;
+}
 
 // Levels of an image of this size: the spec's, clamped to the full chain of a small image (a 4x3
 // half-resolution image has 3 levels, its quarter-resolution image 2x1 has 2).

@@ -53,6 +53,8 @@ void mapSlots(ContextPlan* plan) {
     plan->sampledSlots[FFX_DOF_SRV_INPUT_DEPTH].resource = Resource::InputDepth;
     plan->storageImageSlots[FFX_DOF_UAV_OUTPUT].resource = Resource::Output;
     plan->storageBufferSlots[FFX_DOF_UAV_BUFFER_GLOBALS].resource = Resource::Globals;
+    plan->storageBufferSlots[FFX_DOF_UAV_BUFFER_TILE_LIST_ARGS].resource = Resource::TileListArgs;
+    plan->storageBufferSlots[FFX_DOF_UAV_BUFFER_TILE_LISTS].resource = Resource::TileLists;
     for (uint32_t i = 0; i < kInternalImageCount; ++i) {
         const InternalImageSpec& spec = kInternalImages[i];
         const PlannedImage& image = plan->images[i];
@@ -74,26 +76,41 @@ FfxDofErrorCode planPass(const ContextPlan& context, Pass pass, const shaders::P
     }
     out->table = table;
 
-    // The pass's per-dispatch axis, where the context's flag sets it: one variant per value.
-    const AxisDispatchValues* dispatchValues = nullptr;
-    Axis dispatchAxis = Axis(0);
+    // The pass's per-dispatch axis, where the context's flag sets it, or its tile-list axis: one
+    // variant per value.
+    std::vector<uint32_t> variantValues;
+    bool hasVariantAxis = false;
+    Axis variantAxis = Axis(0);
     for (uint32_t a = 0; a < kPassAxisCount[p]; ++a) {
         const Axis axis = kPassAxes[p][a];
-        if (kAxisDispatchValues[uint32_t(axis)].count > 0 && axisValue(context.axes, axis) != 0) {
-            dispatchValues = &kAxisDispatchValues[uint32_t(axis)];
-            dispatchAxis = axis;
+        const AxisDispatchValues& dispatchValues = kAxisDispatchValues[uint32_t(axis)];
+        if (dispatchValues.count > 0 && axisValue(context.axes, axis) != 0) {
+            variantValues.assign(dispatchValues.values, dispatchValues.values + dispatchValues.count);
+            hasVariantAxis = true;
+            variantAxis = axis;
+        } else if (kAxisRunsPerTileList[uint32_t(axis)]) {
+            out->perTileList = true;
+            hasVariantAxis = true;
+            variantAxis = axis;
+            for (uint32_t list = 0; list < FFX_DOF_TILE_LIST_COUNT; ++list) {
+                // In place the output holds the input already: the composite's copy class has nothing to do.
+                const bool nothingToDo = axis == Axis::CompositeClass && list == FFX_DOF_COMPOSITE_CLASS_COPY &&
+                                         context.axes.outputPreInit != 0;
+                if (!nothingToDo) variantValues.push_back(list);
+            }
         }
     }
-    out->variantCount = dispatchValues ? dispatchValues->count : 1;
+    if (variantValues.empty()) variantValues.push_back(0);
+    out->variantCount = uint32_t(variantValues.size());
     for (uint32_t v = 0; v < out->variantCount; ++v) {
         PassVariant& variant = out->variants[v];
+        variant.dispatchValue = variantValues[v];
         std::vector<shaders::Define> key;
         for (uint32_t a = 0; a < kPassAxisCount[p]; ++a) {
             const Axis axis = kPassAxes[p][a];
-            const bool perDispatch = dispatchValues && axis == dispatchAxis;
-            if (perDispatch) variant.dispatchValue = dispatchValues->values[v];
+            const bool variesHere = hasVariantAxis && axis == variantAxis;
             key.emplace_back(kAxisMacros[uint32_t(axis)],
-                             perDispatch ? dispatchValues->values[v] : axisValue(context.axes, axis));
+                             variesHere ? variantValues[v] : axisValue(context.axes, axis));
         }
         std::string error;
         if (!shaders::findPermutationIndex(*table, key, &variant.permutationIndex, &error)) {
@@ -102,6 +119,7 @@ FfxDofErrorCode planPass(const ContextPlan& context, Pass pass, const shaders::P
         }
         variant.blob = &table->blobs[table->permutationToBlob[variant.permutationIndex]];
     }
+    if (out->perTileList) out->indirect = resourceBit(Resource::TileListArgs);
     out->groups = passGroups(context.constants, pass);
 
     for (uint32_t b = 0; b < table->bindingCount; ++b) {
@@ -226,8 +244,9 @@ FfxDofErrorCode buildContextPlan(const ContextConfig& config, const BackendCapab
             status != FFX_DOF_OK) {
             return status;
         }
-        plan->touched |= pass.reads | pass.writes;
+        plan->touched |= pass.reads | pass.writes | pass.indirect;
     }
+    plan->tileListsBytes = tileListsWordCount(c.tileCount.x, c.tileCount.y) * 4;
     return FFX_DOF_OK;
 }
 

@@ -22,7 +22,7 @@ struct ContextConfig {
 };
 
 // Every resource a pass can bind. The internal images follow kInternalImages, in its order.
-enum class Resource : uint32_t { InputColor, InputDepth, Output, Globals, FirstInternalImage };
+enum class Resource : uint32_t { InputColor, InputDepth, Output, Globals, TileListArgs, TileLists, FirstInternalImage };
 constexpr uint32_t kResourceCount = uint32_t(Resource::FirstInternalImage) + kInternalImageCount;
 constexpr Resource internalImageResource(uint32_t image) {
     return Resource(uint32_t(Resource::FirstInternalImage) + image);
@@ -54,21 +54,27 @@ struct PlannedImage {
 struct PassVariant {
     const shaders::Blob* blob = nullptr;
     uint32_t permutationIndex = 0;
-    uint32_t dispatchValue = 0;  // the value of the pass's per-dispatch axis (0 without one)
+    // The value of the pass's per-dispatch or tile-list axis (0 without one); for a tile-list axis also
+    // the list the variant is dispatched over (FFX_DOF_TILE_LIST_ARGS_WORDS words apart in TILE_LIST_ARGS).
+    uint32_t dispatchValue = 0;
 };
 
 struct PlannedPass {
     const shaders::PassTable* table = nullptr;
     // One variant per value of the pass's per-dispatch axis (perDispatch in the permutations JSON)
     // where the context's flag sets it, each dispatch running one (DispatchPlan::variants); else one.
+    // With a tile-list axis (kAxisRunsPerTileList) every dispatch runs every variant instead, each
+    // dispatched indirectly over its tile list (`groups` unused).
     PassVariant variants[kMaxPassVariants];
     uint32_t variantCount = 1;
+    bool perTileList = false;
     PassGrid groups;            // workgroup counts
     uint32_t sampledSlots = 0;  // bit i: FFX_DOF_SRV_* slot i is declared (reflected)
     uint32_t storageSlots = 0;  // bit i: FFX_DOF_UAV_* image slot i
     uint32_t bufferSlots = 0;   // bit i: FFX_DOF_UAV_BUFFER_* slot i
     ResourceSet reads = 0;      // sampled
     ResourceSet writes = 0;     // storage images and buffers (which the pass may also read)
+    ResourceSet indirect = 0;   // read as indirect dispatch arguments (TILE_LIST_ARGS where perTileList)
 };
 
 // What a backend's device can run, asked once per context.
@@ -86,7 +92,8 @@ struct ContextPlan {
     SlotTarget sampledSlots[kSampledSlotCount];
     SlotTarget storageImageSlots[kStorageImageSlotCount];
     SlotTarget storageBufferSlots[kStorageBufferSlotCount];
-    // Every pass's reads | writes.
+    uint32_t tileListsBytes = 0;  // TILE_LISTS (TILE_LIST_ARGS: kTileListArgsBytes)
+    // Every pass's reads | writes | indirect.
     ResourceSet touched = 0;
     FfxDofConstants constants{};  // the per-context part; planDispatch adds the per-frame values
 };
@@ -105,7 +112,7 @@ struct DispatchPlan {
     FfxDofConstants constants{};         // the backend may only add FFX_DOF_OUTPUT_FLAG_* bits
     bool outputIsColor = false;          // in place: output and color are the same image
     bool runs[kPassCount] = {};          // the passes to record (autofocus only when the dispatch asks for it)
-    uint32_t variants[kPassCount] = {};  // the PlannedPass::variants entry each pass runs
+    uint32_t variants[kPassCount] = {};  // the PlannedPass::variants entry each pass runs (not perTileList)
 };
 
 // Checks an autofocus description; FFX_DOF_ERROR_INVALID_ARGUMENT naming the field otherwise.

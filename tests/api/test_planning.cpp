@@ -11,6 +11,7 @@
 #include <cmath>
 #include <cstring>
 #include <string>
+#include <vector>
 
 using namespace ffxdof;
 
@@ -110,16 +111,32 @@ TEST_CASE("each pass runs the permutation of the context's axes") {
         INFO("pass " << kPassNames[p]);
         REQUIRE(pass.table != nullptr);
         CHECK(std::string(pass.table->pass) == kPassNames[p]);
-        REQUIRE(pass.variantCount == 1);  // without FFX_DOF_ENABLE_APERTURE_SHAPES no axis varies per dispatch
-        const PassVariant& variant = pass.variants[0];
-        for (const shaders::Define& define : shaders::permutationDefines(*pass.table, variant.permutationIndex)) {
-            uint32_t expected = 99;
-            for (uint32_t a = 0; a < kAxisCount; ++a) {
-                if (define.first == kAxisMacros[a]) expected = axisValue(plan.axes, Axis(a));
+        // Without FFX_DOF_ENABLE_APERTURE_SHAPES no axis varies per dispatch; the composite runs one
+        // pipeline per tile list (in place none for the copy class, which has nothing to do there).
+        const bool inPlace = (flags & FFX_DOF_OUTPUT_PRE_INIT) != 0;
+        const bool composite = Pass(p) == Pass::Composite;
+        CHECK(pass.perTileList == composite);
+        REQUIRE(pass.variantCount == (composite ? (inPlace ? 2u : 3u) : 1u));
+        for (uint32_t v = 0; v < pass.variantCount; ++v) {
+            const PassVariant& variant = pass.variants[v];
+            if (composite) {
+                CHECK(variant.dispatchValue ==
+                      (inPlace ? std::vector<uint32_t>{FFX_DOF_COMPOSITE_CLASS_LAYERS, FFX_DOF_COMPOSITE_CLASS_FULL_RES}
+                               : std::vector<uint32_t>{FFX_DOF_COMPOSITE_CLASS_COPY, FFX_DOF_COMPOSITE_CLASS_LAYERS,
+                                                       FFX_DOF_COMPOSITE_CLASS_FULL_RES})[v]);
             }
-            CHECK(define.second == expected);
+            for (const shaders::Define& define : shaders::permutationDefines(*pass.table, variant.permutationIndex)) {
+                uint32_t expected = 99;
+                for (uint32_t a = 0; a < kAxisCount; ++a) {
+                    if (define.first == kAxisMacros[a])
+                        expected = kAxisRunsPerTileList[a] ? variant.dispatchValue : axisValue(plan.axes, Axis(a));
+                }
+                CHECK(define.second == expected);
+            }
+            CHECK(variant.blob == &pass.table->blobs[pass.table->permutationToBlob[variant.permutationIndex]]);
         }
-        CHECK(variant.blob == &pass.table->blobs[pass.table->permutationToBlob[variant.permutationIndex]]);
+        // Dispatched indirectly from TILE_LIST_ARGS, which it does not bind.
+        CHECK(pass.indirect == (composite ? resourceBit(Resource::TileListArgs) : 0u));
     }
 }
 
@@ -159,7 +176,8 @@ TEST_CASE("a shaped context runs the compact blur where the dispatch's aperture 
     }
     CHECK(blur.variants[0].blob != blur.variants[1].blob);
     for (uint32_t p = 0; p < kPassCount; ++p)
-        CHECK(context.passes[p].variantCount == (Pass(p) == Pass::Blur ? 2u : 1u));
+        CHECK(context.passes[p].variantCount ==
+              (Pass(p) == Pass::Blur ? 2u : (Pass(p) == Pass::Composite ? uint32_t(FFX_DOF_TILE_LIST_COUNT) : 1u)));
 
     const uint32_t compact = FFX_DOF_APERTURE_SHAPES_COMPACT;
     const uint32_t any = FFX_DOF_APERTURE_SHAPES_ANY;
@@ -196,6 +214,7 @@ TEST_CASE("the passes' reflected reads and writes form the pipeline's data flow"
         INFO("pass " << kPassNames[p]);
         const ResourceSet engineInputs = resourceBit(Resource::InputColor) | resourceBit(Resource::InputDepth);
         CHECK((pass.reads & ~engineInputs & ~written) == 0);
+        CHECK((pass.indirect & ~written) == 0);  // dispatch arguments an earlier pass wrote
         CHECK((pass.writes & engineInputs) == 0);
         written |= pass.writes;
     }

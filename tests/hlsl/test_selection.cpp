@@ -47,9 +47,14 @@ const shaders::PassTable* tableFor(bool hlsl, const char* pass) {
     return hlsl ? shaders::hlsl::findPassTable(pass) : shaders::glsl::findPassTable(pass);
 }
 
-// The aperture axis values a context of `options` runs `pass` with: 0 without shapes; with them, every
-// value of the axis's per-dispatch list (kAxisDispatchValues, from the permutations JSON), else 1.
-std::vector<uint32_t> apertureValues(const char* pass, const Options& options) {
+// The values of the axis a context of `options` runs `pass` with several pipelines of: the aperture axis
+// (0 without shapes; with them, every value of its per-dispatch list, kAxisDispatchValues from the
+// permutations JSON) or the composite's class (one pipeline per tile list; in place none for the copy).
+std::vector<uint32_t> variantValues(const char* pass, const Options& options) {
+    if (std::strcmp(pass, "composite") == 0) {
+        if (options.inPlace) return {FFX_DOF_COMPOSITE_CLASS_LAYERS, FFX_DOF_COMPOSITE_CLASS_FULL_RES};
+        return {FFX_DOF_COMPOSITE_CLASS_COPY, FFX_DOF_COMPOSITE_CLASS_LAYERS, FFX_DOF_COMPOSITE_CLASS_FULL_RES};
+    }
     if (!options.apertureShapes) return {0u};
     for (uint32_t p = 0; p < kPassCount; ++p) {
         if (std::strcmp(kPassNames[p], pass) != 0) continue;
@@ -64,9 +69,9 @@ std::vector<uint32_t> apertureValues(const char* pass, const Options& options) {
     return {1u};
 }
 
-// The blob the options call for: each axis the table has gets the options' value (the aperture
-// axis: `apertureShapes`, one of the values a shaped context runs per dispatch).
-const shaders::Blob& expectedBlob(const shaders::PassTable& table, const Options& options, uint32_t apertureShapes) {
+// The blob the options call for: each axis the table has gets the options' value (the aperture axis
+// or the composite's class: `variantValue`, one of variantValues).
+const shaders::Blob& expectedBlob(const shaders::PassTable& table, const Options& options, uint32_t variantValue) {
     std::vector<shaders::Define> key;
     for (uint32_t a = 0; a < table.axisCount; ++a) {
         const std::string macro = table.axes[a].macro;
@@ -79,8 +84,8 @@ const shaders::Blob& expectedBlob(const shaders::PassTable& table, const Options
             value = options.ringMerge ? 0 : 1;
         else if (macro == "FFX_DOF_OPTION_OUTPUT_PRE_INIT")
             value = options.inPlace;
-        else if (macro == "FFX_DOF_OPTION_APERTURE_SHAPES")
-            value = apertureShapes;
+        else if (macro == "FFX_DOF_OPTION_APERTURE_SHAPES" || macro == "FFX_DOF_OPTION_COMPOSITE_CLASS")
+            value = variantValue;
         else if (macro != "FFX_DOF_OPTION_WAVE64")
             FAIL("axis " << macro << " is unknown to this test");
         key.emplace_back(macro, value);
@@ -132,13 +137,14 @@ TEST_CASE("the backend creates its pipelines from the blobs of the chosen langua
         ffxDofBackendDestroy(backend);
         requireNoValidationMessages(device, options.hlsl ? "HLSL pipelines" : "GLSL pipelines");
 
-        // One module per pass, each exactly the expected blob of the chosen language; a shaped
-        // context's blur has two, the general and the compact aperture's (chosen per dispatch).
+        // One module per pipeline, each exactly the expected blob of the chosen language: one per pass, but
+        // two blurs in a shaped context (the general and the compact aperture's, chosen per dispatch) and a
+        // composite per tile list.
         std::vector<const shaders::Blob*> expected;
         for (uint32_t t = 0; t < shaders::glsl::kPassTableCount; ++t) {
             const shaders::PassTable* own = tableFor(options.hlsl, shaders::glsl::kPassTables[t]->pass);
             REQUIRE(own != nullptr);
-            const std::vector<uint32_t> values = apertureValues(own->pass, options);
+            const std::vector<uint32_t> values = variantValues(own->pass, options);
             // The blur of a shaped context runs the general and the compact gauge.
             if (options.apertureShapes && std::strcmp(own->pass, "blur") == 0) CHECK(values.size() >= 2);
             for (uint32_t value : values) expected.push_back(&expectedBlob(*own, options, value));

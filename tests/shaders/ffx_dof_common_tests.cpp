@@ -1007,6 +1007,36 @@ TEST_CASE("The own-surface gather covers radii below the far-layer radius, and h
     CHECK(ffxDofOwnSurfaceLayerShare(FFX_DOF_FAR_LAYER_ONLY_RADIUS) == 1.0f);
 }
 
+TEST_CASE("Composite classes: a copy where every pixel keeps its input, full resolution only where it gathers there",
+          "[composite]") {
+    const FfxUInt32 copy = FFX_DOF_COMPOSITE_CLASS_COPY;
+    const FfxUInt32 layers = FFX_DOF_COMPOSITE_CLASS_LAYERS;
+    const FfxUInt32 fullRes = FFX_DOF_COMPOSITE_CLASS_FULL_RES;
+    // (min, max) signed radii, the dilated near radius, whether small sources are drawn around it.
+    const glm::vec2 inFocus(-0.4f, 0.4f);
+    CHECK(ffxDofCompositeTileClass(inFocus, 0.4f, false) == copy);
+    // A near field that reaches the tile, or a pixel just out of focus: the layers.
+    CHECK(ffxDofCompositeTileClass(inFocus, FFX_DOF_NEAR_THRESHOLD, false) == layers);
+    CHECK(ffxDofCompositeTileClass(glm::vec2(-FFX_DOF_IN_FOCUS_RADIUS, 0.0f), 0.0f, false) == layers);
+    CHECK(ffxDofCompositeTileClass(glm::vec2(0.0f, FFX_DOF_IN_FOCUS_RADIUS), 0.0f, false) == layers);
+    // An in-focus tile drawing small sources keeps its input: the sources are composed over far pixels only.
+    CHECK(ffxDofCompositeTileClass(inFocus, 0.0f, true) == copy);
+    // Far or near layers alone.
+    CHECK(ffxDofCompositeTileClass(glm::vec2(-9.0f, -3.0f), 0.0f, false) == layers);
+    CHECK(ffxDofCompositeTileClass(glm::vec2(3.0f, 9.0f), 9.0f, false) == layers);
+    // Every tile whose own surface the composite gathers, and every tile drawing small sources.
+    for (const glm::vec2 tile : {glm::vec2(-9.0f, -2.9f), glm::vec2(-1.0f, 0.0f), glm::vec2(0.0f, 1.0f),
+                                 glm::vec2(2.9f, 9.0f), glm::vec2(-9.0f, 9.0f)}) {
+        INFO("tile " << tile.x << ", " << tile.y);
+        REQUIRE(ffxDofTileGathersOwnSurface(tile));
+        CHECK(ffxDofCompositeTileClass(tile, tile.y, false) == fullRes);
+    }
+    CHECK(ffxDofCompositeTileClass(glm::vec2(-9.0f, -3.0f), 0.0f, true) == fullRes);
+    // Every pixel a copy tile holds keeps its input in the full composition: in focus, no near opacity.
+    CHECK(ffxDofTileKeepsInput(inFocus, 0.0f));
+    CHECK_FALSE(ffxDofTileKeepsInput(inFocus, FFX_DOF_NEAR_THRESHOLD));
+}
+
 TEST_CASE("sRGB encoding", "[composite]") {
     CHECK(ffxDofLinearToSrgb(0.0f) == 0.0f);
     CHECK(ffxDofLinearToSrgb(1.0f) == Approx(1.0f));

@@ -50,6 +50,12 @@ struct State {
     Image<glm::vec3> nearColor, farColor;
     Image<glm::vec4> output;
     std::atomic<uint32_t> globals[FFX_DOF_GLOBALS_WORD_COUNT] = {};
+    // TILE_LIST_ARGS (garbage until pass 1 resets it, as on a GPU) and TILE_LISTS.
+    std::atomic<uint32_t> tileListArgs[ffxdof::kTileListArgsWordCount];
+    std::vector<uint32_t> tileLists;
+    State() {
+        for (std::atomic<uint32_t>& word : tileListArgs) word.store(0xdeadbeefu);
+    }
 };
 State* g_state = nullptr;
 
@@ -217,6 +223,25 @@ FfxDofFloat3 ffxDofLoadFarColor(FfxInt32x2 t) { return g_state->farColor.at(t.x,
 FfxFloat32x2 ffxDofLoadLayerAlpha(FfxInt32x2 t) { return g_state->layerAlpha.at(t.x, t.y); }
 void ffxDofStoreOutput(FfxUInt32x2 p, FfxFloat32x4 c) { g_state->output.store(p.x, p.y, c); }
 void ffxDofResetGlobals() { g_state->globals[FFX_DOF_GLOBALS_MAX_RADIUS].store(0); }
+void ffxDofResetTileLists() {
+    for (uint32_t list = 0; list < FFX_DOF_TILE_LIST_COUNT; ++list) {
+        g_state->tileListArgs[list * FFX_DOF_TILE_LIST_ARGS_WORDS + 0].store(0);
+        g_state->tileListArgs[list * FFX_DOF_TILE_LIST_ARGS_WORDS + 1].store(1);
+        g_state->tileListArgs[list * FFX_DOF_TILE_LIST_ARGS_WORDS + 2].store(1);
+    }
+}
+void ffxDofAppendToTileList(FfxUInt32 list, FfxUInt32x2 tile, FfxUInt32 tilesPerList) {
+    if (list >= FFX_DOF_TILE_LIST_COUNT) throw std::out_of_range("tile list");
+    const uint32_t index = g_state->tileListArgs[list * FFX_DOF_TILE_LIST_ARGS_WORDS].fetch_add(1);
+    if (index >= tilesPerList) throw std::out_of_range("tile list full");
+    g_state->tileLists.at(size_t(list) * tilesPerList + index) = tile.x | (tile.y << 16u);
+}
+FfxUInt32x2 ffxDofLoadListedTile(FfxUInt32 list, FfxUInt32 index, FfxUInt32 tilesPerList) {
+    if (index >= g_state->tileListArgs[list * FFX_DOF_TILE_LIST_ARGS_WORDS].load())
+        throw std::out_of_range("tile list read past its count");
+    const uint32_t packed = g_state->tileLists.at(size_t(list) * tilesPerList + index);
+    return FfxUInt32x2(packed & 0xffffu, packed >> 16u);
+}
 
 namespace ffxdoftest {
 
@@ -248,6 +273,7 @@ std::vector<glm::vec4> runPipeline(const Scene& scene, const Settings& settings,
     state.farColor.resize(k.halfSize.x, k.halfSize.y);
     state.layerAlpha.resize(k.halfSize.x, k.halfSize.y);
     state.output.resize(scene.width, scene.height);
+    state.tileLists.assign(ffxdof::tileListsWordCount(k.tileCount.x, k.tileCount.y), 0xdeadbeefu);
 
     // Group counts from the dispatch geometry of ffx_dof_resources.h.
     auto groups = [](uint32_t domain, uint32_t extent) { return ceilDiv(domain, extent); };
@@ -269,8 +295,19 @@ std::vector<glm::vec4> runPipeline(const Scene& scene, const Settings& settings,
         runGroups(groups(k.halfSize.x, FFX_DOF_BLUR_GROUP_EXTENT), groups(k.halfSize.y, FFX_DOF_BLUR_GROUP_EXTENT),
                   ffxDofBlur);
     }
-    runGroups(groups(scene.width, FFX_DOF_COMPOSITE_GROUP_EXTENT), groups(scene.height, FFX_DOF_COMPOSITE_GROUP_EXTENT),
-              ffxDofComposite);
+    // One indirect dispatch per class, over the tiles dilate listed under it (every tile in exactly one).
+    uint32_t listedTiles = 0;
+    for (uint32_t compositeClass = 0; compositeClass < FFX_DOF_TILE_LIST_COUNT; ++compositeClass) {
+        uint32_t args[3];
+        for (uint32_t w = 0; w < 3; ++w)
+            args[w] = state.tileListArgs[compositeClass * FFX_DOF_TILE_LIST_ARGS_WORDS + w].load();
+        if (args[1] != 1 || args[2] != 1) throw std::logic_error("tile list dispatch arguments not reset");
+        listedTiles += args[0];
+        runGroups(args[0], 1, [compositeClass](FfxUInt32x2 group, FfxUInt32 local) {
+            ffxDofComposite(compositeClass, group.x, local);
+        });
+    }
+    if (listedTiles != k.tileCount.x * k.tileCount.y) throw std::logic_error("not every tile is listed once");
 
     if (layers) {
         layers->halfWidth = k.halfSize.x;

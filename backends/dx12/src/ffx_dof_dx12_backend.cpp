@@ -51,7 +51,8 @@ FfxDofErrorCode Backend::init(const FfxDofBackendDescriptionDX12& description) {
     descriptorSize_ = device_->GetDescriptorHandleIncrementSize(D3D12_DESCRIPTOR_HEAP_TYPE_CBV_SRV_UAV);
 
     if (const FfxDofErrorCode status = queryDevice(description.flags); status != FFX_DOF_OK) return status;
-    return createRootSignature();
+    if (const FfxDofErrorCode status = createRootSignature(); status != FFX_DOF_OK) return status;
+    return createTileListSignature();
 }
 
 BackendCapabilities Backend::capabilities() const {
@@ -127,6 +128,21 @@ FfxDofErrorCode Backend::createRootSignature() {
                                       IID_PPV_ARGS(&rootSignature_));
     if (FAILED(hr))
         return fail(FFX_DOF_ERROR_BACKEND, "ID3D12Device::CreateRootSignature failed (HRESULT 0x%08lx)",
+                    static_cast<unsigned long>(hr));
+    return FFX_DOF_OK;
+}
+
+FfxDofErrorCode Backend::createTileListSignature() {
+    D3D12_INDIRECT_ARGUMENT_DESC argument{};
+    argument.Type = D3D12_INDIRECT_ARGUMENT_TYPE_DISPATCH;
+    D3D12_COMMAND_SIGNATURE_DESC desc{};
+    desc.ByteStride = FFX_DOF_TILE_LIST_ARGS_WORDS * sizeof(uint32_t);
+    desc.NumArgumentDescs = 1;
+    desc.pArgumentDescs = &argument;
+    // A signature of dispatch arguments alone changes no root argument: no root signature.
+    const HRESULT hr = device_->CreateCommandSignature(&desc, nullptr, IID_PPV_ARGS(&tileListSignature_));
+    if (FAILED(hr))
+        return fail(FFX_DOF_ERROR_BACKEND, "ID3D12Device::CreateCommandSignature failed (HRESULT 0x%08lx)",
                     static_cast<unsigned long>(hr));
     return FFX_DOF_OK;
 }

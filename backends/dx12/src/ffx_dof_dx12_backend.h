@@ -1,5 +1,5 @@
-// The D3D12 backend: the device, its axes and one root signature, shared by every context made with
-// it (each context makes the pipeline states of its plan). Private to ffx-dof.
+// The D3D12 backend: the device, its axes, one root signature and one command signature, shared by every context made
+// with it (each context makes the pipeline states of its plan). Private to ffx-dof.
 #pragma once
 
 #include "ffx_dof_backend.h"
@@ -20,7 +20,7 @@ using Microsoft::WRL::ComPtr;
 // Every dispatch binds one contiguous block of descriptors through one descriptor table:
 //   [0, 10)   SRVs t0..t9               (FFX_DOF_SRV_*)
 //   [10, 21)  image UAVs u0..u10        (FFX_DOF_UAV_*)
-//   [21, 22)  buffer UAV u0, space 1    (FFX_DOF_UAV_BUFFER_*)
+//   [21, 24)  buffer UAVs u0..u2, space 1 (FFX_DOF_UAV_BUFFER_*)
 // HLSL has one u# namespace for images and buffers, so the buffers take register space 1
 // (shaders_common/ffx_dof_callbacks_hlsl.h declares them there).
 constexpr uint32_t kSrvCount = kSampledSlotCount;
@@ -53,15 +53,19 @@ public:
 
     ID3D12Device* device() const { return device_.Get(); }
     ID3D12RootSignature* rootSignature() const { return rootSignature_.Get(); }
+    // One dispatch whose arguments are a tile list's in TILE_LIST_ARGS (FFX_DOF_TILE_LIST_ARGS_WORDS apart).
+    ID3D12CommandSignature* tileListSignature() const { return tileListSignature_.Get(); }
     uint32_t framesInFlight() const { return framesInFlight_; }
     UINT descriptorSize() const { return descriptorSize_; }
 
 private:
     FfxDofErrorCode queryDevice(uint32_t flags);
     FfxDofErrorCode createRootSignature();
+    FfxDofErrorCode createTileListSignature();
 
     ComPtr<ID3D12Device> device_;
     ComPtr<ID3D12RootSignature> rootSignature_;
+    ComPtr<ID3D12CommandSignature> tileListSignature_;
     uint32_t framesInFlight_ = kDefaultFramesInFlight;
     UINT descriptorSize_ = 0;
     DeviceOptions deviceOptions_;

@@ -44,9 +44,8 @@ D3D12_RESOURCE_DESC bufferDescription(UINT64 bytes, D3D12_RESOURCE_FLAGS flags) 
     return desc;
 }
 
-// GLOBALS (FFX_DOF_UAV_BUFFER_GLOBALS): RWStructuredBuffer<uint> in HLSL, so a structured UAV.
-constexpr UINT kGlobalsElementBytes = 4;
-constexpr UINT kGlobalsElementCount = kGlobalsWordCount;
+// The storage buffers (FFX_DOF_UAV_BUFFER_*) are RWStructuredBuffer<uint> in HLSL, so structured UAVs.
+constexpr UINT kBufferElementBytes = 4;
 
 // An engine image, checked and with the view format the backend uses for it.
 struct EngineImage {
@@ -135,7 +134,9 @@ private:
     const ContextPlan& plan_;
     ComPtr<ID3D12PipelineState> pipelines_[kPassCount][kMaxPassVariants];  // [pass][variant]
     InternalImage images_[kInternalImageCount];
-    ComPtr<ID3D12Resource> globals_;
+    ComPtr<ID3D12Resource> buffers_[kUavBufferCount];  // [FFX_DOF_UAV_BUFFER_*]
+    UINT bufferElements_[kUavBufferCount] = {};
+    ID3D12Resource* globals() const { return buffers_[FFX_DOF_UAV_BUFFER_GLOBALS].Get(); }
     // The focus distances of the last autofocus dispatches (ffxDofContextGetAutofocusDistance): a
     // readback buffer, mapped for the context's life, one float per slot of the ring.
     AutofocusReadbackRing readbackRing_;
@@ -186,6 +187,13 @@ void Context::trackInternalImages(StateTracker* tracker, SlotTargets* slots) con
         }
         slots->srv[spec.sampledSlot] = {levelEntries[0], static_cast<uint8_t>(levels)};
     }
+    // TILE_LIST_ARGS changes state (UAV, then the composite's indirect arguments); it rests in COMMON,
+    // the state a buffer is created in.
+    const uint8_t args =
+        tracker->track(buffers_[FFX_DOF_UAV_BUFFER_TILE_LIST_ARGS].Get(), D3D12_RESOURCE_BARRIER_ALL_SUBRESOURCES,
+                       D3D12_RESOURCE_STATE_COMMON, D3D12_RESOURCE_STATE_COMMON);
+    slots->uavBuffer[FFX_DOF_UAV_BUFFER_TILE_LIST_ARGS] = args;
+    slots->indirectArgs = args;
     // Storage slots as the plan maps them (a level a small image lacks aliases its last level).
     for (uint32_t slot = 0; slot < kUavImageCount; ++slot) {
         const SlotTarget& target = plan_.storageImageSlots[slot];
@@ -204,7 +212,7 @@ void Context::chooseRestStates() {
     SlotTargets slots;
     trackInternalImages(&tracker, &slots);
     for (const PlannedPass& pass : plan_.passes) {
-        tracker.beforePass(slots, pass, nullptr);
+        tracker.beforePass(slots, pass, nullptr);  // no barrier is recorded
         tracker.afterPass(pass);
         tracker.flush(nullptr);
     }
@@ -243,16 +251,26 @@ FfxDofErrorCode Context::createResources() {
     }
 
     // A committed resource in a default heap starts zeroed (no D3D12_HEAP_FLAG_CREATE_NOT_ZEROED),
-    // which is the "zero before the first dispatch" that GLOBALS needs.
-    const D3D12_RESOURCE_DESC desc =
-        bufferDescription(kGlobalsElementBytes * kGlobalsElementCount, D3D12_RESOURCE_FLAG_ALLOW_UNORDERED_ACCESS);
-    const HRESULT hr = device->CreateCommittedResource(&heap, D3D12_HEAP_FLAG_NONE, &desc, D3D12_RESOURCE_STATE_COMMON,
-                                                       nullptr, IID_PPV_ARGS(&globals_));
-    if (FAILED(hr))
-        return fail(hr == E_OUTOFMEMORY ? FFX_DOF_ERROR_OUT_OF_MEMORY : FFX_DOF_ERROR_BACKEND,
-                    "creating the GLOBALS buffer failed (HRESULT 0x%08lx)", static_cast<unsigned long>(hr));
-    // Not aliasable: it carries the zero the composite pass writes back into the next dispatch.
-    memory_.totalUsageInBytes += device->GetResourceAllocationInfo(0, 1, &desc).SizeInBytes;
+    // which is the "zero before the first dispatch" that GLOBALS needs. Not aliasable: it carries the
+    // zeros the passes write back into the next dispatch. TILE_LIST_ARGS and TILE_LISTS are rewritten by
+    // every dispatch before they are read.
+    bufferElements_[FFX_DOF_UAV_BUFFER_GLOBALS] = kGlobalsWordCount;
+    bufferElements_[FFX_DOF_UAV_BUFFER_TILE_LIST_ARGS] = kTileListArgsWordCount;
+    bufferElements_[FFX_DOF_UAV_BUFFER_TILE_LISTS] = plan_.tileListsBytes / kBufferElementBytes;
+    const char* const names[kUavBufferCount] = {"GLOBALS", "TILE_LIST_ARGS", "TILE_LISTS"};
+    static_assert(kUavBufferCount == 3, "names are listed by storage buffer slot");
+    for (uint32_t slot = 0; slot < kUavBufferCount; ++slot) {
+        const D3D12_RESOURCE_DESC desc = bufferDescription(UINT64(kBufferElementBytes) * bufferElements_[slot],
+                                                           D3D12_RESOURCE_FLAG_ALLOW_UNORDERED_ACCESS);
+        const HRESULT hr = device->CreateCommittedResource(
+            &heap, D3D12_HEAP_FLAG_NONE, &desc, D3D12_RESOURCE_STATE_COMMON, nullptr, IID_PPV_ARGS(&buffers_[slot]));
+        if (FAILED(hr))
+            return fail(hr == E_OUTOFMEMORY ? FFX_DOF_ERROR_OUT_OF_MEMORY : FFX_DOF_ERROR_BACKEND,
+                        "creating the %s buffer failed (HRESULT 0x%08lx)", names[slot], static_cast<unsigned long>(hr));
+        const UINT64 bytes = device->GetResourceAllocationInfo(0, 1, &desc).SizeInBytes;
+        memory_.totalUsageInBytes += bytes;
+        if (slot != FFX_DOF_UAV_BUFFER_GLOBALS) memory_.aliasableUsageInBytes += bytes;
+    }
     return FFX_DOF_OK;
 }
 
@@ -281,13 +299,13 @@ void Context::recordFocusReadback(ID3D12GraphicsCommandList* list, uint32_t slot
     // list records next (another dispatch of this context).
     D3D12_RESOURCE_BARRIER barrier{};
     barrier.Type = D3D12_RESOURCE_BARRIER_TYPE_TRANSITION;
-    barrier.Transition.pResource = globals_.Get();
+    barrier.Transition.pResource = globals();
     barrier.Transition.Subresource = D3D12_RESOURCE_BARRIER_ALL_SUBRESOURCES;
     barrier.Transition.StateBefore = D3D12_RESOURCE_STATE_UNORDERED_ACCESS;
     barrier.Transition.StateAfter = D3D12_RESOURCE_STATE_COPY_SOURCE;
     list->ResourceBarrier(1, &barrier);
-    list->CopyBufferRegion(readback_.Get(), slot * sizeof(float), globals_.Get(),
-                           FFX_DOF_GLOBALS_FOCUS_DISTANCE * kGlobalsElementBytes, sizeof(float));
+    list->CopyBufferRegion(readback_.Get(), slot * sizeof(float), globals(),
+                           FFX_DOF_GLOBALS_FOCUS_DISTANCE * kBufferElementBytes, sizeof(float));
     barrier.Transition.StateBefore = D3D12_RESOURCE_STATE_COPY_SOURCE;
     barrier.Transition.StateAfter = D3D12_RESOURCE_STATE_UNORDERED_ACCESS;
     list->ResourceBarrier(1, &barrier);
@@ -346,13 +364,15 @@ FfxDofErrorCode Context::createDescriptorHeap() {
             writeUav(images_[i].resource.Get(), toDxgiFormat(kInternalImages[i].format), target.firstMip,
                      cpuDescriptor(slot, kUavImageTableOffset + s));
         }
-        D3D12_UNORDERED_ACCESS_VIEW_DESC globals{};
-        globals.Format = DXGI_FORMAT_UNKNOWN;
-        globals.ViewDimension = D3D12_UAV_DIMENSION_BUFFER;
-        globals.Buffer.NumElements = kGlobalsElementCount;
-        globals.Buffer.StructureByteStride = kGlobalsElementBytes;
-        backend_.device()->CreateUnorderedAccessView(
-            globals_.Get(), nullptr, &globals, cpuDescriptor(slot, kUavBufferTableOffset + FFX_DOF_UAV_BUFFER_GLOBALS));
+        for (uint32_t b = 0; b < kUavBufferCount; ++b) {
+            D3D12_UNORDERED_ACCESS_VIEW_DESC view{};
+            view.Format = DXGI_FORMAT_UNKNOWN;
+            view.ViewDimension = D3D12_UAV_DIMENSION_BUFFER;
+            view.Buffer.NumElements = bufferElements_[b];
+            view.Buffer.StructureByteStride = kBufferElementBytes;
+            backend_.device()->CreateUnorderedAccessView(buffers_[b].Get(), nullptr, &view,
+                                                         cpuDescriptor(slot, kUavBufferTableOffset + b));
+        }
     }
     return FFX_DOF_OK;
 }
@@ -412,7 +432,7 @@ FfxDofErrorCode Context::dispatch(const DispatchPlan& plan) {
         plan.outputIsColor
             ? colorEntry
             : tracker.track(output.resource, D3D12_RESOURCE_BARRIER_ALL_SUBRESOURCES, output.state, output.state);
-    tracker.assumeGlobalsWritten();
+    tracker.assumeBuffersWritten();
 
     FfxDofConstants constants = plan.constants;
     if (output.srgb) constants.outputFlags |= FFX_DOF_OUTPUT_FLAG_ENCODE_SRGB;
@@ -429,10 +449,29 @@ FfxDofErrorCode Context::dispatch(const DispatchPlan& plan) {
     for (uint32_t p = 0; p < kPassCount; ++p) {
         if (!plan.runs[p]) continue;  // autofocus, when the dispatch does not ask for it
         const PlannedPass& pass = plan_.passes[p];
-        tracker.beforePass(slots, pass, globals_.Get());
+        ID3D12Resource* const uavBuffers[kUavBufferCount] = {buffers_[0].Get(), buffers_[1].Get(), buffers_[2].Get()};
+        tracker.beforePass(slots, pass, uavBuffers);
         tracker.flush(list);
-        list->SetPipelineState(pipelines_[p][plan.variants[p]].Get());
-        list->Dispatch(pass.groups.x, pass.groups.y, pass.groups.z);
+        if (pass.perTileList) {
+            // Every variant, over the tiles dilate listed for it (ffx_dof_resources.h, TILE_LISTS).
+            for (uint32_t v = 0; v < pass.variantCount; ++v) {
+                if (v > 0 && plan.outputIsColor) {
+                    // In place a composite workgroup reads the input only within its own tile, which no other
+                    // workgroup writes; ordered all the same, as on Vulkan.
+                    D3D12_RESOURCE_BARRIER written{};
+                    written.Type = D3D12_RESOURCE_BARRIER_TYPE_UAV;
+                    written.UAV.pResource = color.resource;
+                    list->ResourceBarrier(1, &written);
+                }
+                list->SetPipelineState(pipelines_[p][v].Get());
+                list->ExecuteIndirect(backend_.tileListSignature(), 1,
+                                      buffers_[FFX_DOF_UAV_BUFFER_TILE_LIST_ARGS].Get(),
+                                      tileListArgsOffset(pass.variants[v].dispatchValue), nullptr, 0);
+            }
+        } else {
+            list->SetPipelineState(pipelines_[p][plan.variants[p]].Get());
+            list->Dispatch(pass.groups.x, pass.groups.y, pass.groups.z);
+        }
         tracker.afterPass(pass);
     }
     tracker.restore();

@@ -11,9 +11,13 @@ namespace ffxdof::dx12 {
 constexpr D3D12_RESOURCE_STATES kReadState = D3D12_RESOURCE_STATE_NON_PIXEL_SHADER_RESOURCE;
 constexpr D3D12_RESOURCE_STATES kWriteState = D3D12_RESOURCE_STATE_UNORDERED_ACCESS;
 
-// Subresources whose states a dispatch follows: every level of every internal image, plus color,
-// depth and output (whole resources; output shares color's entry when in place).
-constexpr uint32_t kMaxTracked = kInternalImageCount * kMipCount + 3;
+constexpr D3D12_RESOURCE_STATES kIndirectState = D3D12_RESOURCE_STATE_INDIRECT_ARGUMENT;
+
+// Subresources whose states a dispatch follows: every level of every internal image, TILE_LIST_ARGS
+// (a UAV for the passes that write it, indirect arguments for the composite), plus color, depth and
+// output (whole resources; output shares color's entry when in place). GLOBALS and TILE_LISTS stay UAVs
+// and need only UAV barriers.
+constexpr uint32_t kMaxTracked = kInternalImageCount * kMipCount + 4;
 constexpr uint8_t kNoTarget = 0xff;
 
 // Which tracked entries each binding slot reaches in one dispatch.
@@ -24,12 +28,15 @@ struct SlotTargets {
     };
     Range srv[kSrvCount];
     uint8_t uavImage[kUavImageCount];
+    uint8_t uavBuffer[kUavBufferCount];  // kNoTarget: a buffer that stays a UAV (UAV barriers only)
+    uint8_t indirectArgs = kNoTarget;    // TILE_LIST_ARGS, where a pass reads its dispatch arguments
     SlotTargets() {
         for (uint8_t& target : uavImage) target = kNoTarget;
+        for (uint8_t& target : uavBuffer) target = kNoTarget;
     }
 };
 
-enum class Access : uint8_t { None, Read, Write };
+enum class Access : uint8_t { None, Read, Write, Indirect };
 
 // Follows the state of every tracked subresource through the passes and batches the barriers that
 // make each pass's accesses legal. Without a command list it only simulates (to find rest states).
@@ -55,8 +62,9 @@ public:
         return static_cast<uint8_t>(count_++);
     }
 
-    // The pass's accesses are its reflected slots (the plan's); a storage slot is a write.
-    void beforePass(const SlotTargets& slots, const PlannedPass& pass, ID3D12Resource* globals) {
+    // The pass's accesses are its reflected slots (the plan's); a storage slot is a write. `uavBuffers`:
+    // the buffers by slot (those without a tracked entry stay UAVs).
+    void beforePass(const SlotTargets& slots, const PlannedPass& pass, ID3D12Resource* const* uavBuffers) {
         for (uint32_t i = 0; i < count_; ++i) access_[i] = Access::None;
         for (uint32_t slot = 0; slot < kSrvCount; ++slot) {
             if (!(pass.sampledSlots & (1u << slot))) continue;
@@ -68,9 +76,16 @@ public:
             if ((pass.storageSlots & (1u << slot)) && slots.uavImage[slot] != kNoTarget)
                 access_[slots.uavImage[slot]] = Access::Write;
         }
+        for (uint32_t slot = 0; slot < kUavBufferCount; ++slot) {
+            if ((pass.bufferSlots & (1u << slot)) && slots.uavBuffer[slot] != kNoTarget)
+                access_[slots.uavBuffer[slot]] = Access::Write;
+        }
+        if (pass.indirect != 0 && slots.indirectArgs != kNoTarget) access_[slots.indirectArgs] = Access::Indirect;
         for (uint32_t i = 0; i < count_; ++i) {
             Entry& entry = entries_[i];
-            if (access_[i] == Access::Read && (entry.state & kReadState) == 0) {
+            if (access_[i] == Access::Indirect && entry.state != kIndirectState) {
+                transition(entry, kIndirectState);
+            } else if (access_[i] == Access::Read && (entry.state & kReadState) == 0) {
                 transition(entry, kReadState);
             } else if (access_[i] == Access::Write && entry.state != kWriteState) {
                 transition(entry, kWriteState);
@@ -79,16 +94,20 @@ public:
             }
             if (access_[i] != Access::None) entry.unorderedWrites = false;
         }
-        // GLOBALS stays a UAV (a buffer: promoted from COMMON on first use, decays after the list),
-        // so only UAV barriers order the atomics of one pass against the next.
-        if (usesGlobals(pass) && globalsWritten_) uavBarrier(globals);
+        // GLOBALS and TILE_LISTS stay UAVs (buffers: promoted from COMMON on first use, decay after the
+        // list), so only UAV barriers order one pass's accesses against the next's.
+        for (uint32_t slot = 0; slot < kUavBufferCount; ++slot) {
+            if ((pass.bufferSlots & (1u << slot)) && slots.uavBuffer[slot] == kNoTarget && bufferWritten_[slot])
+                uavBarrier(uavBuffers != nullptr ? uavBuffers[slot] : nullptr);
+        }
     }
 
     void afterPass(const PlannedPass& pass) {
         for (uint32_t i = 0; i < count_; ++i) {
             if (access_[i] == Access::Write) entries_[i].unorderedWrites = true;
         }
-        globalsWritten_ = globalsWritten_ || usesGlobals(pass);
+        for (uint32_t slot = 0; slot < kUavBufferCount; ++slot)
+            bufferWritten_[slot] = bufferWritten_[slot] || (pass.bufferSlots & (1u << slot)) != 0;
     }
 
     // Back to the states the engine declared (engine images) and the rest states (internal images).
@@ -103,9 +122,11 @@ public:
         }
     }
 
-    // A dispatch may follow another in the same command list: its first GLOBALS atomics must wait
-    // for the previous composite pass's reset.
-    void assumeGlobalsWritten() { globalsWritten_ = true; }
+    // A dispatch may follow another in the same command list: its first accesses of the UAV buffers
+    // (GLOBALS atomics, TILE_LISTS) must wait for the previous dispatch's.
+    void assumeBuffersWritten() {
+        for (bool& written : bufferWritten_) written = true;
+    }
 
     void flush(ID3D12GraphicsCommandList* list) {
         if (list != nullptr && barrierCount_ != 0) list->ResourceBarrier(barrierCount_, barriers_);
@@ -115,8 +136,6 @@ public:
     const Entry& entry(uint32_t index) const { return entries_[index]; }
 
 private:
-    static bool usesGlobals(const PlannedPass& pass) { return pass.bufferSlots & (1u << FFX_DOF_UAV_BUFFER_GLOBALS); }
-
     void transition(Entry& entry, D3D12_RESOURCE_STATES after) {
         D3D12_RESOURCE_BARRIER& barrier = barriers_[barrierCount_++];
         barrier = {};
@@ -141,7 +160,7 @@ private:
     Entry entries_[kMaxTracked];
     Access access_[kMaxTracked]{};
     uint32_t count_ = 0;
-    bool globalsWritten_ = false;
+    bool bufferWritten_[kUavBufferCount] = {};
     D3D12_RESOURCE_BARRIER barriers_[2 * kMaxTracked + 1]{};
     UINT barrierCount_ = 0;
 };

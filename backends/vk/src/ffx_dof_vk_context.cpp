@@ -45,15 +45,17 @@ ContextVK::~ContextVK() {
         fn.vkDestroyImage(device, image.image, allocator);
     }
     fn.vkFreeMemory(device, imageMemory_, allocator);
-    fn.vkDestroyBuffer(device, globals_, allocator);
-    fn.vkFreeMemory(device, globalsMemory_, allocator);
+    for (InternalBuffer& buffer : buffers_) {
+        fn.vkDestroyBuffer(device, buffer.buffer, allocator);
+        fn.vkFreeMemory(device, buffer.memory, allocator);
+    }
     fn.vkDestroyBuffer(device, readback_, allocator);
     fn.vkFreeMemory(device, readbackMemory_, allocator);  // unmaps it
 }
 
 FfxDofErrorCode ContextVK::create() {
     FfxDofErrorCode result = createImages();
-    if (result == FFX_DOF_OK) result = createGlobals();
+    if (result == FFX_DOF_OK) result = createBuffers();
     if (result == FFX_DOF_OK) result = createReadback();
     if (result == FFX_DOF_OK) result = createPipelines();
     if (result == FFX_DOF_OK) result = createDescriptors();
@@ -133,26 +135,50 @@ FfxDofErrorCode ContextVK::createImages() {
     return FFX_DOF_OK;
 }
 
-FfxDofErrorCode ContextVK::createGlobals() {
+FfxDofErrorCode ContextVK::createBuffers() {
     const Functions& fn = backend_.fn;
     const VkDevice device = backend_.device;
-    auto bufferInfo = makeInfo<VkBufferCreateInfo>(VK_STRUCTURE_TYPE_BUFFER_CREATE_INFO);
-    bufferInfo.size = kGlobalsBufferBytes;
-    bufferInfo.usage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT |
-                       VK_BUFFER_USAGE_TRANSFER_SRC_BIT;  // autofocus copies its distance out
-    bufferInfo.sharingMode = VK_SHARING_MODE_EXCLUSIVE;
-    FFX_DOF_VK_CHECK(fn.vkCreateBuffer(device, &bufferInfo, backend_.allocator, &globals_), "vkCreateBuffer (GLOBALS)");
-    VkMemoryRequirements requirements{};
-    fn.vkGetBufferMemoryRequirements(device, globals_, &requirements);
-    memoryUsage_.totalUsageInBytes += requirements.size;
-    auto allocation = makeInfo<VkMemoryAllocateInfo>(VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO);
-    allocation.allocationSize = requirements.size;
-    if (!backend_.findMemoryType(requirements.memoryTypeBits, &allocation.memoryTypeIndex)) {
-        return fail(FFX_DOF_ERROR_UNSUPPORTED, "no memory type can hold the GLOBALS buffer");
+    struct BufferSpec {
+        const char* name;
+        VkDeviceSize bytes;
+        VkBufferUsageFlags usage;
+    };
+    const BufferSpec specs[kStorageBufferSlotCount] = {
+        // Zeroed before the first dispatch; autofocus copies its distance out.
+        {"GLOBALS", kGlobalsBufferBytes,
+         VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT},
+        {"TILE_LIST_ARGS", kTileListArgsBytes,
+         VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT},
+        {"TILE_LISTS", plan_.tileListsBytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT},
+    };
+    static_assert(FFX_DOF_UAV_BUFFER_GLOBALS == 0 && FFX_DOF_UAV_BUFFER_TILE_LIST_ARGS == 1 &&
+                      FFX_DOF_UAV_BUFFER_TILE_LISTS == 2 && kStorageBufferSlotCount == 3,
+                  "specs are listed by storage buffer slot");
+    for (uint32_t slot = 0; slot < kStorageBufferSlotCount; ++slot) {
+        const BufferSpec& spec = specs[slot];
+        InternalBuffer& buffer = buffers_[slot];
+        buffer.bytes = spec.bytes;
+        auto bufferInfo = makeInfo<VkBufferCreateInfo>(VK_STRUCTURE_TYPE_BUFFER_CREATE_INFO);
+        bufferInfo.size = spec.bytes;
+        bufferInfo.usage = spec.usage;
+        bufferInfo.sharingMode = VK_SHARING_MODE_EXCLUSIVE;
+        const std::string create = std::string("vkCreateBuffer (") + spec.name + ")";
+        FFX_DOF_VK_CHECK(fn.vkCreateBuffer(device, &bufferInfo, backend_.allocator, &buffer.buffer), create.c_str());
+        VkMemoryRequirements requirements{};
+        fn.vkGetBufferMemoryRequirements(device, buffer.buffer, &requirements);
+        memoryUsage_.totalUsageInBytes += requirements.size;
+        // Every dispatch rewrites the tile lists before it reads them; GLOBALS carries values across.
+        if (slot != FFX_DOF_UAV_BUFFER_GLOBALS) memoryUsage_.aliasableUsageInBytes += requirements.size;
+        auto allocation = makeInfo<VkMemoryAllocateInfo>(VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO);
+        allocation.allocationSize = requirements.size;
+        if (!backend_.findMemoryType(requirements.memoryTypeBits, &allocation.memoryTypeIndex)) {
+            return fail(FFX_DOF_ERROR_UNSUPPORTED, "no memory type can hold the %s buffer", spec.name);
+        }
+        const std::string allocate = std::string("vkAllocateMemory (") + spec.name + ")";
+        FFX_DOF_VK_CHECK(fn.vkAllocateMemory(device, &allocation, backend_.allocator, &buffer.memory),
+                         allocate.c_str());
+        FFX_DOF_VK_CHECK(fn.vkBindBufferMemory(device, buffer.buffer, buffer.memory, 0), "vkBindBufferMemory");
     }
-    FFX_DOF_VK_CHECK(fn.vkAllocateMemory(device, &allocation, backend_.allocator, &globalsMemory_),
-                     "vkAllocateMemory (GLOBALS)");
-    FFX_DOF_VK_CHECK(fn.vkBindBufferMemory(device, globals_, globalsMemory_, 0), "vkBindBufferMemory");
     return FFX_DOF_OK;
 }
 
@@ -310,7 +336,9 @@ void ContextVK::writeInternalDescriptors() {
     std::vector<VkDescriptorImageInfo> imageInfos;
     std::vector<VkWriteDescriptorSet> writes;
     imageInfos.reserve(sets_.size() * kPassCount * (kSampledSlotCount + kStorageImageSlotCount));
-    const VkDescriptorBufferInfo globalsInfo{globals_, 0, kGlobalsBufferBytes};
+    std::array<VkDescriptorBufferInfo, kStorageBufferSlotCount> bufferInfos{};
+    for (uint32_t slot = 0; slot < kStorageBufferSlotCount; ++slot)
+        bufferInfos[slot] = {buffers_[slot].buffer, 0, buffers_[slot].bytes};
     for (const auto& ringSlot : sets_) {
         for (uint32_t pass = 0; pass < kPassCount; ++pass) {
             const PlannedPass& planned = plan_.passes[pass];
@@ -323,14 +351,15 @@ void ContextVK::writeInternalDescriptors() {
                                                    ? plan_.sampledSlots[slot]
                                                : storageImage ? plan_.storageImageSlots[slot]
                                                               : plan_.storageBufferSlots[slot];
-                    if (!isInternalImage(target.resource) && target.resource != Resource::Globals) continue;
+                    const bool buffer = slotClass.type == VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
+                    if (!isInternalImage(target.resource) && !buffer) continue;
                     auto write = makeInfo<VkWriteDescriptorSet>(VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET);
                     write.dstSet = ringSlot[pass];
                     write.dstBinding = slotClass.base + slot;
                     write.descriptorCount = 1;
                     write.descriptorType = slotClass.type;
-                    if (target.resource == Resource::Globals) {
-                        write.pBufferInfo = &globalsInfo;
+                    if (buffer) {
+                        write.pBufferInfo = &bufferInfos[slot];
                     } else {
                         imageInfos.push_back(
                             {VK_NULL_HANDLE, internalView(target, storageImage), VK_IMAGE_LAYOUT_GENERAL});

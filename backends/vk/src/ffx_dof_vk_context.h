@@ -1,4 +1,4 @@
-// A Vulkan context: the internal images and buffer of its plan, one pipeline per pass, descriptor
+// A Vulkan context: the internal images and buffers of its plan, one pipeline per pass, descriptor
 // sets per frame in flight, the cache of engine-image views, and the recording of a dispatch.
 #pragma once
 
@@ -44,7 +44,8 @@ private:
 
     // Creation (ffx_dof_vk_context.cpp).
     FfxDofErrorCode createImages();
-    FfxDofErrorCode createGlobals();
+    // GLOBALS, TILE_LIST_ARGS and TILE_LISTS, by storage buffer slot.
+    FfxDofErrorCode createBuffers();
     FfxDofErrorCode createReadback();
     FfxDofErrorCode createPipelines();
     // One pipeline of the pass, on its layout (pipelineLayouts_[pass]).
@@ -65,8 +66,14 @@ private:
     const ContextPlan& plan_;
     std::array<InternalImage, kInternalImageCount> images_{};
     VkDeviceMemory imageMemory_ = VK_NULL_HANDLE;
-    VkBuffer globals_ = VK_NULL_HANDLE;
-    VkDeviceMemory globalsMemory_ = VK_NULL_HANDLE;
+    struct InternalBuffer {
+        VkBuffer buffer = VK_NULL_HANDLE;
+        VkDeviceMemory memory = VK_NULL_HANDLE;
+        VkDeviceSize bytes = 0;
+    };
+    std::array<InternalBuffer, kStorageBufferSlotCount> buffers_{};  // [FFX_DOF_UAV_BUFFER_*]
+    VkBuffer globals() const { return buffers_[FFX_DOF_UAV_BUFFER_GLOBALS].buffer; }
+    VkBuffer tileListArgs() const { return buffers_[FFX_DOF_UAV_BUFFER_TILE_LIST_ARGS].buffer; }
     FfxDofMemoryUsage memoryUsage_{};
     // The focus distances of the last autofocus dispatches, copied from GLOBALS for
     // ffxDofContextGetAutofocusDistance: host-visible, mapped, one float per slot of the ring.

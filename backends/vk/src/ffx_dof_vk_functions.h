@@ -55,6 +55,7 @@ namespace ffxdof::vk {
     X(vkCmdBindDescriptorSets)         \
     X(vkCmdPushConstants)              \
     X(vkCmdDispatch)                   \
+    X(vkCmdDispatchIndirect)           \
     X(vkCmdPipelineBarrier)            \
     X(vkCmdFillBuffer)                 \
     X(vkCmdCopyBuffer)                 \

@@ -99,24 +99,26 @@ void ContextVK::recordInternalBarrier(VkCommandBuffer commandBuffer) const {
         }
         fn.vkCmdPipelineBarrier(commandBuffer, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
                                 0, 0, nullptr, 0, nullptr, uint32_t(toGeneral.size()), toGeneral.data());
-        fn.vkCmdFillBuffer(commandBuffer, globals_, 0, kGlobalsBufferBytes, 0);
+        fn.vkCmdFillBuffer(commandBuffer, globals(), 0, kGlobalsBufferBytes, 0);
         auto zeroed = makeInfo<VkBufferMemoryBarrier>(VK_STRUCTURE_TYPE_BUFFER_MEMORY_BARRIER);
         zeroed.srcAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT;
         zeroed.dstAccessMask = kShaderAccess;
         zeroed.srcQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
         zeroed.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
-        zeroed.buffer = globals_;
+        zeroed.buffer = globals();
         zeroed.size = VK_WHOLE_SIZE;
         fn.vkCmdPipelineBarrier(commandBuffer, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, 0,
                                 0, nullptr, 1, &zeroed, 0, nullptr);
     } else {
         // The previous dispatch's writes of the internal resources (and its autofocus readback's read
-        // of GLOBALS) before this one's accesses.
+        // of GLOBALS, and its composite's indirect read of TILE_LIST_ARGS) before this one's accesses.
         auto previous = makeInfo<VkMemoryBarrier>(VK_STRUCTURE_TYPE_MEMORY_BARRIER);
         previous.srcAccessMask = VK_ACCESS_SHADER_WRITE_BIT;
         previous.dstAccessMask = kShaderAccess;
-        fn.vkCmdPipelineBarrier(commandBuffer, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_TRANSFER_BIT,
-                                VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, 0, 1, &previous, 0, nullptr, 0, nullptr);
+        fn.vkCmdPipelineBarrier(
+            commandBuffer,
+            VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_TRANSFER_BIT | VK_PIPELINE_STAGE_DRAW_INDIRECT_BIT,
+            VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, 0, 1, &previous, 0, nullptr, 0, nullptr);
     }
 }
 
@@ -172,6 +174,10 @@ FfxDofErrorCode ContextVK::dispatch(const DispatchPlan& dispatch) {
     // earlier pass read, since the last barrier (the plan's sets, from the shaders' reflection).
     ResourceSet writtenSinceBarrier = 0;
     ResourceSet readSinceBarrier = 0;
+    // Every barrier also covers the indirect stage where a pass is dispatched indirectly: dilate writes
+    // the composite's dispatch arguments, and the barrier before the blur is the one after dilate.
+    bool indirect = false;
+    for (const PlannedPass& planned : plan_.passes) indirect = indirect || planned.indirect != 0;
     for (uint32_t pass = 0; pass < kPassCount; ++pass) {
         if (!dispatch.runs[pass]) {
             // Not asked for (autofocus without pAutofocus): its timestamp still comes, so indices stay.
@@ -182,25 +188,50 @@ FfxDofErrorCode ContextVK::dispatch(const DispatchPlan& dispatch) {
             continue;
         }
         const PlannedPass& planned = plan_.passes[pass];
-        const ResourceSet touched = planned.reads | planned.writes;
+        const ResourceSet touched = planned.reads | planned.writes | planned.indirect;
         if ((touched & writtenSinceBarrier) || (planned.writes & readSinceBarrier)) {
             auto between = makeInfo<VkMemoryBarrier>(VK_STRUCTURE_TYPE_MEMORY_BARRIER);
             between.srcAccessMask = VK_ACCESS_SHADER_WRITE_BIT;
-            between.dstAccessMask = kShaderAccess;
-            fn.vkCmdPipelineBarrier(commandBuffer, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
-                                    VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, 0, 1, &between, 0, nullptr, 0, nullptr);
+            between.dstAccessMask =
+                kShaderAccess | (indirect ? VkAccessFlags(VK_ACCESS_INDIRECT_COMMAND_READ_BIT) : 0u);
+            const VkPipelineStageFlags dstStages =
+                VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT |
+                (indirect ? VkPipelineStageFlags(VK_PIPELINE_STAGE_DRAW_INDIRECT_BIT) : 0u);
+            fn.vkCmdPipelineBarrier(commandBuffer, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, dstStages, 0, 1, &between, 0,
+                                    nullptr, 0, nullptr);
             writtenSinceBarrier = 0;
             readSinceBarrier = 0;
         }
         writtenSinceBarrier |= planned.writes;
-        readSinceBarrier |= planned.reads;
+        readSinceBarrier |= planned.reads | planned.indirect;
 
-        fn.vkCmdBindPipeline(commandBuffer, VK_PIPELINE_BIND_POINT_COMPUTE, pipelines_[pass][dispatch.variants[pass]]);
         fn.vkCmdBindDescriptorSets(commandBuffer, VK_PIPELINE_BIND_POINT_COMPUTE, pipelineLayouts_[pass], 0, 1,
                                    &sets_[ringSlot][pass], 0, nullptr);
         fn.vkCmdPushConstants(commandBuffer, pipelineLayouts_[pass], VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof(constants),
                               &constants);
-        fn.vkCmdDispatch(commandBuffer, planned.groups.x, planned.groups.y, planned.groups.z);
+        if (planned.perTileList) {
+            // Every variant, over the tiles dilate listed for it (ffx_dof_resources.h, TILE_LISTS).
+            for (uint32_t v = 0; v < planned.variantCount; ++v) {
+                if (v > 0 && dispatch.outputIsColor) {
+                    // In place a composite workgroup reads the input only within its own tile, which no other
+                    // workgroup writes (ffx_dof_composite.h), but synchronization validation follows whole
+                    // images: the earlier lists' writes before the next list's reads.
+                    auto written = makeInfo<VkMemoryBarrier>(VK_STRUCTURE_TYPE_MEMORY_BARRIER);
+                    written.srcAccessMask = VK_ACCESS_SHADER_WRITE_BIT;
+                    written.dstAccessMask = kShaderAccess;
+                    fn.vkCmdPipelineBarrier(commandBuffer, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
+                                            VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, 0, 1, &written, 0, nullptr, 0,
+                                            nullptr);
+                }
+                fn.vkCmdBindPipeline(commandBuffer, VK_PIPELINE_BIND_POINT_COMPUTE, pipelines_[pass][v]);
+                fn.vkCmdDispatchIndirect(commandBuffer, tileListArgs(),
+                                         tileListArgsOffset(planned.variants[v].dispatchValue));
+            }
+        } else {
+            fn.vkCmdBindPipeline(commandBuffer, VK_PIPELINE_BIND_POINT_COMPUTE,
+                                 pipelines_[pass][dispatch.variants[pass]]);
+            fn.vkCmdDispatch(commandBuffer, planned.groups.x, planned.groups.y, planned.groups.z);
+        }
         if (timed) {
             fn.vkCmdWriteTimestamp(commandBuffer, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, queryPool_,
                                    firstQuery_ + 1 + pass);
@@ -224,7 +255,7 @@ void ContextVK::recordFocusReadback(VkCommandBuffer commandBuffer, uint32_t slot
     fn.vkCmdPipelineBarrier(commandBuffer, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT, 0, 1,
                             &written, 0, nullptr, 0, nullptr);
     const VkBufferCopy region{FFX_DOF_GLOBALS_FOCUS_DISTANCE * sizeof(uint32_t), slot * sizeof(float), sizeof(float)};
-    fn.vkCmdCopyBuffer(commandBuffer, globals_, readback_, 1, &region);
+    fn.vkCmdCopyBuffer(commandBuffer, globals(), readback_, 1, &region);
     auto toHost = makeInfo<VkMemoryBarrier>(VK_STRUCTURE_TYPE_MEMORY_BARRIER);
     toHost.srcAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT;
     toHost.dstAccessMask = VK_ACCESS_HOST_READ_BIT;
