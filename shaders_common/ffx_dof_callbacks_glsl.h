@@ -202,14 +202,12 @@ FFX_DOF_BINDING_UAV_BUFFER(FFX_DOF_UAV_BUFFER_TILE_LIST_ARGS) buffer FfxDofTileL
 {
     uint ffxDofTileListArgWords[FFX_DOF_TILE_LIST_COUNT * FFX_DOF_TILE_LIST_ARGS_WORDS];
 };
-void ffxDofResetTileLists()
+// The dispatch arguments of tile list `list` (FFX_DOF_TILE_LIST_ARGS_WORDS words apart).
+void ffxDofStoreTileListArgs(FfxUInt32 list, FfxUInt32x3 groupCounts)
 {
-    for (uint list = 0u; list < FFX_DOF_TILE_LIST_COUNT; ++list)
-    {
-        ffxDofTileListArgWords[list * FFX_DOF_TILE_LIST_ARGS_WORDS + 0u] = 0u;
-        ffxDofTileListArgWords[list * FFX_DOF_TILE_LIST_ARGS_WORDS + 1u] = 1u;
-        ffxDofTileListArgWords[list * FFX_DOF_TILE_LIST_ARGS_WORDS + 2u] = 1u;
-    }
+    ffxDofTileListArgWords[list * FFX_DOF_TILE_LIST_ARGS_WORDS + 0u] = groupCounts.x;
+    ffxDofTileListArgWords[list * FFX_DOF_TILE_LIST_ARGS_WORDS + 1u] = groupCounts.y;
+    ffxDofTileListArgWords[list * FFX_DOF_TILE_LIST_ARGS_WORDS + 2u] = groupCounts.z;
 }
 #endif
 
@@ -217,17 +215,16 @@ void ffxDofResetTileLists()
 FFX_DOF_BINDING_UAV_BUFFER(FFX_DOF_UAV_BUFFER_TILE_LISTS) buffer FfxDofTileLists { uint ffxDofTileListWords[]; };
 #endif
 #if FFX_DOF_USES_RW_TILE_LISTS
-void ffxDofAppendToTileList(FfxUInt32 list, FfxUInt32x2 tile, FfxUInt32 tilesPerList)
+void ffxDofAppendToTileList(FfxUInt32 list, FfxUInt32 packedTile, FfxUInt32 tilesPerList)
 {
     uint index = atomicAdd(ffxDofTileListArgWords[list * FFX_DOF_TILE_LIST_ARGS_WORDS], 1u);
-    ffxDofTileListWords[list * tilesPerList + index] = tile.x | (tile.y << 16u);
+    ffxDofTileListWords[list * tilesPerList + index] = packedTile;
 }
 #endif
 #if FFX_DOF_USES_TILE_LISTS
-FfxUInt32x2 ffxDofLoadListedTile(FfxUInt32 list, FfxUInt32 index, FfxUInt32 tilesPerList)
+FfxUInt32 ffxDofLoadListedTile(FfxUInt32 list, FfxUInt32 index, FfxUInt32 tilesPerList)
 {
-    uint packed = ffxDofTileListWords[list * tilesPerList + index];
-    return FfxUInt32x2(packed & 0xffffu, packed >> 16u);
+    return ffxDofTileListWords[list * tilesPerList + index];
 }
 #endif
 

@@ -226,14 +226,12 @@ void ffxDofStoreFocus(FfxFloat32 distance, FfxFloat32 cocScale, FfxFloat32 cocBi
 #if FFX_DOF_USES_RW_TILE_LIST_ARGS
 FFX_DOF_BINDING_UAV_BUFFER(FFX_DOF_UAV_BUFFER_TILE_LIST_ARGS)
 RWStructuredBuffer<uint> ffxDofTileListArgs : FFX_DOF_HLSL_BUFFER_REGISTER(FFX_DOF_UAV_BUFFER_TILE_LIST_ARGS);
-void ffxDofResetTileLists()
+// The dispatch arguments of tile list `list` (FFX_DOF_TILE_LIST_ARGS_WORDS words apart).
+void ffxDofStoreTileListArgs(FfxUInt32 list, FfxUInt32x3 groupCounts)
 {
-    for (uint list = 0u; list < FFX_DOF_TILE_LIST_COUNT; ++list)
-    {
-        ffxDofTileListArgs[list * FFX_DOF_TILE_LIST_ARGS_WORDS + 0u] = 0u;
-        ffxDofTileListArgs[list * FFX_DOF_TILE_LIST_ARGS_WORDS + 1u] = 1u;
-        ffxDofTileListArgs[list * FFX_DOF_TILE_LIST_ARGS_WORDS + 2u] = 1u;
-    }
+    ffxDofTileListArgs[list * FFX_DOF_TILE_LIST_ARGS_WORDS + 0u] = groupCounts.x;
+    ffxDofTileListArgs[list * FFX_DOF_TILE_LIST_ARGS_WORDS + 1u] = groupCounts.y;
+    ffxDofTileListArgs[list * FFX_DOF_TILE_LIST_ARGS_WORDS + 2u] = groupCounts.z;
 }
 #endif
 
@@ -242,18 +240,17 @@ FFX_DOF_BINDING_UAV_BUFFER(FFX_DOF_UAV_BUFFER_TILE_LISTS)
 RWStructuredBuffer<uint> ffxDofTileLists : FFX_DOF_HLSL_BUFFER_REGISTER(FFX_DOF_UAV_BUFFER_TILE_LISTS);
 #endif
 #if FFX_DOF_USES_RW_TILE_LISTS
-void ffxDofAppendToTileList(FfxUInt32 list, FfxUInt32x2 tile, FfxUInt32 tilesPerList)
+void ffxDofAppendToTileList(FfxUInt32 list, FfxUInt32 packedTile, FfxUInt32 tilesPerList)
 {
     uint index;
     InterlockedAdd(ffxDofTileListArgs[list * FFX_DOF_TILE_LIST_ARGS_WORDS], 1u, index);
-    ffxDofTileLists[list * tilesPerList + index] = tile.x | (tile.y << 16u);
+    ffxDofTileLists[list * tilesPerList + index] = packedTile;
 }
 #endif
 #if FFX_DOF_USES_TILE_LISTS
-FfxUInt32x2 ffxDofLoadListedTile(FfxUInt32 list, FfxUInt32 index, FfxUInt32 tilesPerList)
+FfxUInt32 ffxDofLoadListedTile(FfxUInt32 list, FfxUInt32 index, FfxUInt32 tilesPerList)
 {
-    uint packed = ffxDofTileLists[list * tilesPerList + index];
-    return FfxUInt32x2(packed & 0xffffu, packed >> 16u);
+    return ffxDofTileLists[list * tilesPerList + index];
 }
 #endif
 

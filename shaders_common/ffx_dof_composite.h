@@ -50,7 +50,7 @@ FfxDofFloat3 ffxDofLoadFarColor(FfxInt32x2 texel);
 FfxFloat32x2 ffxDofLoadLayerAlpha(FfxInt32x2 texel);
 void ffxDofStoreOutput(FfxUInt32x2 pixel, FfxFloat32x4 color);
 FfxFloat32 ffxDofLoadColorScale();
-FfxUInt32x2 ffxDofLoadListedTile(FfxUInt32 list, FfxUInt32 index, FfxUInt32 tilesPerList);
+FfxUInt32 ffxDofLoadListedTile(FfxUInt32 list, FfxUInt32 index, FfxUInt32 tilesPerList);
 #endif
 
 // ---- Tuning constants -------------------------------------------------------------------------------
@@ -554,8 +554,8 @@ FFX_DOF_INLINE FfxBoolean ffxDofComposePixel(FfxUInt32x2 pixel, FfxInt32x2 filte
 FFX_DOF_INLINE void ffxDofComposite(FfxUInt32 compositeClass, FfxUInt32 listIndex, FfxUInt32 localIndex)
 {
     FfxDofConstants constants = ffxDofGetFocusedConstants();
-    FfxUInt32x2 groupId =
-        ffxDofLoadListedTile(compositeClass, listIndex, constants.tileCount.x * constants.tileCount.y);
+    FfxUInt32x2 groupId = ffxDofUnpackListedTile(
+        ffxDofLoadListedTile(compositeClass, listIndex, constants.tileCount.x * constants.tileCount.y));
     FfxUInt32 extent = FfxUInt32(FFX_DOF_COMPOSITE_GROUP_EXTENT);
     FfxUInt32x2 quad = groupId * extent + ffxDofLocalCoord(localIndex) * 2u;
     if (compositeClass == FfxUInt32(FFX_DOF_COMPOSITE_CLASS_COPY))

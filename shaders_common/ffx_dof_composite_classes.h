@@ -33,4 +33,8 @@ FFX_DOF_INLINE FfxUInt32 ffxDofCompositeTileClass(FfxFloat32x2 tile, FfxFloat32 
     return FfxUInt32(FFX_DOF_COMPOSITE_CLASS_LAYERS);
 }
 
+// A tile as one word of TILE_LISTS, and back (tile coordinates stay below 65536).
+FFX_DOF_INLINE FfxUInt32 ffxDofPackListedTile(FfxUInt32x2 tile) { return tile.x | (tile.y << 16u); }
+FFX_DOF_INLINE FfxUInt32x2 ffxDofUnpackListedTile(FfxUInt32 word) { return FfxUInt32x2(word & 0xffffu, word >> 16u); }
+
 #endif  // FFX_DOF_COMPOSITE_CLASSES_H

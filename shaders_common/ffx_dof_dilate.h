@@ -23,7 +23,7 @@ FfxFloat32 ffxDofLoadGlobalMaxRadius();
 FfxFloat32x2 ffxDofLoadTile(FfxUInt32x2 tile);
 void ffxDofStoreDilatedTile(FfxUInt32x2 tile, FfxFloat32x4 farNearFootprint);
 void ffxDofResetColorPeak();
-void ffxDofAppendToTileList(FfxUInt32 list, FfxUInt32x2 tile, FfxUInt32 tilesPerList);
+void ffxDofAppendToTileList(FfxUInt32 list, FfxUInt32 packedTile, FfxUInt32 tilesPerList);
 #endif
 
 // ---- Tile reach -------------------------------------------------------------------------------------
@@ -147,7 +147,7 @@ FFX_DOF_INLINE void ffxDofDilate(FfxUInt32x2 groupId, FfxUInt32 localIndex)
     ffxDofStoreDilatedTile(tile, FfxFloat32x4(farNear, ffxDofFootprintRange(tile, constants.tileCount, footprint)));
     FfxUInt32 compositeClass = ffxDofCompositeTileClass(
         ffxDofLoadTile(tile), farNear.y, ffxDofSurveyTilesAround(tile, constants.tileCount).drawsSmallSources);
-    ffxDofAppendToTileList(compositeClass, tile, constants.tileCount.x * constants.tileCount.y);
+    ffxDofAppendToTileList(compositeClass, ffxDofPackListedTile(tile), constants.tileCount.x * constants.tileCount.y);
 }
 
 #endif  // FFX_DOF_DILATE_H

@@ -20,7 +20,7 @@ FfxFloat32x4 ffxDofLoadInputColor(FfxUInt32x2 pixel);
 void ffxDofAtomicMaxColorPeak(FfxFloat32 peak);
 void ffxDofStoreTile(FfxUInt32x2 tile, FfxFloat32x2 cocMinMax, FfxFloat32 colorPeak);
 void ffxDofAtomicMaxGlobalRadius(FfxFloat32 radius);
-void ffxDofResetTileLists();
+void ffxDofStoreTileListArgs(FfxUInt32 list, FfxUInt32x3 groupCounts);
 #endif
 
 // ---- Depth order ------------------------------------------------------------------------------------
@@ -83,12 +83,19 @@ FFX_DOF_INLINE FfxFloat32 ffxDofWaveFarthestDepth(FfxFloat32 depth)
 // needs a single barrier: a barrier is cheap on a GPU but costs about as much as the whole pass's
 // memory traffic on a CPU implementation such as lavapipe, where the group's waves run as coroutines
 // (a log2(64)-step tree in group-shared memory, one barrier per step, made this pass 2.5x a copy pass).
+// Every tile list of the composite empty (TILE_LIST_ARGS): no workgroups, until dilate counts its tiles.
+FFX_DOF_INLINE void ffxDofEmptyTileLists()
+{
+    for (FfxUInt32 list = 0u; list < FfxUInt32(FFX_DOF_TILE_LIST_COUNT); ++list)
+        ffxDofStoreTileListArgs(list, FfxUInt32x3(0u, 1u, 1u));
+}
+
 FFX_DOF_INLINE void ffxDofDownsampleDepth(FfxUInt32x2 groupId, FfxUInt32 localIndex)
 {
     FfxDofConstants constants = ffxDofGetFocusedConstants();
     // Empty lists for dilate (the previous dispatch's composite has read them).
     if (groupId.x == 0u && groupId.y == 0u && localIndex == 0u)
-        ffxDofResetTileLists();
+        ffxDofEmptyTileLists();
     FfxUInt32x2 quad = groupId * FfxUInt32(FFX_DOF_DOWNSAMPLE_DEPTH_GROUP_EXTENT) + ffxDofLocalCoord(localIndex) * 2u;
     FfxUInt32x2 lastPixel = constants.fullSize - FfxUInt32x2(1u, 1u);
 

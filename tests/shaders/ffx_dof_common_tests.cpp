@@ -1035,6 +1035,11 @@ TEST_CASE("Composite classes: a copy where every pixel keeps its input, full res
     // Every pixel a copy tile holds keeps its input in the full composition: in focus, no near opacity.
     CHECK(ffxDofTileKeepsInput(inFocus, 0.0f));
     CHECK_FALSE(ffxDofTileKeepsInput(inFocus, FFX_DOF_NEAR_THRESHOLD));
+    // A listed tile comes back as it went in, up to the largest tile coordinate of a 16-bit field.
+    for (const FfxUInt32x2 tile :
+         {FfxUInt32x2(0u, 0u), FfxUInt32x2(119u, 67u), FfxUInt32x2(65535u, 1u), FfxUInt32x2(3u, 65535u)}) {
+        CHECK(ffxDofUnpackListedTile(ffxDofPackListedTile(tile)) == tile);
+    }
 }
 
 TEST_CASE("sRGB encoding", "[composite]") {

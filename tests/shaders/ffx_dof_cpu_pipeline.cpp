@@ -223,24 +223,21 @@ FfxDofFloat3 ffxDofLoadFarColor(FfxInt32x2 t) { return g_state->farColor.at(t.x,
 FfxFloat32x2 ffxDofLoadLayerAlpha(FfxInt32x2 t) { return g_state->layerAlpha.at(t.x, t.y); }
 void ffxDofStoreOutput(FfxUInt32x2 p, FfxFloat32x4 c) { g_state->output.store(p.x, p.y, c); }
 void ffxDofResetGlobals() { g_state->globals[FFX_DOF_GLOBALS_MAX_RADIUS].store(0); }
-void ffxDofResetTileLists() {
-    for (uint32_t list = 0; list < FFX_DOF_TILE_LIST_COUNT; ++list) {
-        g_state->tileListArgs[list * FFX_DOF_TILE_LIST_ARGS_WORDS + 0].store(0);
-        g_state->tileListArgs[list * FFX_DOF_TILE_LIST_ARGS_WORDS + 1].store(1);
-        g_state->tileListArgs[list * FFX_DOF_TILE_LIST_ARGS_WORDS + 2].store(1);
-    }
+void ffxDofStoreTileListArgs(FfxUInt32 list, FfxUInt32x3 groupCounts) {
+    if (list >= FFX_DOF_TILE_LIST_COUNT) throw std::out_of_range("tile list");
+    for (uint32_t w = 0; w < 3; ++w)
+        g_state->tileListArgs[list * FFX_DOF_TILE_LIST_ARGS_WORDS + w].store(groupCounts[w]);
 }
-void ffxDofAppendToTileList(FfxUInt32 list, FfxUInt32x2 tile, FfxUInt32 tilesPerList) {
+void ffxDofAppendToTileList(FfxUInt32 list, FfxUInt32 packedTile, FfxUInt32 tilesPerList) {
     if (list >= FFX_DOF_TILE_LIST_COUNT) throw std::out_of_range("tile list");
     const uint32_t index = g_state->tileListArgs[list * FFX_DOF_TILE_LIST_ARGS_WORDS].fetch_add(1);
     if (index >= tilesPerList) throw std::out_of_range("tile list full");
-    g_state->tileLists.at(size_t(list) * tilesPerList + index) = tile.x | (tile.y << 16u);
+    g_state->tileLists.at(size_t(list) * tilesPerList + index) = packedTile;
 }
-FfxUInt32x2 ffxDofLoadListedTile(FfxUInt32 list, FfxUInt32 index, FfxUInt32 tilesPerList) {
+FfxUInt32 ffxDofLoadListedTile(FfxUInt32 list, FfxUInt32 index, FfxUInt32 tilesPerList) {
     if (index >= g_state->tileListArgs[list * FFX_DOF_TILE_LIST_ARGS_WORDS].load())
         throw std::out_of_range("tile list read past its count");
-    const uint32_t packed = g_state->tileLists.at(size_t(list) * tilesPerList + index);
-    return FfxUInt32x2(packed & 0xffffu, packed >> 16u);
+    return g_state->tileLists.at(size_t(list) * tilesPerList + index);
 }
 
 namespace ffxdoftest {
