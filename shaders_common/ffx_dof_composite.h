@@ -5,8 +5,9 @@
 // dilate listed under that class (TILE_LISTS): no workgroup runs for a tile another class composes.
 //   1. A tile that is in focus and that no near-field blur reaches (class COPY) is copied (with
 //      FFX_DOF_OPTION_OUTPUT_PRE_INIT not dispatched at all): exactly what the per-pixel path would do.
-//   2. The group loads the 12 x 12 half-res texels around the tile and post-filters the 10 x 10 that
-//      bilinear upsampling touches, once per texel: luminance of near and far color clamped to the
+//   2. The group loads the 12 x 12 half-res texels around the tile (with a summary per texel that the
+//      post-filter reads of each neighbour in one read) and post-filters the 10 x 10 that bilinear
+//      upsampling touches, once per texel: luminance of near and far color clamped to the
 //      range of the 8 neighbours (an outlier filter that keeps edges and energy),
 //      3x3 average of near opacity, invalid near texels filled from the most opaque neighbour.
 //   3. Per pixel: CoC from depth (32-bit); in focus and not covered by the near field -> the input,
@@ -180,9 +181,15 @@ FFX_DOF_INLINE FfxFloat32 ffxDofFarBlend(FfxFloat32 absCoc, FfxFloat32 farValidi
 #define FFX_DOF_RAW_SIDE 12       // half-res texels loaded per side: tile + 2 each side
 #define FFX_DOF_FILTERED_SIDE 10  // half-res texels filtered per side: tile + 1 each side
 
-FFX_DOF_GROUPSHARED FfxDofFloat3 ffxDofSharedRawNear[FFX_DOF_RAW_SIDE * FFX_DOF_RAW_SIDE];
-FFX_DOF_GROUPSHARED FfxDofFloat3 ffxDofSharedRawFar[FFX_DOF_RAW_SIDE * FFX_DOF_RAW_SIDE];
-FFX_DOF_GROUPSHARED FfxFloat32x2 ffxDofSharedRawAlpha[FFX_DOF_RAW_SIDE * FFX_DOF_RAW_SIDE];
+// The raw near and far colours as 16-bit floats, whatever the permutation's precision: exact, since
+// NEAR_COLOR and FAR_COLOR are B10G11R11 floats (5-bit exponents like a half's, 6 or 5 mantissa bits),
+// and 8 bytes instead of 12 per colour in 32-bit keep the full-resolution class's group-shared memory
+// under the 16 KiB that every Vulkan device has, with the summaries below.
+FFX_DOF_GROUPSHARED FfxUInt32x2 ffxDofSharedRawNear[FFX_DOF_RAW_SIDE * FFX_DOF_RAW_SIDE];
+FFX_DOF_GROUPSHARED FfxUInt32x2 ffxDofSharedRawFar[FFX_DOF_RAW_SIDE * FFX_DOF_RAW_SIDE];
+// Per raw texel what the post-filter reads of each of its neighbours, in one read: the luminance of its
+// near and far colour, its near opacity and far validity.
+FFX_DOF_GROUPSHARED FfxFloat32x4 ffxDofSharedRawSummary[FFX_DOF_RAW_SIDE * FFX_DOF_RAW_SIDE];
 FFX_DOF_GROUPSHARED FfxDofFloat3 ffxDofSharedNear[FFX_DOF_FILTERED_SIDE * FFX_DOF_FILTERED_SIDE];
 FFX_DOF_GROUPSHARED FfxDofFloat3 ffxDofSharedFar[FFX_DOF_FILTERED_SIDE * FFX_DOF_FILTERED_SIDE];
 FFX_DOF_GROUPSHARED FfxFloat32x2 ffxDofSharedAlpha[FFX_DOF_FILTERED_SIDE * FFX_DOF_FILTERED_SIDE];
@@ -242,15 +249,27 @@ FFX_DOF_INLINE FfxInt32x2 ffxDofClampHalfTexel(FfxInt32x2 texel, FfxUInt32x2 hal
     return clamp(texel, FfxInt32x2(0, 0), FfxInt32x2(halfSize) - FfxInt32x2(1, 1));
 }
 
+FFX_DOF_INLINE FfxUInt32x2 ffxDofPackRawColor(FfxDofFloat3 color)
+{
+    return FfxUInt32x2(ffxDofPackHalf2(FfxFloat32x2(FfxFloat32(color.x), FfxFloat32(color.y))),
+                       ffxDofPackHalf2(FfxFloat32x2(FfxFloat32(color.z), 0.0f)));
+}
+FFX_DOF_INLINE FfxDofFloat3 ffxDofUnpackRawColor(FfxUInt32x2 packed)
+{
+    FfxFloat32x2 redGreen = ffxDofUnpackHalf2(packed.x);
+    return FfxDofFloat3(FfxDofFloat(redGreen.x), FfxDofFloat(redGreen.y), FfxDofFloat(ffxDofUnpackHalf2(packed.y).x));
+}
+
 // Post-filter of filtered texel `index` (raw texel (x + 1, y + 1)).
 FFX_DOF_INLINE void ffxDofPostFilterTexel(FfxUInt32 index)
 {
     FfxUInt32 x = index % FfxUInt32(FFX_DOF_FILTERED_SIDE);
     FfxUInt32 y = index / FfxUInt32(FFX_DOF_FILTERED_SIDE);
     FfxUInt32 center = (y + 1u) * FfxUInt32(FFX_DOF_RAW_SIDE) + x + 1u;
-    FfxFloat32x2 centerAlpha = ffxDofSharedRawAlpha[center];
-    FfxFloat32 nearCenterLuminance = ffxDofLuminance(ffxDofSharedRawNear[center]);
-    FfxFloat32 farCenterLuminance = ffxDofLuminance(ffxDofSharedRawFar[center]);
+    FfxFloat32x4 centerSummary = ffxDofSharedRawSummary[center];
+    FfxFloat32x2 centerAlpha = FfxFloat32x2(centerSummary.z, centerSummary.w);
+    FfxFloat32 nearCenterLuminance = centerSummary.x;
+    FfxFloat32 farCenterLuminance = centerSummary.y;
     FfxFloat32x2 nearRange = FfxFloat32x2(FFX_DOF_FLOAT32_MAX, 0.0f);
     FfxFloat32x2 farRange = FfxFloat32x2(FFX_DOF_FLOAT32_MAX, 0.0f);
     FfxFloat32 opacitySum = 0.0f;
@@ -260,26 +279,24 @@ FFX_DOF_INLINE void ffxDofPostFilterTexel(FfxUInt32 index)
     for (FfxUInt32 k = 0u; k < 9u; ++k)
     {
         FfxUInt32 raw = (y + k / 3u) * FfxUInt32(FFX_DOF_RAW_SIDE) + x + k % 3u;
-        FfxFloat32x2 alpha = ffxDofSharedRawAlpha[raw];
+        FfxFloat32x4 summary = ffxDofSharedRawSummary[raw];
         // Texels without a value take the centre's luminance so they do not widen the range; the
         // centre itself is not a neighbour.
-        FfxFloat32 nearLuminance =
-            alpha.x > 0.0f && k != 4u ? ffxDofLuminance(ffxDofSharedRawNear[raw]) : nearCenterLuminance;
-        FfxFloat32 farLuminance =
-            alpha.y > 0.0f && k != 4u ? ffxDofLuminance(ffxDofSharedRawFar[raw]) : farCenterLuminance;
+        FfxFloat32 nearLuminance = summary.z > 0.0f && k != 4u ? summary.x : nearCenterLuminance;
+        FfxFloat32 farLuminance = summary.w > 0.0f && k != 4u ? summary.y : farCenterLuminance;
         nearRange = FfxFloat32x2(min(nearRange.x, nearLuminance), max(nearRange.y, nearLuminance));
         farRange = FfxFloat32x2(min(farRange.x, farLuminance), max(farRange.y, farLuminance));
-        opacitySum += alpha.x;
-        if (alpha.x > bestOpacity)
+        opacitySum += summary.z;
+        if (summary.z > bestOpacity)
         {
-            bestOpacity = alpha.x;
+            bestOpacity = summary.z;
             bestIndex = raw;
         }
     }
-    FfxDofFloat3 nearColor = ffxDofSharedRawNear[centerAlpha.x > 0.0f ? center : bestIndex];
+    FfxDofFloat3 nearColor = ffxDofUnpackRawColor(ffxDofSharedRawNear[centerAlpha.x > 0.0f ? center : bestIndex]);
     if (centerAlpha.x > 0.0f)
         nearColor = nearColor * FfxDofFloat(ffxDofOutlierGain(nearCenterLuminance, nearRange.x, nearRange.y));
-    FfxDofFloat3 farColor = ffxDofSharedRawFar[center];
+    FfxDofFloat3 farColor = ffxDofUnpackRawColor(ffxDofSharedRawFar[center]);
     if (centerAlpha.y > 0.0f)
         farColor = farColor * FfxDofFloat(ffxDofOutlierGain(farCenterLuminance, farRange.x, farRange.y));
     ffxDofSharedNear[index] = nearColor;
@@ -446,26 +463,27 @@ FFX_DOF_INLINE FfxFloat32 ffxDofOwnSurfaceLayerShare(FfxFloat32 absCoc)
                           (1.0f / FFX_DOF_OWN_SURFACE_FADE));
 }
 
-// The composed color of one full-res pixel whose input is `color` and fixed 3x3 blur `fixedBlur`;
-// `filteredOrigin` is the half-res texel at filtered index 0; `ownSurfaceTile` whether the group loaded
-// the full-res neighbourhood from `ownSurfaceOrigin` (ffxDofTileGathersOwnSurface). Returns false (and leaves `color`
-// alone) when the pixel keeps its input value.
-FFX_DOF_INLINE FfxBoolean ffxDofComposePixel(FfxUInt32x2 pixel, FfxInt32x2 filteredOrigin, FfxDofConstants constants,
-                                             FfxFloat32x3 fixedBlur, FfxBoolean ownSurfaceTile,
-                                             FfxBoolean smallSourceTile, FfxInt32x2 ownSurfaceOrigin,
-                                             FFX_DOF_INOUT(FfxFloat32x4) color)
+// The filtered half-res texels around a full-res pixel (top-left, top-right, bottom-left, bottom-right), as
+// its upsampling reads them: post-filtered near and far colour, (near opacity, far validity) and radius.
+struct FfxDofUpsampleTaps
+{
+    FfxFloat32x2 alpha[4];
+    FfxDofFloat3 nearColor[4];
+    FfxDofFloat3 farColor[4];
+    FfxFloat32 coc[4];
+};
+
+// The composed color of one full-res pixel whose input is `color` and fixed 3x3 blur `fixedBlur`, upsampled
+// from `taps` with the bilinear `fraction` (ffxDofUpsamplePosition); `ownSurfaceTile` whether the group
+// loaded the full-res neighbourhood from `ownSurfaceOrigin` (ffxDofTileGathersOwnSurface). Returns false
+// (and leaves `color` alone) when the pixel keeps its input value.
+FFX_DOF_INLINE FfxBoolean ffxDofComposePixel(FfxUInt32x2 pixel, FfxDofUpsampleTaps taps, FfxFloat32x2 fraction,
+                                             FfxDofConstants constants, FfxFloat32x3 fixedBlur,
+                                             FfxBoolean ownSurfaceTile, FfxBoolean smallSourceTile,
+                                             FfxInt32x2 ownSurfaceOrigin, FFX_DOF_INOUT(FfxFloat32x4) color)
 {
     FfxFloat32 coc =
         ffxDofCocFromDepth(ffxDofLoadInputDepth(pixel), constants.cocScale, constants.cocBias, constants.cocLimit);
-    FfxInt32x2 topLeft;
-    FfxFloat32x2 fraction = ffxDofUpsamplePosition(pixel, topLeft);
-    FfxInt32x2 local = topLeft - filteredOrigin;
-    FfxUInt32 index00 = FfxUInt32(local.y * FFX_DOF_FILTERED_SIDE + local.x);
-    FfxUInt32 indices[4];
-    indices[0] = index00;
-    indices[1] = index00 + 1u;
-    indices[2] = index00 + FfxUInt32(FFX_DOF_FILTERED_SIDE);
-    indices[3] = index00 + FfxUInt32(FFX_DOF_FILTERED_SIDE) + 1u;
     FfxFloat32 bilinear[4];
     bilinear[0] = (1.0f - fraction.x) * (1.0f - fraction.y);
     bilinear[1] = fraction.x * (1.0f - fraction.y);
@@ -481,12 +499,12 @@ FFX_DOF_INLINE FfxBoolean ffxDofComposePixel(FfxUInt32x2 pixel, FfxInt32x2 filte
     FFX_DOF_UNROLL
     for (FfxUInt32 k = 0u; k < 4u; ++k)
     {
-        FfxFloat32x2 alpha = ffxDofSharedAlpha[indices[k]];
+        FfxFloat32x2 alpha = taps.alpha[k];
         nearValid = nearValid && alpha.x > 0.0f;
         nearOpacity += alpha.x * bilinear[k];
-        nearColor += ffxDofToFloat32x3(ffxDofSharedNear[indices[k]]) * bilinear[k];
-        FfxFloat32 tapWeight = bilinear[k] * ffxDofUpsampleCocWeight(ffxDofSharedCoc[indices[k]], coc);
-        farSum += ffxDofToFloat32x3(ffxDofSharedFar[indices[k]]) * (tapWeight * alpha.y);
+        nearColor += ffxDofToFloat32x3(taps.nearColor[k]) * bilinear[k];
+        FfxFloat32 tapWeight = bilinear[k] * ffxDofUpsampleCocWeight(taps.coc[k], coc);
+        farSum += ffxDofToFloat32x3(taps.farColor[k]) * (tapWeight * alpha.y);
         farWeight += tapWeight * alpha.y;
         farTotal += tapWeight;
     }
@@ -600,9 +618,13 @@ FFX_DOF_INLINE void ffxDofComposite(FfxUInt32 compositeClass, FfxUInt32 listInde
                                                     FfxInt32x2(FfxInt32(index % FfxUInt32(FFX_DOF_RAW_SIDE)),
                                                                FfxInt32(index / FfxUInt32(FFX_DOF_RAW_SIDE))),
                                                 constants.halfSize);
-        ffxDofSharedRawNear[index] = ffxDofLoadNearColor(texel);
-        ffxDofSharedRawFar[index] = ffxDofLoadFarColor(texel);
-        ffxDofSharedRawAlpha[index] = ffxDofLoadLayerAlpha(texel);
+        FfxDofFloat3 nearColor = ffxDofLoadNearColor(texel);
+        FfxDofFloat3 farColor = ffxDofLoadFarColor(texel);
+        FfxFloat32x2 alpha = ffxDofLoadLayerAlpha(texel);
+        ffxDofSharedRawNear[index] = ffxDofPackRawColor(nearColor);
+        ffxDofSharedRawFar[index] = ffxDofPackRawColor(farColor);
+        ffxDofSharedRawSummary[index] =
+            FfxFloat32x4(ffxDofLuminance(nearColor), ffxDofLuminance(farColor), alpha.x, alpha.y);
     }
     ffxDofGroupBarrier();
     // The full-res neighbourhood of the own-surface gather, after the barrier above: in place, the
@@ -662,6 +684,26 @@ FFX_DOF_INLINE void ffxDofComposite(FfxUInt32 compositeClass, FfxUInt32 listInde
             inputColors[k] = neighbourhood.color[(inQuad.y + 1u) * 4u + inQuad.x + 1u];
         }
     }
+    // The quad's four pixels upsample from the 3 x 3 filtered texels from the top-left neighbour of the
+    // quad's own half-res texel (filtered index = its local texel, the filtered side starting one texel
+    // before the tile): an even pixel reads its 2 x 2 from block offset 0 with fraction 0.75, an odd one
+    // from offset 1 with 0.25 (ffxDofUpsamplePosition), per axis. Each texel is read once for the quad
+    // instead of once per pixel that reads it (36 group-shared reads instead of 64).
+    FfxUInt32x2 quadTexel = ffxDofLocalCoord(localIndex);
+    FfxUInt32 blockIndex = quadTexel.y * FfxUInt32(FFX_DOF_FILTERED_SIDE) + quadTexel.x;
+    FfxFloat32x2 blockAlpha[9];
+    FfxDofFloat3 blockNear[9];
+    FfxDofFloat3 blockFar[9];
+    FfxFloat32 blockCoc[9];
+    FFX_DOF_UNROLL
+    for (FfxUInt32 b = 0u; b < 9u; ++b)
+    {
+        FfxUInt32 index = blockIndex + (b / 3u) * FfxUInt32(FFX_DOF_FILTERED_SIDE) + b % 3u;
+        blockAlpha[b] = ffxDofSharedAlpha[index];
+        blockNear[b] = ffxDofSharedNear[index];
+        blockFar[b] = ffxDofSharedFar[index];
+        blockCoc[b] = ffxDofSharedCoc[index];
+    }
     FFX_DOF_UNROLL
     for (FfxUInt32 k = 0u; k < 4u; ++k)
     {
@@ -669,13 +711,25 @@ FFX_DOF_INLINE void ffxDofComposite(FfxUInt32 compositeClass, FfxUInt32 listInde
         FfxUInt32x2 pixel = quad + inQuad;
         if (pixel.x >= constants.fullSize.x || pixel.y >= constants.fullSize.y)
             continue;
+        FfxInt32x2 topLeft;
+        FfxFloat32x2 fraction = ffxDofUpsamplePosition(pixel, topLeft);
+        FfxDofUpsampleTaps taps;
+        FFX_DOF_UNROLL
+        for (FfxUInt32 t = 0u; t < 4u; ++t)
+        {
+            FfxUInt32 b = (inQuad.y + t / 2u) * 3u + inQuad.x + t % 2u;
+            taps.alpha[t] = blockAlpha[b];
+            taps.nearColor[t] = blockNear[b];
+            taps.farColor[t] = blockFar[b];
+            taps.coc[t] = blockCoc[b];
+        }
         FfxFloat32x4 color = inputColors[k];
 #if FFX_DOF_OPTION_OUTPUT_PRE_INIT
-        if (ffxDofComposePixel(pixel, filteredOrigin, constants, fixedBlurs[k], ownSurfaceTile, smallSourceTile,
+        if (ffxDofComposePixel(pixel, taps, fraction, constants, fixedBlurs[k], ownSurfaceTile, smallSourceTile,
                                ownSurfaceOrigin, color))
             ffxDofStoreOutput(pixel, ffxDofUnscaleColor(color, scale));
 #else
-        if (ffxDofComposePixel(pixel, filteredOrigin, constants, fixedBlurs[k], ownSurfaceTile, smallSourceTile,
+        if (ffxDofComposePixel(pixel, taps, fraction, constants, fixedBlurs[k], ownSurfaceTile, smallSourceTile,
                                ownSurfaceOrigin, color))
             ffxDofStoreOutput(pixel, ffxDofUnscaleColor(color, scale));
         else

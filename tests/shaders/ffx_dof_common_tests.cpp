@@ -874,6 +874,39 @@ TEST_CASE("Upsample position maps full-res pixel centres into half-res texel spa
     CHECK(f.y == Approx(0.75f));
 }
 
+TEST_CASE("Upsample: a quad's four pixels read the 3 x 3 texels from its texel's top-left neighbour", "[upsample]") {
+    // ffxDofComposite reads each pixel's 2 x 2 taps from the quad's 3 x 3 block at offset (dx, dy), the
+    // pixel's place in the quad, with fraction 0.75 (even) or 0.25 (odd) per axis.
+    for (uint32_t qy = 0; qy < 40; qy += 2) {
+        for (uint32_t qx = 0; qx < 40; qx += 2) {
+            for (uint32_t k = 0; k < 4; ++k) {
+                const FfxUInt32x2 inQuad(k & 1u, k >> 1u);
+                FfxInt32x2 topLeft;
+                const FfxFloat32x2 f = ffxDofUpsamplePosition(FfxUInt32x2(qx, qy) + inQuad, topLeft);
+                CHECK(topLeft == FfxInt32x2(int32_t(qx / 2) - 1, int32_t(qy / 2) - 1) + FfxInt32x2(inQuad));
+                CHECK(f.x == (inQuad.x ? 0.25f : 0.75f));
+                CHECK(f.y == (inQuad.y ? 0.25f : 0.75f));
+            }
+        }
+    }
+}
+
+TEST_CASE("Raw layer colours keep every B10G11R11 value through the composite's 16-bit group-shared copy",
+          "[composite]") {
+    // Every 11-bit float (5-bit exponent, 6-bit mantissa; the 10-bit blue has 5): a half holds each exactly.
+    for (uint32_t bits = 0; bits < (1u << 11); ++bits) {
+        const uint32_t exponent = bits >> 6, mantissa = bits & 63u;
+        if (exponent == 31u) continue;  // inf and NaN: the layers are finite
+        const float value = exponent == 0 ? std::ldexp(float(mantissa), -14 - 6)
+                                          : std::ldexp(1.0f + float(mantissa) / 64.0f, int(exponent) - 15);
+        const FfxDofFloat3 color(value, value * 0.5f, 0.0f);
+        const FfxDofFloat3 back = ffxDofUnpackRawColor(ffxDofPackRawColor(color));
+        INFO("value " << value);
+        CHECK(back.x == value);
+        CHECK(back.y == value * 0.5f);
+    }
+}
+
 TEST_CASE("Upsample CoC weight favours matching radii", "[upsample]") {
     CHECK(ffxDofUpsampleCocWeight(-30.0f, -30.0f) == 1.0f);
     CHECK(ffxDofUpsampleCocWeight(0.0f, -30.0f) == Approx(1e-3f));
