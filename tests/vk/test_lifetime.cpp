@@ -163,6 +163,47 @@ TEST_CASE("200 create/dispatch/destroy cycles leak nothing", "[vulkan]") {
     requireNoValidationMessages(device);
 }
 
+TEST_CASE("a dispatch recorded right after another in one command buffer depends on it by frame index only",
+          "[vulkan]") {
+    // Dilate lists the composite's tiles per class in every dispatch (TILE_LIST_ARGS, TILE_LISTS), pass 1
+    // empties the lists first, and GLOBALS is reset within the dispatch. Two contexts record two
+    // dispatches each in one command buffer: their second dispatches (frame index 1, the same blurred
+    // scene) must give the same bits whether the first had every tile a copy (radius 0 everywhere) or
+    // the same blurred scene. A list left over from the first dispatch would compose tiles of the wrong
+    // class or twice; a missing barrier is a synchronization validation message.
+    vkrun::Device& device = validatedDevice();
+    const Scene blurred = makeScene(96, 64, 6.0f);
+    Scene sharp = blurred;
+    sharp.cocScale = 0.0f;
+    sharp.cocBias = 0.0f;
+    FfxDofBackendDescriptionVK backendDescription = device.backendDescription();
+    FfxDofBackend backend = nullptr;
+    REQUIRE(ffxDofBackendCreateVK(&backendDescription, &backend) == FFX_DOF_OK);
+    const auto secondOutput = [&](const Scene& first) {
+        EngineImages images(device, blurred);
+        FfxDofContextDescription contextInfo = contextDescription(backend, 96, 64);
+        FfxDofContext context = nullptr;
+        REQUIRE(ffxDofContextCreate(&context, &contextInfo) == FFX_DOF_OK);
+        VkCommandBuffer commandBuffer = device.beginCommands();
+        for (const Scene* scene : {&first, &blurred}) {
+            FfxDofDispatchDescription dispatch = images.dispatch(*scene);
+            dispatch.commandList = ffxDofGetCommandListVK(commandBuffer);
+            CHECK(ffxDofContextDispatch(&context, &dispatch) == FFX_DOF_OK);
+        }
+        device.endSubmitAndWait(commandBuffer);
+        vkrun::HostImage output = images.output.download(VK_IMAGE_LAYOUT_GENERAL);
+        REQUIRE(ffxDofContextDestroy(&context) == FFX_DOF_OK);
+        return output;
+    };
+    const vkrun::HostImage afterSharp = secondOutput(sharp);
+    const vkrun::HostImage afterBlurred = secondOutput(blurred);
+    CHECK(difference(afterSharp, afterBlurred).maxAbs == 0.0);
+    // The scene is blurred at all (so the lists of the two first dispatches differed).
+    CHECK(difference(afterBlurred, blurred.color).maxAbs > 0.1);
+    REQUIRE(ffxDofBackendDestroy(backend) == FFX_DOF_OK);
+    requireNoValidationMessages(device);
+}
+
 TEST_CASE("invalid engine resources give specific errors", "[vulkan]") {
     vkrun::Device& device = validatedDevice();
     const Scene scene = makeScene(32, 16, 3.0f);
