@@ -93,10 +93,7 @@ FfxDofErrorCode planPass(const ContextPlan& context, Pass pass, const shaders::P
             hasVariantAxis = true;
             variantAxis = axis;
             for (uint32_t list = 0; list < FFX_DOF_TILE_LIST_COUNT; ++list) {
-                // In place the output holds the input already: the composite's copy class has nothing to do.
-                const bool nothingToDo = axis == Axis::CompositeClass && list == FFX_DOF_COMPOSITE_CLASS_COPY &&
-                                         context.axes.outputPreInit != 0;
-                if (!nothingToDo) variantValues.push_back(list);
+                if (tileListRuns(axis, list, context.axes)) variantValues.push_back(list);
             }
         }
     }
@@ -335,6 +332,11 @@ void setApertureConstants(const FfxDofAperture& a, FfxDofConstants* c) {
     // The round disc's scale is the ratio itself, exactly (1 by default: the weights are unchanged).
     c->apertureAreaScale = (blades ? FFX_DOF_PI / shapeArea : 1.0f) * a.anamorphicRatio;
     c->catEye = a.catEye;
+}
+
+bool tileListRuns(Axis axis, uint32_t list, const PermutationAxes& axes) {
+    // In place the output holds the input already: the composite's copy class has nothing to do.
+    return !(axis == Axis::CompositeClass && list == FFX_DOF_COMPOSITE_CLASS_COPY && axes.outputPreInit != 0);
 }
 
 uint32_t dispatchAxisValue(Axis axis, const FfxDofConstants& constants) {

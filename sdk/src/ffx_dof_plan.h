@@ -132,6 +132,10 @@ void setApertureConstants(const FfxDofAperture& aperture, FfxDofConstants* const
 // else FFX_DOF_APERTURE_SHAPES_ANY. Axes without perDispatch values: 0.
 uint32_t dispatchAxisValue(Axis axis, const FfxDofConstants& constants);
 
+// Whether a context of these axes dispatches tile list `list` of a tile-list axis (every list, except the
+// composite's copy class in place, which has nothing to do there).
+bool tileListRuns(Axis axis, uint32_t list, const PermutationAxes& axes);
+
 // The per-frame values added to the context's constants. resetAutofocus: autofocus ignores its
 // previous distance (ffxDofContextResetAutofocus).
 DispatchPlan planDispatch(const ContextPlan& plan, const FfxDofDispatchDescription& dispatch, uint32_t frameIndex,
