@@ -446,10 +446,11 @@ FfxDofErrorCode Context::dispatch(const DispatchPlan& plan) {
     table.ptr += static_cast<UINT64>(ringSlot) * kDescriptorsPerDispatch * backend_.descriptorSize();
     list->SetComputeRootDescriptorTable(kRootDescriptorTableParameter, table);
 
+    ID3D12Resource* uavBuffers[kUavBufferCount] = {};
+    for (uint32_t b = 0; b < kUavBufferCount; ++b) uavBuffers[b] = buffers_[b].Get();
     for (uint32_t p = 0; p < kPassCount; ++p) {
         if (!plan.runs[p]) continue;  // autofocus, when the dispatch does not ask for it
         const PlannedPass& pass = plan_.passes[p];
-        ID3D12Resource* const uavBuffers[kUavBufferCount] = {buffers_[0].Get(), buffers_[1].Get(), buffers_[2].Get()};
         tracker.beforePass(slots, pass, uavBuffers);
         tracker.flush(list);
         if (pass.perTileList) {
