@@ -95,8 +95,15 @@ function(ffx_dof_generate_pass_list out_dir)
     # perDispatch: the values a context with the flag takes per dispatch, one pipeline each.
     string(JSON dispatch_count ERROR_VARIABLE no_dispatch LENGTH "${json}" axes ${macro} perDispatch)
     if(chosen_by STREQUAL "tileLists")
+      # "firstList": the macro of ffx_dof_resources.h that numbers the axis's first list (value v: list first + v).
+      string(JSON first_list ERROR_VARIABLE no_first_list GET "${json}" axes ${macro} firstList)
+      if(no_first_list OR NOT first_list MATCHES "^FFX_DOF_[A-Z0-9_]+$")
+        message(FATAL_ERROR "${json_file}: axis ${macro}: an axis chosen by tileLists needs \"firstList\", a macro of ffx_dof_resources.h")
+      endif()
       string(APPEND axis_tile_lists "true, ")
       list(APPEND tile_list_macros ${macro})
+      set(_ffx_dof_first_list_${macro} ${first_list})
+      set(_ffx_dof_tile_list_pass_${macro} "")
     else()
       string(APPEND axis_tile_lists "false, ")
     endif()
@@ -175,6 +182,9 @@ function(ffx_dof_generate_pass_list out_dir)
     string(JSON pass_axis_count LENGTH "${json}" passes ${p} axes)
     set(row "")
     set(pass_dispatch_axes 0)
+    set(pass_list_axes 0)
+    set(pass_dispatch_values 1)
+    set(pass_list_values 1)
     if(pass_axis_count GREATER 0)
       math(EXPR last "${pass_axis_count} - 1")
       foreach(a RANGE ${last})
@@ -183,17 +193,29 @@ function(ffx_dof_generate_pass_list out_dir)
           message(FATAL_ERROR "${json_file}: pass ${name} has the axis ${macro}, which \"axes\" does not list")
         endif()
         if(macro IN_LIST tile_list_macros)
-          math(EXPR pass_dispatch_axes "${pass_dispatch_axes} + 1")
+          math(EXPR pass_list_axes "${pass_list_axes} + 1")
           string(JSON pass_values GET "${json}" passes ${p} axes ${macro})
           string(REGEX REPLACE "[][ ]" "" pass_values "${pass_values}")
           string(REPLACE "," ";" pass_values "${pass_values}")
           list(LENGTH pass_values list_count)
-          if(list_count GREATER max_variants)
-            set(max_variants ${list_count})
+          set(pass_list_values ${list_count})
+          # The values number the pass's lists: 0, 1, ... in order, and no other pass runs over them.
+          set(expected 0)
+          foreach(value IN LISTS pass_values)
+            if(NOT value EQUAL expected)
+              message(FATAL_ERROR "${json_file}: pass ${name}: the values of the tileLists axis ${macro} must be 0, 1, 2, ... in order")
+            endif()
+            math(EXPR expected "${expected} + 1")
+          endforeach()
+          if(NOT _ffx_dof_tile_list_pass_${macro} STREQUAL "")
+            message(FATAL_ERROR "${json_file}: the tileLists axis ${macro} belongs to the passes ${_ffx_dof_tile_list_pass_${macro}} and ${name}; each pass needs lists of its own")
           endif()
+          set(_ffx_dof_tile_list_pass_${macro} ${name})
+          set(_ffx_dof_tile_list_count_${macro} ${list_count})
         endif()
         if(macro IN_LIST dispatch_macros)
           math(EXPR pass_dispatch_axes "${pass_dispatch_axes} + 1")
+          list(LENGTH _ffx_dof_dispatch_values_${macro} pass_dispatch_values)
           string(JSON pass_values GET "${json}" passes ${p} axes ${macro})
           string(REGEX REPLACE "[][ ]" "" pass_values "${pass_values}")
           string(REPLACE "," ";" pass_values "${pass_values}")
@@ -210,11 +232,29 @@ function(ffx_dof_generate_pass_list out_dir)
         string(APPEND row "Axis::${head}${tail}, ")
       endforeach()
     endif()
-    if(pass_dispatch_axes GREATER 1)
-      message(FATAL_ERROR "${json_file}: pass ${name} has more than one perDispatch or tileLists axis; a pass's pipelines are chosen by one")
+    if(pass_dispatch_axes GREATER 1 OR pass_list_axes GREATER 1)
+      message(FATAL_ERROR "${json_file}: pass ${name} has more than one perDispatch axis or more than one tileLists axis; a dispatch chooses its pipelines by one of each")
+    endif()
+    # A dispatch's group of pipelines, one per list, for each per-dispatch value.
+    math(EXPR pass_variants "${pass_dispatch_values} * ${pass_list_values}")
+    if(pass_variants GREATER max_variants)
+      set(max_variants ${pass_variants})
     endif()
     string(APPEND pass_axis_rows "    {${row}},  // ${name}\n")
     string(APPEND pass_axis_counts "${pass_axis_count}, ")
+  endforeach()
+
+  # Per axis: its first tile list and how many it runs over (0, 0 for the others).
+  set(axis_tile_list_ranges "")
+  foreach(macro IN LISTS all_macros)
+    if(macro IN_LIST tile_list_macros)
+      if(NOT DEFINED _ffx_dof_tile_list_count_${macro})
+        message(FATAL_ERROR "${json_file}: no pass has the tileLists axis ${macro}")
+      endif()
+      string(APPEND axis_tile_list_ranges "{${_ffx_dof_first_list_${macro}}, ${_ffx_dof_tile_list_count_${macro}}}, ")
+    else()
+      string(APPEND axis_tile_list_ranges "{0, 0}, ")
+    endif()
   endforeach()
 
   set(content "// Generated by cmake/FfxDofPassList.cmake from shaders_common/ffx_dof_permutations.json; do not edit.
@@ -257,7 +297,7 @@ ${axis_value_cases}    }
 inline void setAxesFromContextFlags(uint32_t flags, PermutationAxes* axes) {
 ${flag_assignments}}
 
-// The most values one axis takes per dispatch or runs per tile list, and so the most pipelines of one pass.
+// The most pipelines of one pass: its per-dispatch values times its tile lists.
 constexpr uint32_t kMaxPassVariants = ${max_variants};
 // The values an axis takes per dispatch where its context flag is set (perDispatch; count 0: the
 // context's value for every dispatch). A pass has at most one such axis.
@@ -267,9 +307,21 @@ struct AxisDispatchValues {
 };
 constexpr AxisDispatchValues kAxisDispatchValues[kAxisCount] = {${axis_dispatch_values}};
 // Axes chosen by \"tileLists\": every dispatch runs the pass once per value of the axis the pass lists,
-// each time with that value's pipeline and indirectly over the tile list of the same number
-// (TILE_LIST_ARGS, TILE_LISTS in ffx_dof_resources.h).
+// each time with that value's pipeline and indirectly over the value's tile list (TILE_LIST_ARGS,
+// TILE_LISTS in ffx_dof_resources.h): value v is list first + v of the axis's kAxisTileLists.
 constexpr bool kAxisRunsPerTileList[kAxisCount] = {${axis_tile_lists}};
+struct AxisTileLists {
+    uint32_t first;  // the list of value 0 (the macro \"firstList\" names)
+    uint32_t count;  // the values the pass lists, 0 for the other axes
+};
+constexpr AxisTileLists kAxisTileLists[kAxisCount] = {${axis_tile_list_ranges}};
+constexpr bool tileListsFit() {
+    for (const AxisTileLists& lists : kAxisTileLists) {
+        if (lists.first + lists.count > FFX_DOF_TILE_LIST_COUNT) return false;
+    }
+    return true;
+}
+static_assert(tileListsFit(), \"a tileLists axis runs past FFX_DOF_TILE_LIST_COUNT\");
 
 // The axes of each pass, in the order of its shader table.
 constexpr uint32_t kPassAxisCount[kPassCount] = {${pass_axis_counts}};

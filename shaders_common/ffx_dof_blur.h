@@ -20,20 +20,21 @@
 //   also summed as the fill, its color weighted by proximity (ffxDofFillProximity), and added to
 //   the far color at the end with the weight that as many samples of the texel's own radius would
 //   have: the hidden background is extrapolated from around the object, mostly from nearby.
-// Tile classes (ffxDofClassifyTile, from pass 3's dilated range and kernel footprint), each a path
-// that leaves out what cannot matter on that tile and gives what the mixed path would give:
-//   copy       every kernel is in focus (R < 0.5): the texel is the far layer;
-//   equal      every radius the kernels read is within FFX_DOF_EQUAL_WEIGHT_SPREAD of the others
-//              (all near or all far): no CoC is read, each sample weighs what the texel's own
-//              radius gives at its distance, and a far texel's inner rings are merged fully;
-//   far-only   no near radius reaches the tile: no near sums, no hole fill (a near sample from a
-//              tile that does not reach has zero reach, so counting it as far changes nothing);
-//   near-only  every radius read is near-field: no far buckets, no hole fill (no background sample);
-//   mixed      everything.
-// The class is uniform over the workgroup (loaded at the group's tile), so GPUs skip the paths not
-// taken. lavapipe runs every `if` under lane masks, taken or not, but each path is made of loops
-// (rings, samples), and a loop ends once no lane is left in it: a path not taken costs one pass of
-// its loops, a few samples (docs/performance.md).
+// Tile classes (ffxDofBlurTileClass, ffx_dof_tile_classes.h: dilate decides them from the dilated range
+// and kernel footprint and lists each tile under its class), each a path that leaves out what cannot
+// matter on that tile and gives what the mixed path would give:
+//   copy         every kernel is in focus (R < 0.5): the texel is the far layer;
+//   equal far,   every radius the kernels read is within FFX_DOF_EQUAL_WEIGHT_SPREAD of the others,
+//   equal near   all far or all near: no CoC is read, each sample weighs what the texel's own radius
+//                gives at its distance, and a far texel's inner rings are merged fully;
+//   far-only     no near radius reaches the tile: no near sums, no hole fill (a near sample from a
+//                tile that does not reach has zero reach, so counting it as far changes nothing);
+//   near-only    every radius read is near-field: no far buckets, no hole fill (no background sample);
+//   mixed        everything.
+// Each class is a pipeline of its own (FFX_DOF_OPTION_BLUR_CLASS), dispatched indirectly over its tile
+// list. One pipeline holding every path, chosen per workgroup, cost lavapipe the paths not taken as
+// well (it runs every `if` under lane masks and every loop once) and the register pressure of the
+// whole: the blur took 1.09 to 1.11 times as long (docs/performance.md, "The blur per tile class").
 // Ring merging (unless FFX_DOF_OPTION_DISABLE_RING_MERGE) is decided per texel, not per tile: the
 // outermost ring is gathered at full resolution first; where its radii are all within half a pixel
 // of the texel's own (a flat far field), inner rings are gathered from a coarser MIP, 2^log rings at
@@ -50,6 +51,7 @@
 
 #include "ffx_dof_common.h"
 #include "ffx_dof_small_sources.h"
+#include "ffx_dof_tile_classes.h"
 
 #if defined(FFX_CPU)
 FfxDofConstants ffxDofGetConstants();
@@ -77,11 +79,6 @@ void ffxDofResetGlobals();
 // offsets (docs/technique.md, "Light offsets"): with half a texel a small far light lost up to 1.1% of
 // its energy, and a point's rim at radius 12 lay 0.60 px off the circle instead of 0.33.
 #define FFX_DOF_RING_MERGE_RIM_INSET 1.0f
-// A blur tile whose kernels read only radii within this of each other (half-res px) takes the
-// equal-weight path, where every sample weighs what the texel's own radius gives. Small: bright
-// highlights a fraction of a pixel nearer than their background must keep their own radius
-// (0.5 cost the far-highlights scene 0.29 dB, 0.1 nothing; docs/technique.md).
-#define FFX_DOF_EQUAL_WEIGHT_SPREAD 0.1f
 // Highlights: a far sample whose light, spread over its own disc, comes near display white (its disc
 // level: luminance x texel area / disc area, in the input's units) is spread over a disc up to
 // FFX_DOF_HIGHLIGHT_INSET half-res px smaller, its area weight following, so its energy is kept. The
@@ -103,32 +100,6 @@ FFX_DOF_INLINE FfxFloat32 ffxDofHighlightSpreadRadius(FfxFloat32 absRadius, FfxF
     FfxFloat32 excess = (levelRadiusSquared - absRadius * absRadius) * rampScale;
     FfxFloat32 inset = FFX_DOF_HIGHLIGHT_INSET * ffxDofSaturate(excess);
     return max(absRadius - inset, min(absRadius, 0.5f));
-}
-
-// Tile classes of the blur pass (ffxDofClassifyTile), cheapest first.
-#define FFX_DOF_TILE_CLASS_COPY 0u       // every kernel is in focus: the texel is the far layer
-#define FFX_DOF_TILE_CLASS_EQUAL 1u      // all radii read are within FFX_DOF_EQUAL_WEIGHT_SPREAD
-#define FFX_DOF_TILE_CLASS_FAR_ONLY 2u   // no near-field radius reaches the tile
-#define FFX_DOF_TILE_CLASS_NEAR_ONLY 3u  // every radius read is near-field: no far buckets, no fill
-#define FFX_DOF_TILE_CLASS_MIXED 4u      // near and far field, hole filling
-
-// Blur path of a tile from its DILATED_TILES texel (far, near, footprint min, footprint max).
-// Per tile, never per texel, so that a workgroup runs one path; every path gives what the mixed
-// path would give on that tile (the equal-weight path up to radii within the spread), so the
-// choice never shows as a tile border.
-FFX_DOF_INLINE FfxUInt32 ffxDofClassifyTile(FfxFloat32x4 dilated)
-{
-    if (ffxDofTileKernelRadius(FfxFloat32x2(dilated.x, dilated.y)) < FFX_DOF_IN_FOCUS_RADIUS)
-        return FFX_DOF_TILE_CLASS_COPY;
-    FfxBoolean allNear = dilated.z >= FFX_DOF_NEAR_THRESHOLD;
-    FfxBoolean allFar = dilated.w < FFX_DOF_NEAR_THRESHOLD;
-    if ((allNear || allFar) && dilated.w - dilated.z <= FFX_DOF_EQUAL_WEIGHT_SPREAD)
-        return FFX_DOF_TILE_CLASS_EQUAL;
-    if (dilated.y < FFX_DOF_NEAR_THRESHOLD)
-        return FFX_DOF_TILE_CLASS_FAR_ONLY;
-    if (allNear)
-        return FFX_DOF_TILE_CLASS_NEAR_ONLY;
-    return FFX_DOF_TILE_CLASS_MIXED;
 }
 
 // ---- Kernel walk: every texel of a ring read once -----------------------------------------------
@@ -971,33 +942,34 @@ FFX_DOF_INLINE void ffxDofGatherKernel(FFX_DOF_INOUT(FfxDofGather) gather, FfxDo
         ffxDofGatherBehind(gather, kernel, parts, constants);
 }
 
-// Gathers the kernel on the path of its tile class (`shaped`: a literal at each call).
-FFX_DOF_INLINE void ffxDofGatherTileClass(FFX_DOF_INOUT(FfxDofGather) gather, FfxDofKernel kernel, FfxUInt32 tileClass,
-                                          FfxBoolean shaped, FfxDofConstants constants)
+// The parts of the gather a blur class needs (`shaped`: a literal at each call). The class is the
+// pipeline's constant (FFX_DOF_OPTION_BLUR_CLASS), so each pipeline holds one path.
+FFX_DOF_INLINE FfxDofGatherParts ffxDofBlurClassParts(FfxUInt32 blurClass, FfxBoolean shaped)
 {
-    // An equal-weight tile is all near or all far; the texel's own radius tells which.
-    FfxBoolean equalNear = kernel.centerCoc >= FFX_DOF_NEAR_THRESHOLD;
-    if (tileClass == FFX_DOF_TILE_CLASS_EQUAL && !equalNear)
-        ffxDofGatherKernel(gather, kernel, ffxDofMakeGatherParts(false, true, true, shaped), constants);
-    if (tileClass == FFX_DOF_TILE_CLASS_EQUAL && equalNear)
-        ffxDofGatherKernel(gather, kernel, ffxDofMakeGatherParts(true, false, true, shaped), constants);
-    if (tileClass == FFX_DOF_TILE_CLASS_FAR_ONLY)
-        ffxDofGatherKernel(gather, kernel, ffxDofMakeGatherParts(false, true, false, shaped), constants);
-    if (tileClass == FFX_DOF_TILE_CLASS_NEAR_ONLY)
-        ffxDofGatherKernel(gather, kernel, ffxDofMakeGatherParts(true, false, false, shaped), constants);
-    if (tileClass == FFX_DOF_TILE_CLASS_MIXED)
-        ffxDofGatherKernel(gather, kernel, ffxDofMakeGatherParts(true, true, false, shaped), constants);
+    if (blurClass == FfxUInt32(FFX_DOF_BLUR_CLASS_EQUAL_FAR))
+        return ffxDofMakeGatherParts(false, true, true, shaped);
+    if (blurClass == FfxUInt32(FFX_DOF_BLUR_CLASS_EQUAL_NEAR))
+        return ffxDofMakeGatherParts(true, false, true, shaped);
+    if (blurClass == FfxUInt32(FFX_DOF_BLUR_CLASS_FAR_ONLY))
+        return ffxDofMakeGatherParts(false, true, false, shaped);
+    if (blurClass == FfxUInt32(FFX_DOF_BLUR_CLASS_NEAR_ONLY))
+        return ffxDofMakeGatherParts(true, false, false, shaped);
+    return ffxDofMakeGatherParts(true, true, false, shaped);
 }
 
-// The blur of one half-res texel; `dilated` is its tile's DILATED_TILES texel from pass 3, `tileClass`
-// the path (ffxDofClassifyTile; the CPU tests also force the mixed path to compare).
-FFX_DOF_INLINE FfxDofBlurResult ffxDofBlurTexel(FfxUInt32x2 texel, FfxFloat32x4 dilated, FfxUInt32 tileClass,
+// The blur of one half-res texel; `dilated` is its tile's DILATED_TILES texel from pass 3, `blurClass`
+// the path (ffxDofBlurTileClass; the CPU tests also force the mixed path to compare).
+FFX_DOF_INLINE FfxDofBlurResult ffxDofBlurTexel(FfxUInt32x2 texel, FfxFloat32x4 dilated, FfxUInt32 blurClass,
                                                 FfxDofConstants constants)
 {
     FfxDofBlurResult result;
     result.nearColor = FfxDofFloat3(0.0f, 0.0f, 0.0f);
     result.farColor = ffxDofLoadHalfColor(FfxInt32x2(texel));
     result.alpha = FfxFloat32x2(0.0f, 1.0f);
+    // Every radius of a copy tile lies within its dilated range, below the in-focus radius: no texel has
+    // a ring, and the copy pipeline holds no gather.
+    if (blurClass == FfxUInt32(FFX_DOF_BLUR_CLASS_COPY))
+        return result;
 
     FfxDofKernel kernel;
     kernel.centerCoc = ffxDofLoadHalfCoc(FfxInt32x2(texel));
@@ -1064,32 +1036,38 @@ FFX_DOF_INLINE FfxDofBlurResult ffxDofBlurTexel(FfxUInt32x2 texel, FfxFloat32x4 
         (FfxFloat32(kernel.rings) * (1.0f - kernel.aperture.inscribedRadius) - 0.5f) * kernel.spacing;
     if (kernel.rimInset > 0.0f && toInscribed < kernel.spacing)
         kernel.rimInset = max(kernel.rimInset, toInscribed);
-    ffxDofGatherTileClass(gather, kernel, tileClass, true, constants);
+    ffxDofGatherKernel(gather, kernel, ffxDofBlurClassParts(blurClass, true), constants);
 #else
-    ffxDofGatherTileClass(gather, kernel, tileClass, false, constants);
+    ffxDofGatherKernel(gather, kernel, ffxDofBlurClassParts(blurClass, false), constants);
 #endif
     return ffxDofFinishGather(gather, kernel, fillAreaWeight, result);
 }
 
-FFX_DOF_INLINE void ffxDofBlurTile(FfxUInt32x2 groupId, FfxUInt32 localIndex, FfxFloat32x4 dilated, FfxUInt32 tileClass)
+// Blurs tile `tile` on the path of `blurClass` (FFX_DOF_BLUR_CLASS_*); `dilated` is its DILATED_TILES texel.
+FFX_DOF_INLINE void ffxDofBlurTile(FfxUInt32x2 tile, FfxUInt32 localIndex, FfxFloat32x4 dilated, FfxUInt32 blurClass)
 {
     FfxDofConstants constants = ffxDofGetConstants();
-    // Dilate has read the global radius; the next dispatch's pass 1 needs it at 0.
-    if (groupId.x == 0u && groupId.y == 0u && localIndex == 0u)
+    // Dilate has read the global radius; the next dispatch's pass 1 needs it at 0. The workgroup of tile
+    // (0, 0) resets it: every tile is in one list, and any list may be empty.
+    if (tile.x == 0u && tile.y == 0u && localIndex == 0u)
         ffxDofResetGlobals();
-    FfxUInt32x2 texel = groupId * FfxUInt32(FFX_DOF_TILE_SIZE) + ffxDofLocalCoord(localIndex);
+    FfxUInt32x2 texel = tile * FfxUInt32(FFX_DOF_TILE_SIZE) + ffxDofLocalCoord(localIndex);
     if (texel.x >= constants.halfSize.x || texel.y >= constants.halfSize.y)
         return;
-    FfxDofBlurResult result = ffxDofBlurTexel(texel, dilated, tileClass, constants);
+    FfxDofBlurResult result = ffxDofBlurTexel(texel, dilated, blurClass, constants);
     ffxDofStoreNearColor(texel, ffxDofRoundForPackedColor(result.nearColor));
     ffxDofStoreFarColor(texel, ffxDofRoundForPackedColor(result.farColor));
     ffxDofStoreLayerAlpha(texel, result.alpha);
 }
 
-FFX_DOF_INLINE void ffxDofBlur(FfxUInt32x2 groupId, FfxUInt32 localIndex)
+// Blurs tile `listIndex` of the list of `blurClass` (FFX_DOF_BLUR_CLASS_*, which dilate chose for it). The
+// class is the pipeline's constant (FFX_DOF_OPTION_BLUR_CLASS): each pipeline holds only its class's path.
+FFX_DOF_INLINE void ffxDofBlur(FfxUInt32 blurClass, FfxUInt32 listIndex, FfxUInt32 localIndex)
 {
-    FfxFloat32x4 dilated = ffxDofLoadDilatedTile(groupId);
-    ffxDofBlurTile(groupId, localIndex, dilated, ffxDofClassifyTile(dilated));
+    FfxUInt32x2 tileCount = ffxDofGetConstants().tileCount;
+    FfxUInt32x2 tile =
+        ffxDofListedTile(FfxUInt32(FFX_DOF_BLUR_TILE_LIST_FIRST) + blurClass, listIndex, tileCount.x * tileCount.y);
+    ffxDofBlurTile(tile, localIndex, ffxDofLoadDilatedTile(tile), blurClass);
 }
 
 #endif  // FFX_DOF_BLUR_H

@@ -215,17 +215,15 @@ void ffxDofStoreTileListArgs(FfxUInt32 list, FfxUInt32x3 groupCounts)
 FFX_DOF_BINDING_UAV_BUFFER(FFX_DOF_UAV_BUFFER_TILE_LISTS) buffer FfxDofTileLists { uint ffxDofTileListWords[]; };
 #endif
 #if FFX_DOF_USES_RW_TILE_LISTS
-void ffxDofAppendToTileList(FfxUInt32 list, FfxUInt32 packedTile, FfxUInt32 tilesPerList)
+// The next entry of tile list `list`: its count so far, counted up (ffxDofTileListWord places it).
+FfxUInt32 ffxDofCountIntoTileList(FfxUInt32 list)
 {
-    uint index = atomicAdd(ffxDofTileListArgWords[list * FFX_DOF_TILE_LIST_ARGS_WORDS], 1u);
-    ffxDofTileListWords[list * tilesPerList + index] = packedTile;
+    return atomicAdd(ffxDofTileListArgWords[list * FFX_DOF_TILE_LIST_ARGS_WORDS], 1u);
 }
+void ffxDofStoreTileListWord(FfxUInt32 word, FfxUInt32 packedTile) { ffxDofTileListWords[word] = packedTile; }
 #endif
 #if FFX_DOF_USES_TILE_LISTS
-FfxUInt32 ffxDofLoadListedTile(FfxUInt32 list, FfxUInt32 index, FfxUInt32 tilesPerList)
-{
-    return ffxDofTileListWords[list * tilesPerList + index];
-}
+FfxUInt32 ffxDofLoadTileListWord(FfxUInt32 word) { return ffxDofTileListWords[word]; }
 #endif
 
 #endif  // FFX_DOF_CALLBACKS_GLSL_H

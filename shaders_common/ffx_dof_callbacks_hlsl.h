@@ -240,18 +240,17 @@ FFX_DOF_BINDING_UAV_BUFFER(FFX_DOF_UAV_BUFFER_TILE_LISTS)
 RWStructuredBuffer<uint> ffxDofTileLists : FFX_DOF_HLSL_BUFFER_REGISTER(FFX_DOF_UAV_BUFFER_TILE_LISTS);
 #endif
 #if FFX_DOF_USES_RW_TILE_LISTS
-void ffxDofAppendToTileList(FfxUInt32 list, FfxUInt32 packedTile, FfxUInt32 tilesPerList)
+// The next entry of tile list `list`: its count so far, counted up (ffxDofTileListWord places it).
+FfxUInt32 ffxDofCountIntoTileList(FfxUInt32 list)
 {
     uint index;
     InterlockedAdd(ffxDofTileListArgs[list * FFX_DOF_TILE_LIST_ARGS_WORDS], 1u, index);
-    ffxDofTileLists[list * tilesPerList + index] = packedTile;
+    return index;
 }
+void ffxDofStoreTileListWord(FfxUInt32 word, FfxUInt32 packedTile) { ffxDofTileLists[word] = packedTile; }
 #endif
 #if FFX_DOF_USES_TILE_LISTS
-FfxUInt32 ffxDofLoadListedTile(FfxUInt32 list, FfxUInt32 index, FfxUInt32 tilesPerList)
-{
-    return ffxDofTileLists[list * tilesPerList + index];
-}
+FfxUInt32 ffxDofLoadTileListWord(FfxUInt32 word) { return ffxDofTileLists[word]; }
 #endif
 
 #endif  // FFX_DOF_CALLBACKS_HLSL_H

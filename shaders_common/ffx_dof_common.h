@@ -51,6 +51,10 @@
 #ifndef FFX_DOF_OPTION_OUTPUT_PRE_INIT
 #define FFX_DOF_OPTION_OUTPUT_PRE_INIT 0
 #endif
+// The class of tiles (FFX_DOF_BLUR_CLASS_*) a blur pipeline blurs, from its tile list.
+#ifndef FFX_DOF_OPTION_BLUR_CLASS
+#define FFX_DOF_OPTION_BLUR_CLASS FFX_DOF_BLUR_CLASS_MIXED
+#endif
 // The class of tiles (FFX_DOF_COMPOSITE_CLASS_*) a composite pipeline composes, from its tile list.
 #ifndef FFX_DOF_OPTION_COMPOSITE_CLASS
 #define FFX_DOF_OPTION_COMPOSITE_CLASS FFX_DOF_COMPOSITE_CLASS_FULL_RES

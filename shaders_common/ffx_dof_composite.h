@@ -1,7 +1,7 @@
 // Pass 5 of 5: composition at full resolution.
 //
 // One workgroup covers one tile (16 x 16 full-res px); each invocation writes a 2 x 2 quad. The pass runs
-// one pipeline per class of tiles (ffx_dof_composite_classes.h), each an indirect dispatch over the tiles
+// one pipeline per class of tiles (ffx_dof_tile_classes.h), each an indirect dispatch over the tiles
 // dilate listed under that class (TILE_LISTS): no workgroup runs for a tile another class composes.
 //   1. A tile that is in focus and that no near-field blur reaches (class COPY) is copied (with
 //      FFX_DOF_OPTION_OUTPUT_PRE_INIT not dispatched at all): exactly what the per-pixel path would do.
@@ -35,7 +35,7 @@
 #define FFX_DOF_COMPOSITE_H
 
 #include "ffx_dof_common.h"
-#include "ffx_dof_composite_classes.h"
+#include "ffx_dof_tile_classes.h"
 #include "ffx_dof_focus.h"
 #include "ffx_dof_small_sources.h"
 
@@ -51,7 +51,6 @@ FfxDofFloat3 ffxDofLoadFarColor(FfxInt32x2 texel);
 FfxFloat32x2 ffxDofLoadLayerAlpha(FfxInt32x2 texel);
 void ffxDofStoreOutput(FfxUInt32x2 pixel, FfxFloat32x4 color);
 FfxFloat32 ffxDofLoadColorScale();
-FfxUInt32 ffxDofLoadListedTile(FfxUInt32 list, FfxUInt32 index, FfxUInt32 tilesPerList);
 #endif
 
 // ---- Tuning constants -------------------------------------------------------------------------------
@@ -572,8 +571,8 @@ FFX_DOF_INLINE FfxBoolean ffxDofComposePixel(FfxUInt32x2 pixel, FfxDofUpsampleTa
 FFX_DOF_INLINE void ffxDofComposite(FfxUInt32 compositeClass, FfxUInt32 listIndex, FfxUInt32 localIndex)
 {
     FfxDofConstants constants = ffxDofGetFocusedConstants();
-    FfxUInt32x2 groupId = ffxDofUnpackListedTile(
-        ffxDofLoadListedTile(compositeClass, listIndex, constants.tileCount.x * constants.tileCount.y));
+    FfxUInt32x2 groupId = ffxDofListedTile(FfxUInt32(FFX_DOF_COMPOSITE_TILE_LIST_FIRST) + compositeClass, listIndex,
+                                           constants.tileCount.x * constants.tileCount.y);
     FfxUInt32 extent = FfxUInt32(FFX_DOF_COMPOSITE_GROUP_EXTENT);
     FfxUInt32x2 quad = groupId * extent + ffxDofLocalCoord(localIndex) * 2u;
     if (compositeClass == FfxUInt32(FFX_DOF_COMPOSITE_CLASS_COPY))

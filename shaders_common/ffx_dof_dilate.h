@@ -4,7 +4,8 @@
 // ffxDofTileReaches) is examined; a tile contributes its near (max) or far (min) end when that end's
 // radius can reach the nearest pixel of the central tile. The distance is measured from the
 // central tile's rectangle, not its centre, so nothing is ever under-dilated.
-// It also lists the tile for the composite under its class (ffxDofCompositeTileClass, TILE_LISTS).
+// It also lists the tile for the blur and for the composite under its class in each (ffxDofBlurTileClass,
+// ffxDofCompositeTileClass; TILE_LISTS).
 // Output (DILATED_TILES): x = most negative (far) radius, y = most positive (near) radius among the
 // tile itself and every tile that reaches it; z, w = smallest and largest signed radius of every tile
 // the blur's kernels of this tile can read (ffxDofKernelFootprintRadius): the blur's tile
@@ -14,7 +15,7 @@
 #define FFX_DOF_DILATE_H
 
 #include "ffx_dof_common.h"
-#include "ffx_dof_composite_classes.h"
+#include "ffx_dof_tile_classes.h"
 #include "ffx_dof_small_sources.h"
 
 #if defined(FFX_CPU)
@@ -23,7 +24,8 @@ FfxFloat32 ffxDofLoadGlobalMaxRadius();
 FfxFloat32x2 ffxDofLoadTile(FfxUInt32x2 tile);
 void ffxDofStoreDilatedTile(FfxUInt32x2 tile, FfxFloat32x4 farNearFootprint);
 void ffxDofResetColorPeak();
-void ffxDofAppendToTileList(FfxUInt32 list, FfxUInt32 packedTile, FfxUInt32 tilesPerList);
+FfxUInt32 ffxDofCountIntoTileList(FfxUInt32 list);
+void ffxDofStoreTileListWord(FfxUInt32 word, FfxUInt32 packedTile);
 #endif
 
 // ---- Tile reach -------------------------------------------------------------------------------------
@@ -130,13 +132,35 @@ FFX_DOF_INLINE FfxFloat32x2 ffxDofFootprintRange(FfxUInt32x2 centerTile, FfxUInt
     return range;
 }
 
+// The block of FFX_DOF_DILATE_GROUP_EXTENT x FFX_DOF_DILATE_GROUP_EXTENT tiles that workgroup `groupId` dilates:
+// the blocks in transposed order (block row and column of the workgroup index swapped), a bijection.
+// The lists come out in the order dilate appends to them, and lavapipe runs each dispatch of the blur and
+// the composite as one contiguous range of workgroups per thread: lists in image order gave each thread
+// one region of the image, and the threads of a class whose costly tiles lie together waited for the
+// slowest (the blur per class took 1.1 times as long as one blur of every class, though it did 0.86
+// times the work; docs/performance.md, "The blur per tile class"). Each block keeps its tiles together.
+FFX_DOF_INLINE FfxUInt32x2 ffxDofDilateBlock(FfxUInt32x2 groupId, FfxUInt32x2 tileCount)
+{
+    FfxUInt32 extent = FfxUInt32(FFX_DOF_DILATE_GROUP_EXTENT);
+    FfxUInt32x2 blocks = (tileCount + FfxUInt32x2(extent - 1u, extent - 1u)) / extent;
+    FfxUInt32 transposed = groupId.x * blocks.y + groupId.y;
+    return FfxUInt32x2(transposed % blocks.x, transposed / blocks.x);
+}
+
+// Lists `packedTile` under `list`: the next entry of the list (its count in TILE_LIST_ARGS).
+FFX_DOF_INLINE void ffxDofListTile(FfxUInt32 list, FfxUInt32 packedTile, FfxUInt32 tilesPerList)
+{
+    ffxDofStoreTileListWord(ffxDofTileListWord(list, ffxDofCountIntoTileList(list), tilesPerList), packedTile);
+}
+
 FFX_DOF_INLINE void ffxDofDilate(FfxUInt32x2 groupId, FfxUInt32 localIndex)
 {
     FfxDofConstants constants = ffxDofGetConstants();
     // Pass 2 has read the colour peak; the next frame's pass 1 needs it at 0.
     if (groupId.x == 0u && groupId.y == 0u && localIndex == 0u)
         ffxDofResetColorPeak();
-    FfxUInt32x2 tile = groupId * FfxUInt32(FFX_DOF_DILATE_GROUP_EXTENT) + ffxDofLocalCoord(localIndex);
+    FfxUInt32x2 tile = ffxDofDilateBlock(groupId, constants.tileCount) * FfxUInt32(FFX_DOF_DILATE_GROUP_EXTENT) +
+                       ffxDofLocalCoord(localIndex);
     if (tile.x >= constants.tileCount.x || tile.y >= constants.tileCount.y)
         return;
     // A shaped disc reaches at most its extent times its radius in any direction: the dilation and the
@@ -144,10 +168,14 @@ FFX_DOF_INLINE void ffxDofDilate(FfxUInt32x2 groupId, FfxUInt32 localIndex)
     FfxFloat32 extent = ffxDofApertureExtent(constants);
     FfxFloat32x2 farNear = ffxDofDilateTile(tile, constants.tileCount, ffxDofLoadGlobalMaxRadius(), extent);
     FfxFloat32 footprint = ffxDofKernelFootprintRadius(ffxDofTileKernelRadius(farNear) * extent, constants.maxRings);
-    ffxDofStoreDilatedTile(tile, FfxFloat32x4(farNear, ffxDofFootprintRange(tile, constants.tileCount, footprint)));
+    FfxFloat32x4 dilated = FfxFloat32x4(farNear, ffxDofFootprintRange(tile, constants.tileCount, footprint));
+    ffxDofStoreDilatedTile(tile, dilated);
+    FfxUInt32 tilesPerList = constants.tileCount.x * constants.tileCount.y;
+    FfxUInt32 packedTile = ffxDofPackListedTile(tile);
+    ffxDofListTile(FfxUInt32(FFX_DOF_BLUR_TILE_LIST_FIRST) + ffxDofBlurTileClass(dilated), packedTile, tilesPerList);
     FfxUInt32 compositeClass = ffxDofCompositeTileClass(
         ffxDofLoadTile(tile), farNear.y, ffxDofSurveyTilesAround(tile, constants.tileCount).drawsSmallSources);
-    ffxDofAppendToTileList(compositeClass, ffxDofPackListedTile(tile), constants.tileCount.x * constants.tileCount.y);
+    ffxDofListTile(FfxUInt32(FFX_DOF_COMPOSITE_TILE_LIST_FIRST) + compositeClass, packedTile, tilesPerList);
 }
 
 #endif  // FFX_DOF_DILATE_H

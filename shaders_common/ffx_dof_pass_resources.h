@@ -31,6 +31,7 @@
 #define FFX_DOF_USES_DILATED_TILES 1
 #define FFX_DOF_USES_RW_LAYERS 1
 #define FFX_DOF_USES_GLOBALS 1
+#define FFX_DOF_USES_TILE_LISTS 1  // and TILE_LIST_ARGS as its indirect dispatch arguments, unbound
 #elif defined(FFX_DOF_PASS_COMPOSITE)
 #define FFX_DOF_USES_INPUT_COLOR 1
 #define FFX_DOF_USES_INPUT_DEPTH 1

@@ -29,7 +29,7 @@
 //   GLOBALS        16-byte storage buffer    four uint words, all zero before the first dispatch:
 //                  [0] (FFX_DOF_GLOBALS_MAX_RADIUS): global max |radius|, half-res px, as float bits
 //                  (atomic max on uint: non-negative floats order like their bits); pass 1 writes,
-//                  pass 3 reads, the composite writes 0 back, so it is zero before each dispatch.
+//                  pass 3 reads, the blur writes 0 back, so it is zero before each dispatch.
 //                  [1] (FFX_DOF_GLOBALS_COLOR_PEAK): the frame's largest finite colour channel as
 //                  float bits, atomic max by pass 1 (only where it exceeds FFX_DOF_COLOR_RANGE_LIMIT,
 //                  so 0 in most frames); pass 2 reads, pass 3 writes 0 back.
@@ -42,10 +42,12 @@
 //   TILE_LIST_ARGS storage buffer, FFX_DOF_TILE_LIST_COUNT x 4 uint words: per list the indirect dispatch
 //                  arguments (group counts x, y, z; the fourth word unused, so each starts 16-byte aligned).
 //                  Pass 1 sets them to (0, 1, 1), dilate counts its listed tiles in x (atomic add), the
-//                  composite is dispatched from them (one indirect dispatch per list), and never binds it.
-//   TILE_LISTS     storage buffer, FFX_DOF_TILE_LIST_COUNT x tiles uint words: list l holds, from word
-//                  l * tileCount.x * tileCount.y, the tiles dilate put in it (x | y << 16), in no order;
-//                  the composite's workgroup i of list l composes the list's tile i.
+//                  blur and the composite are dispatched from them (one indirect dispatch per list of
+//                  theirs), and never bind it.
+//   TILE_LISTS     storage buffer, FFX_DOF_TILE_LIST_ARRAYS x tiles uint words: the tiles dilate put in
+//                  each list (x | y << 16), in no order; lists 2a and 2a + 1 share array a, one from each
+//                  end (ffxDofTileListWord). The blur's or composite's workgroup i of a list works on the
+//                  list's tile i.
 #ifndef FFX_DOF_RESOURCES_H
 #define FFX_DOF_RESOURCES_H
 
@@ -94,15 +96,34 @@
 #define FFX_DOF_GLOBALS_FOCUS_COC_BIAS 5
 #define FFX_DOF_GLOBALS_WORD_COUNT 8
 
-// The composite's tile lists (TILE_LIST_ARGS, TILE_LISTS): which work a tile of the composite needs, decided
-// by dilate (ffxDofCompositeTileClass), so that each workgroup runs a pipeline with only that work. On
-// a GPU a smaller pipeline needs fewer registers; on lavapipe every dispatched workgroup pays for the
-// whole shader, early return or not (docs/performance.md).
+// The tile lists (TILE_LIST_ARGS, TILE_LISTS): which work a tile needs in the blur and in the composite,
+// decided by dilate (ffx_dof_tile_classes.h), so that each workgroup of those passes runs a pipeline
+// with only that work. On a GPU a smaller pipeline needs fewer registers; on lavapipe every dispatched
+// workgroup pays for the whole shader, early return or not (docs/performance.md).
+#define FFX_DOF_BLUR_CLASS_COPY 0        // every kernel is in focus: the texel is the far layer
+#define FFX_DOF_BLUR_CLASS_EQUAL_FAR 1   // all radii read are far and within FFX_DOF_EQUAL_WEIGHT_SPREAD
+#define FFX_DOF_BLUR_CLASS_EQUAL_NEAR 2  // all radii read are near and within FFX_DOF_EQUAL_WEIGHT_SPREAD
+#define FFX_DOF_BLUR_CLASS_FAR_ONLY 3    // no near-field radius reaches the tile
+#define FFX_DOF_BLUR_CLASS_NEAR_ONLY 4   // every radius read is near-field: no far buckets, no fill
+#define FFX_DOF_BLUR_CLASS_MIXED 5       // near and far field, hole filling
+#define FFX_DOF_BLUR_CLASS_COUNT 6
 #define FFX_DOF_COMPOSITE_CLASS_COPY 0      // in focus and no near field reaches it: the input, unchanged
 #define FFX_DOF_COMPOSITE_CLASS_LAYERS 1    // the half-res layers and the fixed 3x3 blur
 #define FFX_DOF_COMPOSITE_CLASS_FULL_RES 2  // and pixels gathered at full resolution (own surface, small sources)
-#define FFX_DOF_TILE_LIST_COUNT 3
+#define FFX_DOF_COMPOSITE_CLASS_COUNT 3
+// List numbers: a pass's class c is list FIRST + c. Each pass's first list is even, since lists share
+// storage in pairs (ffxDofTileListWord): the blur's six take lists 0 to 5, the composite's three 6 to 8.
+#define FFX_DOF_BLUR_TILE_LIST_FIRST 0
+#define FFX_DOF_COMPOSITE_TILE_LIST_FIRST 6
+#define FFX_DOF_TILE_LIST_COUNT 9
+#define FFX_DOF_TILE_LIST_ARRAYS 5      // arrays of one word per tile in TILE_LISTS: ceil(lists / 2)
 #define FFX_DOF_TILE_LIST_ARGS_WORDS 4  // words per list in TILE_LIST_ARGS
+#if FFX_DOF_BLUR_TILE_LIST_FIRST % 2 != 0 || FFX_DOF_COMPOSITE_TILE_LIST_FIRST % 2 != 0 ||          \
+    FFX_DOF_COMPOSITE_TILE_LIST_FIRST < FFX_DOF_BLUR_TILE_LIST_FIRST + FFX_DOF_BLUR_CLASS_COUNT ||  \
+    FFX_DOF_TILE_LIST_COUNT != FFX_DOF_COMPOSITE_TILE_LIST_FIRST + FFX_DOF_COMPOSITE_CLASS_COUNT || \
+    FFX_DOF_TILE_LIST_ARRAYS * 2 < FFX_DOF_TILE_LIST_COUNT
+#error "the tile lists must start even for each pass, not overlap, and fit their arrays"
+#endif
 
 // No samplers: every read is an integer texel fetch (texelFetch / Load), so no pass declares one and
 // a reflected sampler is refused at context creation.

@@ -71,9 +71,10 @@ constexpr uint32_t kTileListArgsWordCount = FFX_DOF_TILE_LIST_COUNT * FFX_DOF_TI
 constexpr uint32_t kTileListArgsBytes = kTileListArgsWordCount * 4;
 // The byte offset of a tile list's arguments in TILE_LIST_ARGS.
 constexpr uint32_t tileListArgsOffset(uint32_t list) { return list * FFX_DOF_TILE_LIST_ARGS_WORDS * 4; }
-// TILE_LISTS (FFX_DOF_UAV_BUFFER_TILE_LISTS): every list has room for every tile, one word each.
+// TILE_LISTS (FFX_DOF_UAV_BUFFER_TILE_LISTS): arrays of one word per tile, each shared by two lists of
+// one pass (ffxDofTileListWord).
 constexpr uint32_t tileListsWordCount(uint32_t tileCountX, uint32_t tileCountY) {
-    return FFX_DOF_TILE_LIST_COUNT * tileCountX * tileCountY;
+    return FFX_DOF_TILE_LIST_ARRAYS * tileCountX * tileCountY;
 }
 
 // Levels of an image of this size: the spec's, clamped to the full chain of a small image (a 4x3

@@ -76,38 +76,48 @@ FfxDofErrorCode planPass(const ContextPlan& context, Pass pass, const shaders::P
     }
     out->table = table;
 
-    // The pass's per-dispatch axis, where the context's flag sets it, or its tile-list axis: one
-    // variant per value.
-    std::vector<uint32_t> variantValues;
-    bool hasVariantAxis = false;
-    Axis variantAxis = Axis(0);
+    // The pass's per-dispatch axis, where the context's flag sets it, and its tile-list axis: one variant per
+    // pair of their values, the tile-list values innermost (a dispatch runs one group of those).
+    std::vector<uint32_t> dispatchValues;
+    std::vector<uint32_t> listValues;
+    constexpr uint32_t kNone = ~0u;
+    uint32_t dispatchAxis = kNone;  // indices into kPassAxes[p]
+    uint32_t listAxis = kNone;
     for (uint32_t a = 0; a < kPassAxisCount[p]; ++a) {
         const Axis axis = kPassAxes[p][a];
-        const AxisDispatchValues& dispatchValues = kAxisDispatchValues[uint32_t(axis)];
-        if (dispatchValues.count > 0 && axisValue(context.axes, axis) != 0) {
-            variantValues.assign(dispatchValues.values, dispatchValues.values + dispatchValues.count);
-            hasVariantAxis = true;
-            variantAxis = axis;
+        const AxisDispatchValues& perDispatch = kAxisDispatchValues[uint32_t(axis)];
+        if (perDispatch.count > 0 && axisValue(context.axes, axis) != 0) {
+            dispatchValues.assign(perDispatch.values, perDispatch.values + perDispatch.count);
+            dispatchAxis = a;
         } else if (kAxisRunsPerTileList[uint32_t(axis)]) {
-            out->perTileList = true;
-            hasVariantAxis = true;
-            variantAxis = axis;
-            for (uint32_t list = 0; list < FFX_DOF_TILE_LIST_COUNT; ++list) {
-                if (tileListRuns(axis, list, context.axes)) variantValues.push_back(list);
+            for (uint32_t value = 0; value < kAxisTileLists[uint32_t(axis)].count; ++value) {
+                if (tileListRuns(axis, value, context.axes)) listValues.push_back(value);
             }
+            listAxis = a;
         }
     }
-    if (variantValues.empty()) variantValues.push_back(0);
-    out->variantCount = uint32_t(variantValues.size());
+    if (dispatchValues.empty()) dispatchValues.push_back(0);
+    if (listValues.empty()) listValues.push_back(0);
+    out->perTileList = listAxis != kNone;
+    out->tileListVariants = uint32_t(listValues.size());
+    out->variantCount = uint32_t(dispatchValues.size() * listValues.size());
+    if (out->variantCount > kMaxPassVariants) {
+        return fail(FFX_DOF_ERROR_BACKEND, "the pass %s has %u pipelines, more than kMaxPassVariants", kPassNames[p],
+                    out->variantCount);
+    }
     for (uint32_t v = 0; v < out->variantCount; ++v) {
         PassVariant& variant = out->variants[v];
-        variant.dispatchValue = variantValues[v];
+        variant.dispatchValue = dispatchAxis != kNone ? dispatchValues[v / out->tileListVariants] : 0;
+        variant.tileListValue = listAxis != kNone ? listValues[v % out->tileListVariants] : 0;
+        if (listAxis != kNone)
+            variant.tileList = kAxisTileLists[uint32_t(kPassAxes[p][listAxis])].first + variant.tileListValue;
         std::vector<shaders::Define> key;
         for (uint32_t a = 0; a < kPassAxisCount[p]; ++a) {
             const Axis axis = kPassAxes[p][a];
-            const bool variesHere = hasVariantAxis && axis == variantAxis;
-            key.emplace_back(kAxisMacros[uint32_t(axis)],
-                             variesHere ? variantValues[v] : axisValue(context.axes, axis));
+            const uint32_t value = a == dispatchAxis ? variant.dispatchValue
+                                   : a == listAxis   ? variant.tileListValue
+                                                     : axisValue(context.axes, axis);
+            key.emplace_back(kAxisMacros[uint32_t(axis)], value);
         }
         std::string error;
         if (!shaders::findPermutationIndex(*table, key, &variant.permutationIndex, &error)) {
@@ -334,9 +344,9 @@ void setApertureConstants(const FfxDofAperture& a, FfxDofConstants* c) {
     c->catEye = a.catEye;
 }
 
-bool tileListRuns(Axis axis, uint32_t list, const PermutationAxes& axes) {
+bool tileListRuns(Axis axis, uint32_t value, const PermutationAxes& axes) {
     // In place the output holds the input already: the composite's copy class has nothing to do.
-    return !(axis == Axis::CompositeClass && list == FFX_DOF_COMPOSITE_CLASS_COPY && axes.outputPreInit != 0);
+    return !(axis == Axis::CompositeClass && value == FFX_DOF_COMPOSITE_CLASS_COPY && axes.outputPreInit != 0);
 }
 
 uint32_t dispatchAxisValue(Axis axis, const FfxDofConstants& constants) {
@@ -380,13 +390,13 @@ DispatchPlan planDispatch(const ContextPlan& plan, const FfxDofDispatchDescripti
     }
     for (uint32_t p = 0; p < kPassCount; ++p) {
         const PlannedPass& pass = plan.passes[p];
-        if (pass.variantCount < 2) continue;
+        if (pass.variantCount == pass.tileListVariants) continue;  // no per-dispatch axis
         for (uint32_t a = 0; a < kPassAxisCount[p]; ++a) {
             const Axis axis = kPassAxes[p][a];
             if (kAxisDispatchValues[uint32_t(axis)].count == 0) continue;
             const uint32_t value = dispatchAxisValue(axis, out.constants);
             bool planned = false;
-            for (uint32_t v = 0; v < pass.variantCount; ++v) {
+            for (uint32_t v = 0; v < pass.variantCount && !planned; v += pass.tileListVariants) {
                 if (pass.variants[v].dispatchValue == value) {
                     out.variants[p] = v;
                     planned = true;

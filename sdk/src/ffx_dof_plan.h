@@ -54,19 +54,23 @@ struct PlannedImage {
 struct PassVariant {
     const shaders::Blob* blob = nullptr;
     uint32_t permutationIndex = 0;
-    // The value of the pass's per-dispatch or tile-list axis (0 without one); for a tile-list axis also
-    // the list the variant is dispatched over (FFX_DOF_TILE_LIST_ARGS_WORDS words apart in TILE_LIST_ARGS).
+    // The value of the pass's per-dispatch axis and of its tile-list axis (0 without one).
     uint32_t dispatchValue = 0;
+    uint32_t tileListValue = 0;
+    // With a tile-list axis, the list the variant is dispatched over (kAxisTileLists: first + value).
+    uint32_t tileList = 0;
 };
 
 struct PlannedPass {
     const shaders::PassTable* table = nullptr;
     // One variant per value of the pass's per-dispatch axis (perDispatch in the permutations JSON)
     // where the context's flag sets it, each dispatch running one (DispatchPlan::variants); else one.
-    // With a tile-list axis (kAxisRunsPerTileList) every dispatch runs every variant instead, each
+    // With a tile-list axis (kAxisRunsPerTileList) each of those is a group of tileListVariants
+    // variants, one per list the context dispatches: a dispatch runs every variant of its group, each
     // dispatched indirectly over its tile list (`groups` unused).
     PassVariant variants[kMaxPassVariants];
     uint32_t variantCount = 1;
+    uint32_t tileListVariants = 1;
     bool perTileList = false;
     PassGrid groups;            // workgroup counts
     uint32_t sampledSlots = 0;  // bit i: FFX_DOF_SRV_* slot i is declared (reflected)
@@ -109,10 +113,11 @@ struct DispatchPlan {
     FfxDofResource color{};
     FfxDofResource depth{};
     FfxDofResource output{};
-    FfxDofConstants constants{};         // the backend may only add FFX_DOF_OUTPUT_FLAG_* bits
-    bool outputIsColor = false;          // in place: output and color are the same image
-    bool runs[kPassCount] = {};          // the passes to record (autofocus only when the dispatch asks for it)
-    uint32_t variants[kPassCount] = {};  // the PlannedPass::variants entry each pass runs (not perTileList)
+    FfxDofConstants constants{};  // the backend may only add FFX_DOF_OUTPUT_FLAG_* bits
+    bool outputIsColor = false;   // in place: output and color are the same image
+    bool runs[kPassCount] = {};   // the passes to record (autofocus only when the dispatch asks for it)
+    // The PlannedPass::variants entry each pass runs: with a tile-list axis, the first of its group.
+    uint32_t variants[kPassCount] = {};
 };
 
 // Checks an autofocus description; FFX_DOF_ERROR_INVALID_ARGUMENT naming the field otherwise.
@@ -132,9 +137,9 @@ void setApertureConstants(const FfxDofAperture& aperture, FfxDofConstants* const
 // else FFX_DOF_APERTURE_SHAPES_ANY. Axes without perDispatch values: 0.
 uint32_t dispatchAxisValue(Axis axis, const FfxDofConstants& constants);
 
-// Whether a context of these axes dispatches tile list `list` of a tile-list axis (every list, except the
-// composite's copy class in place, which has nothing to do there).
-bool tileListRuns(Axis axis, uint32_t list, const PermutationAxes& axes);
+// Whether a context of these axes dispatches the list of value `value` of a tile-list axis (every list,
+// except the composite's copy class in place, which has nothing to do there).
+bool tileListRuns(Axis axis, uint32_t value, const PermutationAxes& axes);
 
 // The per-frame values added to the context's constants. resetAutofocus: autofocus ignores its
 // previous distance (ffxDofContextResetAutofocus).

@@ -8,5 +8,5 @@
 layout(local_size_x = FFX_DOF_GROUP_THREADS, local_size_y = 1, local_size_z = 1) in;
 void main()
 {
-    ffxDofBlur(gl_WorkGroupID.xy, gl_LocalInvocationIndex);
+    ffxDofBlur(FFX_DOF_OPTION_BLUR_CLASS, gl_WorkGroupID.x, gl_LocalInvocationIndex);
 }

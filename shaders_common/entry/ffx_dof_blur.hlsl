@@ -7,5 +7,5 @@ FFX_DOF_WAVE_SIZE_ATTRIBUTE
 [numthreads(FFX_DOF_GROUP_THREADS, 1, 1)]
 void main(uint3 groupId : SV_GroupID, uint localIndex : SV_GroupIndex)
 {
-    ffxDofBlur(groupId.xy, localIndex);
+    ffxDofBlur(FFX_DOF_OPTION_BLUR_CLASS, groupId.x, localIndex);
 }

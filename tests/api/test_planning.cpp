@@ -8,6 +8,7 @@
 
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <string>
@@ -106,37 +107,60 @@ TEST_CASE("each pass runs the permutation of the context's axes") {
         GENERATE(0u, uint32_t(FFX_DOF_REVERSE_DEPTH | FFX_DOF_DISABLE_RING_MERGE), uint32_t(FFX_DOF_OUTPUT_PRE_INIT));
     const bool half = GENERATE(false, true);
     const ContextPlan plan = contextPlan(64, 48, flags, 0.05f, half);
+    std::vector<uint32_t> allLists;
     for (uint32_t p = 0; p < kPassCount; ++p) {
         const PlannedPass& pass = plan.passes[p];
         INFO("pass " << kPassNames[p]);
         REQUIRE(pass.table != nullptr);
         CHECK(std::string(pass.table->pass) == kPassNames[p]);
-        // Without FFX_DOF_ENABLE_APERTURE_SHAPES no axis varies per dispatch; the composite runs one
-        // pipeline per tile list (in place none for the copy class, which has nothing to do there).
+        // Without FFX_DOF_ENABLE_APERTURE_SHAPES no axis varies per dispatch; the blur and the composite run
+        // one pipeline per tile list (in place the composite none for the copy class, which has nothing to do
+        // there).
         const bool inPlace = (flags & FFX_DOF_OUTPUT_PRE_INIT) != 0;
         const bool composite = Pass(p) == Pass::Composite;
-        CHECK(pass.perTileList == composite);
-        REQUIRE(pass.variantCount == (composite ? (inPlace ? 2u : 3u) : 1u));
+        const bool blur = Pass(p) == Pass::Blur;
+        std::vector<uint32_t> classes{0};
+        uint32_t firstList = 0;
+        if (composite) {
+            classes = inPlace ? std::vector<uint32_t>{FFX_DOF_COMPOSITE_CLASS_LAYERS, FFX_DOF_COMPOSITE_CLASS_FULL_RES}
+                              : std::vector<uint32_t>{FFX_DOF_COMPOSITE_CLASS_COPY, FFX_DOF_COMPOSITE_CLASS_LAYERS,
+                                                      FFX_DOF_COMPOSITE_CLASS_FULL_RES};
+            firstList = FFX_DOF_COMPOSITE_TILE_LIST_FIRST;
+        } else if (blur) {
+            classes = {FFX_DOF_BLUR_CLASS_COPY,     FFX_DOF_BLUR_CLASS_EQUAL_FAR, FFX_DOF_BLUR_CLASS_EQUAL_NEAR,
+                       FFX_DOF_BLUR_CLASS_FAR_ONLY, FFX_DOF_BLUR_CLASS_NEAR_ONLY, FFX_DOF_BLUR_CLASS_MIXED};
+            firstList = FFX_DOF_BLUR_TILE_LIST_FIRST;
+        }
+        CHECK(pass.perTileList == (composite || blur));
+        REQUIRE(pass.variantCount == classes.size());
+        CHECK(pass.tileListVariants == pass.variantCount);
+        std::vector<uint32_t> lists;
         for (uint32_t v = 0; v < pass.variantCount; ++v) {
             const PassVariant& variant = pass.variants[v];
-            if (composite) {
-                CHECK(variant.dispatchValue ==
-                      (inPlace ? std::vector<uint32_t>{FFX_DOF_COMPOSITE_CLASS_LAYERS, FFX_DOF_COMPOSITE_CLASS_FULL_RES}
-                               : std::vector<uint32_t>{FFX_DOF_COMPOSITE_CLASS_COPY, FFX_DOF_COMPOSITE_CLASS_LAYERS,
-                                                       FFX_DOF_COMPOSITE_CLASS_FULL_RES})[v]);
+            CHECK(variant.dispatchValue == 0);
+            if (composite || blur) {
+                CHECK(variant.tileListValue == classes[v]);
+                CHECK(variant.tileList == firstList + classes[v]);
+                lists.push_back(variant.tileList);
             }
             for (const shaders::Define& define : shaders::permutationDefines(*pass.table, variant.permutationIndex)) {
                 uint32_t expected = 99;
                 for (uint32_t a = 0; a < kAxisCount; ++a) {
                     if (define.first == kAxisMacros[a])
-                        expected = kAxisRunsPerTileList[a] ? variant.dispatchValue : axisValue(plan.axes, Axis(a));
+                        expected = kAxisRunsPerTileList[a] ? variant.tileListValue : axisValue(plan.axes, Axis(a));
                 }
                 CHECK(define.second == expected);
             }
             CHECK(variant.blob == &pass.table->blobs[pass.table->permutationToBlob[variant.permutationIndex]]);
         }
+        // Each list is dispatched by one pass at most, and lies within TILE_LIST_ARGS.
+        for (uint32_t list : lists) {
+            CHECK(list < FFX_DOF_TILE_LIST_COUNT);
+            CHECK(std::count(allLists.begin(), allLists.end(), list) == 0);
+        }
+        allLists.insert(allLists.end(), lists.begin(), lists.end());
         // Dispatched indirectly from TILE_LIST_ARGS, which it does not bind.
-        CHECK(pass.indirect == (composite ? resourceBit(Resource::TileListArgs) : 0u));
+        CHECK(pass.indirect == (composite || blur ? resourceBit(Resource::TileListArgs) : 0u));
     }
 }
 
@@ -168,16 +192,24 @@ TEST_CASE("a shaped context runs the compact blur where the dispatch's aperture 
     const ContextPlan context =
         contextPlan(64, 48, FFX_DOF_ENABLE_APERTURE_SHAPES | (ringMerge ? 0u : uint32_t(FFX_DOF_DISABLE_RING_MERGE)));
     const PlannedPass& blur = context.passes[uint32_t(Pass::Blur)];
-    REQUIRE(blur.variantCount == 2);
-    // Both variants keep the context's other axes; they differ in the aperture axis alone.
-    for (uint32_t v = 0; v < 2; ++v) {
+    // A group of one pipeline per tile list for each aperture value, the lists innermost.
+    const uint32_t lists = FFX_DOF_BLUR_CLASS_COUNT;
+    REQUIRE(blur.tileListVariants == lists);
+    REQUIRE(blur.variantCount == 2 * lists);
+    // Every variant keeps the context's other axes; a group differs from the other in the aperture axis alone.
+    for (uint32_t v = 0; v < blur.variantCount; ++v) {
         CHECK(variantAxisValue(blur, v, "FFX_DOF_OPTION_DISABLE_RING_MERGE") == (ringMerge ? 0u : 1u));
         CHECK(variantAxisValue(blur, v, "FFX_DOF_OPTION_APERTURE_SHAPES") == blur.variants[v].dispatchValue);
+        CHECK(variantAxisValue(blur, v, "FFX_DOF_OPTION_BLUR_CLASS") == v % lists);
+        CHECK(blur.variants[v].dispatchValue == blur.variants[v - v % lists].dispatchValue);
+        CHECK(blur.variants[v].tileList == FFX_DOF_BLUR_TILE_LIST_FIRST + v % lists);
     }
-    CHECK(blur.variants[0].blob != blur.variants[1].blob);
+    CHECK(blur.variants[0].dispatchValue != blur.variants[lists].dispatchValue);
+    CHECK(blur.variants[0].blob != blur.variants[lists].blob);
     for (uint32_t p = 0; p < kPassCount; ++p)
         CHECK(context.passes[p].variantCount ==
-              (Pass(p) == Pass::Blur ? 2u : (Pass(p) == Pass::Composite ? uint32_t(FFX_DOF_TILE_LIST_COUNT) : 1u)));
+              (Pass(p) == Pass::Blur ? 2u * lists
+                                     : (Pass(p) == Pass::Composite ? uint32_t(FFX_DOF_COMPOSITE_CLASS_COUNT) : 1u)));
 
     const uint32_t compact = FFX_DOF_APERTURE_SHAPES_COMPACT;
     const uint32_t any = FFX_DOF_APERTURE_SHAPES_ANY;

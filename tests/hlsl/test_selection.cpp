@@ -47,31 +47,46 @@ const shaders::PassTable* tableFor(bool hlsl, const char* pass) {
     return hlsl ? shaders::hlsl::findPassTable(pass) : shaders::glsl::findPassTable(pass);
 }
 
-// The values of the axis a context of `options` runs `pass` with several pipelines of: the aperture axis
-// (0 without shapes; with them, every value of its per-dispatch list, kAxisDispatchValues from the
-// permutations JSON) or the composite's class (one pipeline per tile list; in place none for the copy).
-std::vector<uint32_t> variantValues(const char* pass, const Options& options) {
-    if (std::strcmp(pass, "composite") == 0) {
-        if (options.inPlace) return {FFX_DOF_COMPOSITE_CLASS_LAYERS, FFX_DOF_COMPOSITE_CLASS_FULL_RES};
-        return {FFX_DOF_COMPOSITE_CLASS_COPY, FFX_DOF_COMPOSITE_CLASS_LAYERS, FFX_DOF_COMPOSITE_CLASS_FULL_RES};
-    }
+// One pipeline of a pass: its aperture axis value and its tile class (0 for a pass without the axis).
+struct Variant {
+    uint32_t aperture = 0;
+    uint32_t tileClass = 0;
+};
+
+// The aperture values a context of `options` makes blurs of: 0 without shapes; with them, every value of
+// the axis's per-dispatch list (kAxisDispatchValues from the permutations JSON).
+std::vector<uint32_t> apertureValues(const Options& options) {
     if (!options.apertureShapes) return {0u};
-    for (uint32_t p = 0; p < kPassCount; ++p) {
-        if (std::strcmp(kPassNames[p], pass) != 0) continue;
-        for (uint32_t a = 0; a < kPassAxisCount[p]; ++a) {
-            const Axis axis = kPassAxes[p][a];
-            const AxisDispatchValues& perDispatch = kAxisDispatchValues[uint32_t(axis)];
-            if (std::strcmp(kAxisMacros[uint32_t(axis)], "FFX_DOF_OPTION_APERTURE_SHAPES") == 0 &&
-                perDispatch.count > 0)
-                return std::vector<uint32_t>(perDispatch.values, perDispatch.values + perDispatch.count);
-        }
+    for (uint32_t a = 0; a < kAxisCount; ++a) {
+        const AxisDispatchValues& perDispatch = kAxisDispatchValues[a];
+        if (std::strcmp(kAxisMacros[a], "FFX_DOF_OPTION_APERTURE_SHAPES") == 0 && perDispatch.count > 0)
+            return std::vector<uint32_t>(perDispatch.values, perDispatch.values + perDispatch.count);
     }
     return {1u};
 }
 
-// The blob the options call for: each axis the table has gets the options' value (the aperture axis
-// or the composite's class: `variantValue`, one of variantValues).
-const shaders::Blob& expectedBlob(const shaders::PassTable& table, const Options& options, uint32_t variantValue) {
+// The pipelines a context of `options` makes of `pass`: the blur one per aperture value and tile class,
+// the composite one per tile class (in place none for the copy), the others one.
+std::vector<Variant> variantsOf(const char* pass, const Options& options) {
+    std::vector<Variant> variants;
+    if (std::strcmp(pass, "composite") == 0) {
+        for (uint32_t tileClass :
+             {FFX_DOF_COMPOSITE_CLASS_COPY, FFX_DOF_COMPOSITE_CLASS_LAYERS, FFX_DOF_COMPOSITE_CLASS_FULL_RES}) {
+            if (!(options.inPlace && tileClass == FFX_DOF_COMPOSITE_CLASS_COPY)) variants.push_back({0u, tileClass});
+        }
+    } else if (std::strcmp(pass, "blur") == 0) {
+        for (uint32_t aperture : apertureValues(options))
+            for (uint32_t tileClass = 0; tileClass < FFX_DOF_BLUR_CLASS_COUNT; ++tileClass)
+                variants.push_back({aperture, tileClass});
+    } else {
+        variants.push_back({});
+    }
+    return variants;
+}
+
+// The blob the options call for: each axis the table has gets the options' value, and the aperture axis
+// and the tile class the variant's.
+const shaders::Blob& expectedBlob(const shaders::PassTable& table, const Options& options, const Variant& variant) {
     std::vector<shaders::Define> key;
     for (uint32_t a = 0; a < table.axisCount; ++a) {
         const std::string macro = table.axes[a].macro;
@@ -84,8 +99,10 @@ const shaders::Blob& expectedBlob(const shaders::PassTable& table, const Options
             value = options.ringMerge ? 0 : 1;
         else if (macro == "FFX_DOF_OPTION_OUTPUT_PRE_INIT")
             value = options.inPlace;
-        else if (macro == "FFX_DOF_OPTION_APERTURE_SHAPES" || macro == "FFX_DOF_OPTION_COMPOSITE_CLASS")
-            value = variantValue;
+        else if (macro == "FFX_DOF_OPTION_APERTURE_SHAPES")
+            value = variant.aperture;
+        else if (macro == "FFX_DOF_OPTION_COMPOSITE_CLASS" || macro == "FFX_DOF_OPTION_BLUR_CLASS")
+            value = variant.tileClass;
         else if (macro != "FFX_DOF_OPTION_WAVE64")
             FAIL("axis " << macro << " is unknown to this test");
         key.emplace_back(macro, value);
@@ -137,18 +154,17 @@ TEST_CASE("the backend creates its pipelines from the blobs of the chosen langua
         ffxDofBackendDestroy(backend);
         requireNoValidationMessages(device, options.hlsl ? "HLSL pipelines" : "GLSL pipelines");
 
-        // One module per pipeline, each exactly the expected blob of the chosen language: one per pass, but
-        // two blurs in a shaped context (the general and the compact aperture's, chosen per dispatch) and a
-        // composite per tile list.
+        // One module per pipeline, each exactly the expected blob of the chosen language: one per pass, but a
+        // blur per tile list, twice in a shaped context (the general and the compact aperture's, chosen per
+        // dispatch), and a composite per tile list.
         std::vector<const shaders::Blob*> expected;
         for (uint32_t t = 0; t < shaders::glsl::kPassTableCount; ++t) {
             const shaders::PassTable* own = tableFor(options.hlsl, shaders::glsl::kPassTables[t]->pass);
             REQUIRE(own != nullptr);
-            const std::vector<uint32_t> values = variantValues(own->pass, options);
-            // The blur of a shaped context runs the general and the compact gauge.
-            if (options.apertureShapes && std::strcmp(own->pass, "blur") == 0) CHECK(values.size() >= 2);
-            for (uint32_t value : values) expected.push_back(&expectedBlob(*own, options, value));
+            for (const Variant& variant : variantsOf(own->pass, options))
+                expected.push_back(&expectedBlob(*own, options, variant));
         }
+        if (options.apertureShapes) CHECK(apertureValues(options).size() >= 2);
         REQUIRE(recordedModules.size() == expected.size());
         for (const std::vector<uint32_t>& module : recordedModules) {
             bool matched = false;

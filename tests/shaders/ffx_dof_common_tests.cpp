@@ -1131,6 +1131,49 @@ TEST_CASE("Colors are rounded to nearest before a packed-float store", "[storage
     CHECK(float(rounded.z) == 1.0f);  // blue keeps 5 bits: 3/256 is below half of 1/32
 }
 
+TEST_CASE("Two tile lists sharing an array never meet, and each pass's lists have arrays of their own", "[tiles]") {
+    for (const FfxUInt32 tiles : {1u, 2u, 7u, 8160u}) {
+        INFO(tiles << " tiles");
+        for (FfxUInt32 pair = 0; pair < FFX_DOF_TILE_LIST_ARRAYS; ++pair) {
+            // Full between them, split anywhere: every word of the pair's array once, none outside it.
+            for (const FfxUInt32 front : {0u, tiles / 3u, tiles}) {
+                std::set<FfxUInt32> words;
+                for (FfxUInt32 i = 0; i < front; ++i) words.insert(ffxDofTileListWord(2u * pair, i, tiles));
+                for (FfxUInt32 i = 0; i < tiles - front; ++i)
+                    words.insert(ffxDofTileListWord(2u * pair + 1u, i, tiles));
+                REQUIRE(words.size() == tiles);
+                CHECK(*words.begin() == pair * tiles);
+                CHECK(*words.rbegin() == pair * tiles + tiles - 1u);
+            }
+        }
+    }
+    // The lists of a pair belong to one pass.
+    for (FfxUInt32 list = 0; list < FFX_DOF_TILE_LIST_COUNT; ++list) {
+        const bool blurList = list < FFX_DOF_BLUR_TILE_LIST_FIRST + FFX_DOF_BLUR_CLASS_COUNT;
+        const bool pairedBlurList = (list ^ 1u) < FFX_DOF_BLUR_TILE_LIST_FIRST + FFX_DOF_BLUR_CLASS_COUNT;
+        CHECK((blurList == pairedBlurList || (list ^ 1u) >= FFX_DOF_TILE_LIST_COUNT));
+    }
+}
+
+TEST_CASE("Dilate's workgroups cover every block of tiles once, in transposed order", "[tiles]") {
+    for (const FfxUInt32x2 tileCount : {FfxUInt32x2(1u, 1u), FfxUInt32x2(120u, 68u), FfxUInt32x2(9u, 17u),
+                                        FfxUInt32x2(240u, 135u), FfxUInt32x2(3u, 40u)}) {
+        INFO("tiles " << tileCount.x << " x " << tileCount.y);
+        const FfxUInt32x2 blocks = (tileCount + FfxUInt32x2(7u, 7u)) / 8u;
+        std::set<std::pair<FfxUInt32, FfxUInt32>> seen;
+        for (FfxUInt32 y = 0; y < blocks.y; ++y)
+            for (FfxUInt32 x = 0; x < blocks.x; ++x) {
+                const FfxUInt32x2 block = ffxDofDilateBlock(FfxUInt32x2(x, y), tileCount);
+                REQUIRE(block.x < blocks.x);
+                REQUIRE(block.y < blocks.y);
+                seen.insert({block.x, block.y});
+            }
+        CHECK(seen.size() == size_t(blocks.x) * blocks.y);
+        // Workgroups of one row (one thread's share of a dispatch, in image order) reach down the image.
+        if (blocks.y > 1 && blocks.x > 1) CHECK(ffxDofDilateBlock(FfxUInt32x2(blocks.x - 1u, 0u), tileCount).y > 0u);
+    }
+}
+
 TEST_CASE("Blur tile classes from the dilated range and the kernel footprint", "[tiles]") {
     // (far, near, footprint min, footprint max) -> class, each case named by what decides it.
     struct Case {
@@ -1138,23 +1181,23 @@ TEST_CASE("Blur tile classes from the dilated range and the kernel footprint", "
         FfxUInt32 expected;
     };
     const Case cases[] = {
-        {{-0.4f, 0.3f, -0.4f, 0.3f}, FFX_DOF_TILE_CLASS_COPY},        // every kernel below 0.5
-        {{-0.4f, 0.3f, -9.0f, 9.0f}, FFX_DOF_TILE_CLASS_COPY},        // non-reaching tiles do not matter
-        {{-6.0f, -5.95f, -6.0f, -5.95f}, FFX_DOF_TILE_CLASS_EQUAL},   // flat far field
-        {{-6.0f, -5.9f, -6.0f, -5.9f}, FFX_DOF_TILE_CLASS_EQUAL},     // exactly the spread
-        {{4.0f, 4.05f, 4.0f, 4.05f}, FFX_DOF_TILE_CLASS_EQUAL},       // flat near field
-        {{-6.0f, -5.95f, -6.0f, 0.0f}, FFX_DOF_TILE_CLASS_FAR_ONLY},  // an in-focus tile in the footprint
-        {{-6.0f, -3.0f, -6.0f, -3.0f}, FFX_DOF_TILE_CLASS_FAR_ONLY},  // far gradient
-        {{-6.0f, 0.4f, -6.0f, 8.0f}, FFX_DOF_TILE_CLASS_FAR_ONLY},    // near tiles read but not reaching
-        {{3.0f, 6.0f, 3.0f, 6.0f}, FFX_DOF_TILE_CLASS_NEAR_ONLY},     // near gradient
-        {{0.5f, 6.0f, 0.5f, 6.0f}, FFX_DOF_TILE_CLASS_NEAR_ONLY},     // near threshold is near
-        {{-6.0f, 6.0f, -6.0f, 6.0f}, FFX_DOF_TILE_CLASS_MIXED},       // near over far
-        {{0.0f, 4.0f, 0.0f, 4.0f}, FFX_DOF_TILE_CLASS_MIXED},         // near over in focus
-        {{0.45f, 0.5f, 0.45f, 0.5f}, FFX_DOF_TILE_CLASS_MIXED},       // within the spread but on both sides
+        {{-0.4f, 0.3f, -0.4f, 0.3f}, FFX_DOF_BLUR_CLASS_COPY},           // every kernel below 0.5
+        {{-0.4f, 0.3f, -9.0f, 9.0f}, FFX_DOF_BLUR_CLASS_COPY},           // non-reaching tiles do not matter
+        {{-6.0f, -5.95f, -6.0f, -5.95f}, FFX_DOF_BLUR_CLASS_EQUAL_FAR},  // flat far field
+        {{-6.0f, -5.9f, -6.0f, -5.9f}, FFX_DOF_BLUR_CLASS_EQUAL_FAR},    // exactly the spread
+        {{4.0f, 4.05f, 4.0f, 4.05f}, FFX_DOF_BLUR_CLASS_EQUAL_NEAR},     // flat near field
+        {{-6.0f, -5.95f, -6.0f, 0.0f}, FFX_DOF_BLUR_CLASS_FAR_ONLY},     // an in-focus tile in the footprint
+        {{-6.0f, -3.0f, -6.0f, -3.0f}, FFX_DOF_BLUR_CLASS_FAR_ONLY},     // far gradient
+        {{-6.0f, 0.4f, -6.0f, 8.0f}, FFX_DOF_BLUR_CLASS_FAR_ONLY},       // near tiles read but not reaching
+        {{3.0f, 6.0f, 3.0f, 6.0f}, FFX_DOF_BLUR_CLASS_NEAR_ONLY},        // near gradient
+        {{0.5f, 6.0f, 0.5f, 6.0f}, FFX_DOF_BLUR_CLASS_NEAR_ONLY},        // near threshold is near
+        {{-6.0f, 6.0f, -6.0f, 6.0f}, FFX_DOF_BLUR_CLASS_MIXED},          // near over far
+        {{0.0f, 4.0f, 0.0f, 4.0f}, FFX_DOF_BLUR_CLASS_MIXED},            // near over in focus
+        {{0.45f, 0.5f, 0.45f, 0.5f}, FFX_DOF_BLUR_CLASS_MIXED},          // within the spread but on both sides
     };
     for (const Case& c : cases) {
         INFO("dilated (" << c.dilated.x << ", " << c.dilated.y << ", " << c.dilated.z << ", " << c.dilated.w << ")");
-        CHECK(ffxDofClassifyTile(c.dilated) == c.expected);
+        CHECK(ffxDofBlurTileClass(c.dilated) == c.expected);
     }
 }
 

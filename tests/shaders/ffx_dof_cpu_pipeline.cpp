@@ -38,6 +38,9 @@ struct Image {
     }
 };
 
+// TILE_LISTS words nothing has written (no packed tile: tile coordinates stay far below 0xbeef).
+constexpr uint32_t kUnwrittenListWord = 0xdeadbeefu;
+
 struct State {
     FfxDofConstants constants{};
     const ffxdoftest::Scene* scene = nullptr;
@@ -228,16 +231,19 @@ void ffxDofStoreTileListArgs(FfxUInt32 list, FfxUInt32x3 groupCounts) {
     for (uint32_t w = 0; w < 3; ++w)
         g_state->tileListArgs[list * FFX_DOF_TILE_LIST_ARGS_WORDS + w].store(groupCounts[w]);
 }
-void ffxDofAppendToTileList(FfxUInt32 list, FfxUInt32 packedTile, FfxUInt32 tilesPerList) {
+FfxUInt32 ffxDofCountIntoTileList(FfxUInt32 list) {
     if (list >= FFX_DOF_TILE_LIST_COUNT) throw std::out_of_range("tile list");
-    const uint32_t index = g_state->tileListArgs[list * FFX_DOF_TILE_LIST_ARGS_WORDS].fetch_add(1);
-    if (index >= tilesPerList) throw std::out_of_range("tile list full");
-    g_state->tileLists.at(size_t(list) * tilesPerList + index) = packedTile;
+    return g_state->tileListArgs[list * FFX_DOF_TILE_LIST_ARGS_WORDS].fetch_add(1);
 }
-FfxUInt32 ffxDofLoadListedTile(FfxUInt32 list, FfxUInt32 index, FfxUInt32 tilesPerList) {
-    if (index >= g_state->tileListArgs[list * FFX_DOF_TILE_LIST_ARGS_WORDS].load())
-        throw std::out_of_range("tile list read past its count");
-    return g_state->tileLists.at(size_t(list) * tilesPerList + index);
+void ffxDofStoreTileListWord(FfxUInt32 word, FfxUInt32 packedTile) {
+    // Two lists sharing an array must never meet: each word is written once.
+    if (g_state->tileLists.at(word) != kUnwrittenListWord) throw std::logic_error("tile list word written twice");
+    g_state->tileLists.at(word) = packedTile;
+}
+FfxUInt32 ffxDofLoadTileListWord(FfxUInt32 word) {
+    const FfxUInt32 packed = g_state->tileLists.at(word);
+    if (packed == kUnwrittenListWord) throw std::out_of_range("tile list read past its entries");
+    return packed;
 }
 
 namespace ffxdoftest {
@@ -270,7 +276,7 @@ std::vector<glm::vec4> runPipeline(const Scene& scene, const Settings& settings,
     state.farColor.resize(k.halfSize.x, k.halfSize.y);
     state.layerAlpha.resize(k.halfSize.x, k.halfSize.y);
     state.output.resize(scene.width, scene.height);
-    state.tileLists.assign(ffxdof::tileListsWordCount(k.tileCount.x, k.tileCount.y), 0xdeadbeefu);
+    state.tileLists.assign(ffxdof::tileListsWordCount(k.tileCount.x, k.tileCount.y), kUnwrittenListWord);
 
     // Group counts from the dispatch geometry of ffx_dof_resources.h.
     auto groups = [](uint32_t domain, uint32_t extent) { return ceilDiv(domain, extent); };
@@ -283,28 +289,38 @@ std::vector<glm::vec4> runPipeline(const Scene& scene, const Settings& settings,
     float colorScale = ffxDofAsFloat(state.globals[FFX_DOF_GLOBALS_COLOR_SCALE].load());
     runGroups(groups(k.tileCount.x, FFX_DOF_DILATE_GROUP_EXTENT), groups(k.tileCount.y, FFX_DOF_DILATE_GROUP_EXTENT),
               ffxDofDilate);
-    if (settings.forceMixedBlurPath) {
-        runGroups(groups(k.halfSize.x, FFX_DOF_BLUR_GROUP_EXTENT), groups(k.halfSize.y, FFX_DOF_BLUR_GROUP_EXTENT),
-                  [](FfxUInt32x2 group, FfxUInt32 local) {
-                      ffxDofBlurTile(group, local, ffxDofLoadDilatedTile(group), FFX_DOF_TILE_CLASS_MIXED);
-                  });
-    } else {
-        runGroups(groups(k.halfSize.x, FFX_DOF_BLUR_GROUP_EXTENT), groups(k.halfSize.y, FFX_DOF_BLUR_GROUP_EXTENT),
-                  ffxDofBlur);
-    }
-    // One indirect dispatch per class, over the tiles dilate listed under it (every tile in exactly one).
-    uint32_t listedTiles = 0;
-    for (uint32_t compositeClass = 0; compositeClass < FFX_DOF_TILE_LIST_COUNT; ++compositeClass) {
-        uint32_t args[3];
-        for (uint32_t w = 0; w < 3; ++w)
-            args[w] = state.tileListArgs[compositeClass * FFX_DOF_TILE_LIST_ARGS_WORDS + w].load();
-        if (args[1] != 1 || args[2] != 1) throw std::logic_error("tile list dispatch arguments not reset");
-        listedTiles += args[0];
-        runGroups(args[0], 1, [compositeClass](FfxUInt32x2 group, FfxUInt32 local) {
-            ffxDofComposite(compositeClass, group.x, local);
-        });
-    }
-    if (listedTiles != k.tileCount.x * k.tileCount.y) throw std::logic_error("not every tile is listed once");
+    // One indirect dispatch per class and pass, over the tiles dilate listed under it (every tile in
+    // exactly one list of each pass).
+    auto runTileLists = [&state, &k](uint32_t firstList, uint32_t classCount, auto&& runListedGroup) {
+        uint32_t listedTiles = 0;
+        for (uint32_t tileClass = 0; tileClass < classCount; ++tileClass) {
+            uint32_t args[3];
+            for (uint32_t w = 0; w < 3; ++w)
+                args[w] = state.tileListArgs[(firstList + tileClass) * FFX_DOF_TILE_LIST_ARGS_WORDS + w].load();
+            if (args[1] != 1 || args[2] != 1) throw std::logic_error("tile list dispatch arguments not reset");
+            listedTiles += args[0];
+            runGroups(args[0], 1, [tileClass, &runListedGroup](FfxUInt32x2 group, FfxUInt32 local) {
+                runListedGroup(tileClass, group.x, local);
+            });
+        }
+        if (listedTiles != k.tileCount.x * k.tileCount.y) throw std::logic_error("not every tile is listed once");
+    };
+    const bool forceMixed = settings.forceMixedBlurPath;
+    runTileLists(FFX_DOF_BLUR_TILE_LIST_FIRST, FFX_DOF_BLUR_CLASS_COUNT,
+                 [forceMixed](FfxUInt32 blurClass, FfxUInt32 listIndex, FfxUInt32 local) {
+                     if (!forceMixed) {
+                         ffxDofBlur(blurClass, listIndex, local);
+                         return;
+                     }
+                     const FfxUInt32x2 tile =
+                         ffxDofListedTile(FFX_DOF_BLUR_TILE_LIST_FIRST + blurClass, listIndex,
+                                          g_state->constants.tileCount.x * g_state->constants.tileCount.y);
+                     ffxDofBlurTile(tile, local, ffxDofLoadDilatedTile(tile), FFX_DOF_BLUR_CLASS_MIXED);
+                 });
+    runTileLists(FFX_DOF_COMPOSITE_TILE_LIST_FIRST, FFX_DOF_COMPOSITE_CLASS_COUNT,
+                 [](FfxUInt32 compositeClass, FfxUInt32 listIndex, FfxUInt32 local) {
+                     ffxDofComposite(compositeClass, listIndex, local);
+                 });
 
     if (layers) {
         layers->halfWidth = k.halfSize.x;
@@ -316,7 +332,7 @@ std::vector<glm::vec4> runPipeline(const Scene& scene, const Settings& settings,
         layers->dilatedTiles = state.dilatedTiles.texels;
         layers->tileClasses.clear();
         for (const glm::vec4& dilated : state.dilatedTiles.texels)
-            layers->tileClasses.push_back(ffxDofClassifyTile(dilated));
+            layers->tileClasses.push_back(ffxDofBlurTileClass(dilated));
         layers->coc0 = state.halfCoc.texels;
         layers->nearColor = state.nearColor.texels;
         layers->farColor = state.farColor.texels;

@@ -24,7 +24,7 @@ struct Settings {
     float cocLimit = 32.0f;
     uint32_t maxRings = 10;
     uint32_t frameIndex = 0;
-    // Runs every blur tile on the mixed path instead of its class's (ffxDofClassifyTile): the
+    // Runs every blur tile on the mixed path instead of its class's (ffxDofBlurTileClass): the
     // reference the cheaper paths are compared with.
     bool forceMixedBlurPath = false;
     // The aperture, as FfxDofDispatchDescription::pAperture gives it (the SDK sets the constants).
@@ -36,7 +36,7 @@ struct Layers {
     std::vector<glm::vec2> tiles;         // pass 1
     std::vector<float> tileColorPeaks;    // pass 1: TILES' z
     std::vector<glm::vec4> dilatedTiles;  // pass 3: far, near, footprint min, footprint max
-    std::vector<uint32_t> tileClasses;    // pass 4: FFX_DOF_TILE_CLASS_* of each tile (as classified)
+    std::vector<uint32_t> tileClasses;    // pass 4: FFX_DOF_BLUR_CLASS_* of each tile (as classified)
     std::vector<float> coc0;              // MIP 0 of COC_MIPS
     std::vector<glm::vec3> nearColor, farColor;
     std::vector<glm::vec2> layerAlpha;

@@ -194,7 +194,7 @@ TEST_CASE("Dilation never under-dilates (brute force over tile pairs)", "[pipeli
 
 TEST_CASE("Every blur tile class occurs, and each path gives what the mixed path gives", "[pipeline]") {
     // Textured everywhere, so that a difference in weights shows in the colors.
-    Scene scene = makeScene(448, 224, kBackground, -6.0f);  // flat far field: equal weights
+    Scene scene = makeScene(448, 224, kBackground, -6.0f);  // flat far field: equal weights (far)
     for (size_t i = 0; i < scene.color.size(); ++i) {
         uint32_t h = uint32_t(i) * 2654435761u;
         scene.color[i] = glm::vec4(float(h >> 24) / 255.0f, float((h >> 16) & 255u) / 255.0f, 0.5f, 1.0f);
@@ -213,12 +213,14 @@ TEST_CASE("Every blur tile class occurs, and each path gives what the mixed path
     settings.forceMixedBlurPath = true;
     ffxdoftest::runPipeline(scene, settings, &mixed);
 
-    uint32_t tilesOfClass[5] = {};
+    uint32_t tilesOfClass[FFX_DOF_BLUR_CLASS_COUNT] = {};
     for (uint32_t tileClass : classified.tileClasses) ++tilesOfClass[tileClass];
-    INFO("tiles: copy " << tilesOfClass[FFX_DOF_TILE_CLASS_COPY] << ", equal " << tilesOfClass[FFX_DOF_TILE_CLASS_EQUAL]
-                        << ", far-only " << tilesOfClass[FFX_DOF_TILE_CLASS_FAR_ONLY] << ", near-only "
-                        << tilesOfClass[FFX_DOF_TILE_CLASS_NEAR_ONLY] << ", mixed "
-                        << tilesOfClass[FFX_DOF_TILE_CLASS_MIXED]);
+    INFO("tiles: copy " << tilesOfClass[FFX_DOF_BLUR_CLASS_COPY] << ", equal far "
+                        << tilesOfClass[FFX_DOF_BLUR_CLASS_EQUAL_FAR] << ", equal near "
+                        << tilesOfClass[FFX_DOF_BLUR_CLASS_EQUAL_NEAR] << ", far-only "
+                        << tilesOfClass[FFX_DOF_BLUR_CLASS_FAR_ONLY] << ", near-only "
+                        << tilesOfClass[FFX_DOF_BLUR_CLASS_NEAR_ONLY] << ", mixed "
+                        << tilesOfClass[FFX_DOF_BLUR_CLASS_MIXED]);
     for (uint32_t count : tilesOfClass) CHECK(count >= 2u);
 
     // Far-only, near-only and copy leave out only sums that are zero on their tiles: bit-identical.
@@ -235,9 +237,9 @@ TEST_CASE("Every blur tile class occurs, and each path gives what the mixed path
             glm::vec2 alphaDiff = glm::abs(classified.layerAlpha[i] - mixed.layerAlpha[i]);
             float worst = std::max(
                 {nearDiff.x, nearDiff.y, nearDiff.z, farDiff.x, farDiff.y, farDiff.z, alphaDiff.x, alphaDiff.y});
-            if (tileClass == FFX_DOF_TILE_CLASS_EQUAL)
+            if (tileClass == FFX_DOF_BLUR_CLASS_EQUAL_FAR || tileClass == FFX_DOF_BLUR_CLASS_EQUAL_NEAR)
                 worstEqual = std::max(worstEqual, worst);
-            else if (tileClass != FFX_DOF_TILE_CLASS_MIXED)
+            else if (tileClass != FFX_DOF_BLUR_CLASS_MIXED)
                 differingExact += worst != 0.0f;
         }
     CHECK(differingExact == 0u);

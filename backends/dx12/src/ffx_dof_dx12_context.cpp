@@ -454,9 +454,11 @@ FfxDofErrorCode Context::dispatch(const DispatchPlan& plan) {
         tracker.beforePass(slots, pass, uavBuffers);
         tracker.flush(list);
         if (pass.perTileList) {
-            // Every variant, over the tiles dilate listed for it (ffx_dof_resources.h, TILE_LISTS).
-            for (uint32_t v = 0; v < pass.variantCount; ++v) {
-                if (v > 0 && plan.outputIsColor) {
+            // Every variant of the dispatch's group, over the tiles dilate listed for it (ffx_dof_resources.h,
+            // TILE_LISTS).
+            for (uint32_t list = 0; list < pass.tileListVariants; ++list) {
+                const uint32_t v = plan.variants[p] + list;
+                if (list > 0 && plan.outputIsColor && (pass.writes & resourceBit(Resource::Output)) != 0) {
                     // In place a composite workgroup reads the input only within its own tile, which no other
                     // workgroup writes; ordered all the same, as on Vulkan.
                     D3D12_RESOURCE_BARRIER written{};
@@ -467,7 +469,7 @@ FfxDofErrorCode Context::dispatch(const DispatchPlan& plan) {
                 list->SetPipelineState(pipelines_[p][v].Get());
                 list->ExecuteIndirect(backend_.tileListSignature(), 1,
                                       buffers_[FFX_DOF_UAV_BUFFER_TILE_LIST_ARGS].Get(),
-                                      tileListArgsOffset(pass.variants[v].dispatchValue), nullptr, 0);
+                                      tileListArgsOffset(pass.variants[v].tileList), nullptr, 0);
             }
         } else {
             list->SetPipelineState(pipelines_[p][plan.variants[p]].Get());

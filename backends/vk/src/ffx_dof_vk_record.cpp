@@ -210,9 +210,11 @@ FfxDofErrorCode ContextVK::dispatch(const DispatchPlan& dispatch) {
         fn.vkCmdPushConstants(commandBuffer, pipelineLayouts_[pass], VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof(constants),
                               &constants);
         if (planned.perTileList) {
-            // Every variant, over the tiles dilate listed for it (ffx_dof_resources.h, TILE_LISTS).
-            for (uint32_t v = 0; v < planned.variantCount; ++v) {
-                if (v > 0 && dispatch.outputIsColor) {
+            // Every variant of the dispatch's group, over the tiles dilate listed for it (ffx_dof_resources.h,
+            // TILE_LISTS).
+            for (uint32_t list = 0; list < planned.tileListVariants; ++list) {
+                const uint32_t v = dispatch.variants[pass] + list;
+                if (list > 0 && dispatch.outputIsColor && (planned.writes & resourceBit(Resource::Output)) != 0) {
                     // In place a composite workgroup reads the input only within its own tile, which no other
                     // workgroup writes (ffx_dof_composite.h), but synchronization validation follows whole
                     // images: the earlier lists' writes before the next list's reads.
@@ -225,7 +227,7 @@ FfxDofErrorCode ContextVK::dispatch(const DispatchPlan& dispatch) {
                 }
                 fn.vkCmdBindPipeline(commandBuffer, VK_PIPELINE_BIND_POINT_COMPUTE, pipelines_[pass][v]);
                 fn.vkCmdDispatchIndirect(commandBuffer, tileListArgs(),
-                                         tileListArgsOffset(planned.variants[v].dispatchValue));
+                                         tileListArgsOffset(planned.variants[v].tileList));
             }
         } else {
             fn.vkCmdBindPipeline(commandBuffer, VK_PIPELINE_BIND_POINT_COMPUTE,
