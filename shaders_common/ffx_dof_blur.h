@@ -34,7 +34,8 @@
 // Each class is a pipeline of its own (FFX_DOF_OPTION_BLUR_CLASS), dispatched indirectly over its tile
 // list. One pipeline holding every path, chosen per workgroup, cost lavapipe the paths not taken as
 // well (it runs every `if` under lane masks and every loop once) and the register pressure of the
-// whole: the blur took 1.09 to 1.11 times as long (docs/performance.md, "The blur per tile class").
+// whole: on one lavapipe thread the blur did about 1.15 times the work (docs/performance.md, "The blur per
+// tile class").
 // Ring merging (unless FFX_DOF_OPTION_DISABLE_RING_MERGE) is decided per texel, not per tile: the
 // outermost ring is gathered at full resolution first; where its radii are all within half a pixel
 // of the texel's own (a flat far field), inner rings are gathered from a coarser MIP, 2^log rings at

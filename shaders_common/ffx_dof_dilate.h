@@ -9,7 +9,7 @@
 // Output (DILATED_TILES): x = most negative (far) radius, y = most positive (near) radius among the
 // tile itself and every tile that reaches it; z, w = smallest and largest signed radius of every tile
 // the blur's kernels of this tile can read (ffxDofKernelFootprintRadius): the blur's tile
-// classification (ffxDofClassifyTile) needs them, since a tile that does not reach this one still has
+// classification (ffxDofBlurTileClass) needs them, since a tile that does not reach this one still has
 // its samples read (with zero reach) and so decides whether all sample weights can be equal.
 #ifndef FFX_DOF_DILATE_H
 #define FFX_DOF_DILATE_H
@@ -137,7 +137,7 @@ FFX_DOF_INLINE FfxFloat32x2 ffxDofFootprintRange(FfxUInt32x2 centerTile, FfxUInt
 // The lists come out in the order dilate appends to them, and lavapipe runs each dispatch of the blur and
 // the composite as one contiguous range of workgroups per thread: lists in image order gave each thread
 // one region of the image, and the threads of a class whose costly tiles lie together waited for the
-// slowest (the blur per class took 1.1 times as long as one blur of every class, though it did 0.86
+// slowest (the blur per class took 1.14 times as long as one blur of every class, though it did 0.87
 // times the work; docs/performance.md, "The blur per tile class"). Each block keeps its tiles together.
 FFX_DOF_INLINE FfxUInt32x2 ffxDofDilateBlock(FfxUInt32x2 groupId, FfxUInt32x2 tileCount)
 {

@@ -456,9 +456,9 @@ FfxDofErrorCode Context::dispatch(const DispatchPlan& plan) {
         if (pass.perTileList) {
             // Every variant of the dispatch's group, over the tiles dilate listed for it (ffx_dof_resources.h,
             // TILE_LISTS).
-            for (uint32_t list = 0; list < pass.tileListVariants; ++list) {
-                const uint32_t v = plan.variants[p] + list;
-                if (list > 0 && plan.outputIsColor && (pass.writes & resourceBit(Resource::Output)) != 0) {
+            for (uint32_t listed = 0; listed < pass.tileListVariants; ++listed) {
+                const uint32_t v = plan.variants[p] + listed;
+                if (listed > 0 && plan.outputIsColor && (pass.writes & resourceBit(Resource::Output)) != 0) {
                     // In place a composite workgroup reads the input only within its own tile, which no other
                     // workgroup writes; ordered all the same, as on Vulkan.
                     D3D12_RESOURCE_BARRIER written{};

@@ -212,9 +212,9 @@ FfxDofErrorCode ContextVK::dispatch(const DispatchPlan& dispatch) {
         if (planned.perTileList) {
             // Every variant of the dispatch's group, over the tiles dilate listed for it (ffx_dof_resources.h,
             // TILE_LISTS).
-            for (uint32_t list = 0; list < planned.tileListVariants; ++list) {
-                const uint32_t v = dispatch.variants[pass] + list;
-                if (list > 0 && dispatch.outputIsColor && (planned.writes & resourceBit(Resource::Output)) != 0) {
+            for (uint32_t listed = 0; listed < planned.tileListVariants; ++listed) {
+                const uint32_t v = dispatch.variants[pass] + listed;
+                if (listed > 0 && dispatch.outputIsColor && (planned.writes & resourceBit(Resource::Output)) != 0) {
                     // In place a composite workgroup reads the input only within its own tile, which no other
                     // workgroup writes (ffx_dof_composite.h), but synchronization validation follows whole
                     // images: the earlier lists' writes before the next list's reads.
