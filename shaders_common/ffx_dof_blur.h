@@ -587,7 +587,10 @@ FFX_DOF_INLINE void ffxDofWalkSamples(FFX_DOF_INOUT(FfxDofGather) gather, FFX_DO
         FfxFloat32 farWeight = weight * farShare;
         if (parts.nearField)
         {
-            FfxFloat32 nearWeight = weight - farWeight;
+            // A MIP-0 texel of a quad the near field covers in part carries that share (Near coverage,
+            // ffx_dof_common.h); equal-weight tiles hold none (their tiles are all near or all far).
+            FfxFloat32 coverage = coarse || parts.equalWeights ? 1.0f : ffxDofNearCoverage(coc);
+            FfxFloat32 nearWeight = (weight - farWeight) * coverage;
             gather.nearSum += color * nearWeight;
             gather.nearWeight += nearWeight;
         }

@@ -238,6 +238,44 @@ FFX_DOF_INLINE FfxFloat32 ffxDofRoundForHalfCoc(FfxFloat32 coc)
     return coc < 0.0f ? -rounded : rounded;
 }
 
+// ---- Near coverage ------------------------------------------------------------------------------------
+//
+// A half-res texel holds one radius, and the bilateral reduction keeps the pixels of a quad's reference
+// radius (ffxDofBilateralReduce): a quad of near pixels and pixels behind the near field was a near texel or
+// not, whole. A bar of 1 px across took its quad's whole texel, 2 px of opacity, or vanished, depending on its
+// column (docs/quality.md, thin near bars). Such a quad's MIP-0 texel is now its near pixels alone
+// (ffxDofReduceNearQuad) with their share of the quad, its coverage, in the two lowest mantissa bits of the
+// texel's radius in HALF_COC (a half: near radii keep 8 mantissa bits, 0.4%); the blur weighs the texel's near
+// samples by it. The coarse MIPs keep the bilateral reduction (a 2 px bar at radius 40, read from them by the
+// inner rings, is still a known failure).
+
+// Quads whose nearest pixel has a smaller radius (half-res px) keep the bilateral reduction: a near texel
+// of a few pixels' radius spreads, upsampled, beyond their discs (in-focus pixels of the floor scene
+// changed by up to 12/255 beyond every near radius).
+#define FFX_DOF_NEAR_COVERAGE_MIN_RADIUS 2.0f
+// How much smaller (half-res px) the radius of a partly covered near texel is than its pixels': they lie up
+// to 0.35 half-res px from its centre, and its disc must stay within theirs through the composite's
+// upsampling (with 0.25 the floor scene's in-focus pixels changed by 12/255 beyond every near radius).
+#define FFX_DOF_NEAR_COVERAGE_INSET 0.5f
+#define FFX_DOF_NEAR_COVERAGE_SHIFT 13u  // the half's two lowest mantissa bits, in a float's
+
+// A near radius rounded to a half (ffxDofRoundForHalfCoc) with `coverage` (1/4 to 1, in quarters) in its two
+// lowest mantissa bits, still a half (its R16 float store keeps them). Other radii are returned as they are.
+FFX_DOF_INLINE FfxFloat32 ffxDofPackNearCoverage(FfxFloat32 coc, FfxFloat32 coverage)
+{
+    if (coc < FFX_DOF_NEAR_THRESHOLD)
+        return coc;
+    FfxUInt32 quarters = FfxUInt32(clamp(floor(coverage * 4.0f + 0.5f), 1.0f, 4.0f));
+    FfxUInt32 mask = 3u << FFX_DOF_NEAR_COVERAGE_SHIFT;
+    return ffxDofAsFloat((ffxDofAsUInt(coc) & ~mask) | ((quarters - 1u) << FFX_DOF_NEAR_COVERAGE_SHIFT));
+}
+
+// The coverage of a near radius read from HALF_COC (ffxDofPackNearCoverage).
+FFX_DOF_INLINE FfxFloat32 ffxDofNearCoverage(FfxFloat32 coc)
+{
+    return FfxFloat32(((ffxDofAsUInt(coc) >> FFX_DOF_NEAR_COVERAGE_SHIFT) & 3u) + 1u) * 0.25f;
+}
+
 // ---- HDR range ---------------------------------------------------------------------------------
 
 // The internal colour images are B10G11R11 float (largest finite value 65024) and the 16-bit

@@ -176,6 +176,45 @@ FFX_DOF_INLINE void ffxDofBilateralReduce(FfxDofFloat3 color0, FfxDofFloat3 colo
                                coc, offset);
 }
 
+// The MIP-0 texel of a quad whose nearest pixel is near and which also holds pixels behind the near field
+// (Near coverage, ffx_dof_common.h): its near pixels alone, weighted by their radius's closeness to the
+// nearest (ffxDofBilateralWeight, at least a trace so that every near pixel counts), with the quad's share
+// they cover. `partial` false: the quad is all near, or none of it, or of too small a radius.
+struct FfxDofNearQuad
+{
+    FfxBoolean partial;
+    FfxDofFloat3 color;
+    FfxFloat32 coc;       // their radius, less FFX_DOF_NEAR_COVERAGE_INSET
+    FfxFloat32 coverage;  // near pixels / 4
+};
+FFX_DOF_INLINE FfxFloat32 ffxDofNearQuadWeight(FfxFloat32 nearest, FfxFloat32 coc)
+{
+    return coc >= FFX_DOF_NEAR_THRESHOLD ? max(ffxDofBilateralWeight(nearest, coc), 1e-3f) : 0.0f;
+}
+FFX_DOF_INLINE FfxDofNearQuad ffxDofReduceNearQuad(FfxDofFloat3 color0, FfxDofFloat3 color1, FfxDofFloat3 color2,
+                                                   FfxDofFloat3 color3, FfxFloat32 coc0, FfxFloat32 coc1,
+                                                   FfxFloat32 coc2, FfxFloat32 coc3)
+{
+    FfxDofNearQuad quad;
+    FfxFloat32 nearest = max(max(coc0, coc1), max(coc2, coc3));
+    FfxFloat32 weight0 = ffxDofNearQuadWeight(nearest, coc0);
+    FfxFloat32 weight1 = ffxDofNearQuadWeight(nearest, coc1);
+    FfxFloat32 weight2 = ffxDofNearQuadWeight(nearest, coc2);
+    FfxFloat32 weight3 = ffxDofNearQuadWeight(nearest, coc3);
+    FfxFloat32 nearPixels = (weight0 > 0.0f ? 1.0f : 0.0f) + (weight1 > 0.0f ? 1.0f : 0.0f) +
+                            (weight2 > 0.0f ? 1.0f : 0.0f) + (weight3 > 0.0f ? 1.0f : 0.0f);
+    quad.partial = nearest >= FFX_DOF_NEAR_COVERAGE_MIN_RADIUS && nearPixels < 4.0f;
+    FfxFloat32 normalization = 1.0f / max(weight0 + weight1 + weight2 + weight3, 1e-3f);
+    quad.color = (color0 * FfxDofFloat(weight0) + color1 * FfxDofFloat(weight1) + color2 * FfxDofFloat(weight2) +
+                  color3 * FfxDofFloat(weight3)) *
+                 FfxDofFloat(normalization);
+    quad.coc = max((coc0 * weight0 + coc1 * weight1 + coc2 * weight2 + coc3 * weight3) * normalization -
+                       FFX_DOF_NEAR_COVERAGE_INSET,
+                   FFX_DOF_NEAR_THRESHOLD);
+    quad.coverage = nearPixels * 0.25f;
+    return quad;
+}
+
 // ---- Light rims -------------------------------------------------------------------------------------
 
 // A depth buffer holds one surface per pixel, so the anti-aliased rim of a small light, which the light
@@ -337,10 +376,15 @@ FFX_DOF_INLINE void ffxDofDownsampleColor(FfxUInt32x2 groupId, FfxUInt32 localIn
     FfxFloat32x2 pixelOffset = FfxFloat32x2(0.0f, 0.0f);  // a full-resolution pixel is a point
     ffxDofBilateralReduceLight(ffxDofRgb(input0), ffxDofRgb(input1), ffxDofRgb(input2), ffxDofRgb(input3), coc0, coc1,
                                coc2, coc3, pixelOffset, pixelOffset, pixelOffset, pixelOffset, color, coc, lightOffset);
+    // MIP 0 keeps a partly near quad's near pixels with their coverage; the coarse levels reduce the quad's
+    // bilateral texel, as before.
+    FfxDofNearQuad nearQuad = ffxDofReduceNearQuad(ffxDofRgb(input0), ffxDofRgb(input1), ffxDofRgb(input2),
+                                                   ffxDofRgb(input3), coc0, coc1, coc2, coc3);
     if (texel.x < constants.halfSize.x && texel.y < constants.halfSize.y)
     {
-        ffxDofStoreHalfColor(texel, ffxDofRoundForPackedColor(color));
-        ffxDofStoreHalfCoc(texel, ffxDofRoundForHalfCoc(coc));
+        ffxDofStoreHalfColor(texel, ffxDofRoundForPackedColor(nearQuad.partial ? nearQuad.color : color));
+        ffxDofStoreHalfCoc(texel, ffxDofPackNearCoverage(ffxDofRoundForHalfCoc(nearQuad.partial ? nearQuad.coc : coc),
+                                                         nearQuad.partial ? nearQuad.coverage : 1.0f));
     }
     ffxDofSharedMipColor[localIndex] = color;
     ffxDofSharedMipCoc[localIndex] = coc;

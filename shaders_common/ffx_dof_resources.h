@@ -12,7 +12,8 @@
 // Internal images (sizes at full resolution W x H; half = ceil(W/2) x ceil(H/2);
 // tiles = ceil(half / FFX_DOF_TILE_SIZE)); see docs/technique.md for who writes and reads each:
 //   HALF_COLOR     half, B10G11R11 float     bilateral half-res color (MIP 0 of the color chain)
-//   HALF_COC       half, R16 float           its CoC, signed half-res px
+//   HALF_COC       half, R16 float           its CoC, signed half-res px; a near radius carries its texel's
+//                                            coverage in its two lowest mantissa bits (ffxDofPackNearCoverage)
 //   COARSE_MIPS    quarter (MIP 1 of half), FFX_DOF_OPTION_MAX_MIP - 1 levels, R32G32 uint: level l
 //                                            is MIP l + 1 of the chain, each texel its color, CoC and
 //                                            where in the texel its light lies (ffxDofPackCoarseTexel:

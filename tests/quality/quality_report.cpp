@@ -188,15 +188,22 @@ void writeThinBars(std::ostream& md, vkrun::Device& device, const std::filesyste
                   : (bar.knownFailure() ? "known failure" : "**FAIL**"))
            << " |\n";
     }
-    md << "\nWhy the known failures: the downsample keeps the pixels of a 2x2 quad's reference radius "
-          "(ffxDofBilateralReduce), so a bar narrower than a half-res texel fills its texel or vanishes "
-          "depending on its column (2 or 0 px of opacity), and at radius 40 the inner rings read MIP levels "
-          "whose texels treat a 2 px bar the same way. Tried on 2026-11-27: a quad of near and other pixels "
-          "made a near texel of the quad's mean color (the near pixels spread at their share of it). Every bar "
-          "of 1 to 8 px at both columns summed within 1.3% of its width, and near-object, fence and "
-          "busy-background gained 0.2 dB, but the near field then reached up to a texel farther: in-focus "
-          "pixels of the floor scene beyond any near radius changed by up to 12/255 (the in-focus gate). "
-          "Not kept; a coverage the near layer could weigh its samples by would carry it.\n\n"
+    md << "\nWhy the known failures: at radius 40 the inner rings read MIP levels 1 to 3, whose texels reduce a "
+          "quad bilaterally (ffxDofBilateralReduce keeps the pixels of its reference radius), so a bar of 1 or 2 px "
+          "fills its coarse texel or vanishes there, depending on its column.\n\n"
+          "MIP 0 keeps a quad that the near field covers in part as its near pixels alone, with their share of the "
+          "quad (its coverage, in the two lowest mantissa bits of HALF_COC's half) and a radius 0.5 half-res px "
+          "smaller than theirs, and the blur weighs their near samples by that share (ffxDofReduceNearQuad, "
+          "docs/technique.md, Near coverage). Until 2026-11-29 such a quad was a near texel or not, whole: a bar of "
+          "1 px summed 2 px of opacity or none, depending on its column, at every radius. Since, the bars of 1 px "
+          "at radius 8 to 24 sum within 3.3% of their width; near-object gained 0.12 dB (its near field 0.22), "
+          "fence 0.15 dB (its in-focus pixels 1.7 dB, its near field lost 0.44 and its SSIM 0.005), floor's near "
+          "field lost 0.15 dB, within their gates. With the radius 0.25 px smaller instead of 0.5, or none, the "
+          "near texels at the near sphere's rim in the floor scene reached in-focus pixels beyond every near "
+          "radius (12/255: the in-focus gate); quads whose nearest pixel lies below 2 half-res px keep the "
+          "bilateral reduction for the same reason. Tried on 2026-11-27: such a quad made a near texel of the "
+          "quad's mean color (the near pixels spread at their share of it); every bar summed within 1.3% of its "
+          "width, but in-focus pixels of the floor scene changed by up to 12/255 beyond every near radius.\n\n"
        << "Before (fc56788) the composite damped near opacity below 0.1 quadratically: a 4 px bar at radius 40 "
           "summed 2.14 px of opacity, 2 px at radius 24 0.87 px (docs/technique.md).\n\n";
 }

@@ -33,12 +33,10 @@ TEST_CASE(
     CHECK(quality::validatedDevice().validationMessages().empty());
 }
 
-TEST_CASE("thin near bars narrower than a half-res texel, or of 2 px at radius 40 - known failure",
-          "[quality][vulkan][bars][!shouldfail]") {
-    // A 1 px bar takes its quad's whole half-res texel or none of it (the downsample keeps the pixels
-    // of the quad's reference radius): 2 px of opacity from an even column, none from an odd one,
-    // where at radius 40 the bar's own pixel keeps 0.42 of its input, a hard line. At radius 40 the
-    // inner rings read MIP levels whose texels hold a 2 px bar the same way (docs/quality.md).
+TEST_CASE("thin near bars of 1 and 2 px at radius 40 - known failure", "[quality][vulkan][bars][!shouldfail]") {
+    // At radius 40 the inner rings read MIP levels 1 to 3, whose texels reduce a quad bilaterally: a bar of
+    // 1 or 2 px fills its coarse texel or vanishes there, depending on its column (MIP 0 keeps a partly
+    // near quad's coverage: docs/technique.md, Near coverage; docs/quality.md).
     for (const quality::ThinBarCase& bar : allThinBars()) {
         if (!bar.knownFailure()) continue;
         INFO(bar.describe());

@@ -68,6 +68,47 @@ TEST_CASE("Bilateral reduce averages equal radii and drops outliers", "[downsamp
     CHECK(coc == Approx(-3.0f));
 }
 
+TEST_CASE("A near radius carries its coverage in quarters and stays a half", "[downsample]") {
+    for (const float radius : {0.5f, 1.0f, 2.75f, 7.3f, 24.0f, 40.1f, 130.0f}) {
+        for (const float coverage : {0.25f, 0.5f, 0.75f, 1.0f}) {
+            INFO("radius " << radius << ", coverage " << coverage);
+            const float rounded = ffxDofRoundForHalfCoc(radius);
+            const float packed = ffxDofPackNearCoverage(rounded, coverage);
+            CHECK(ffxDofNearCoverage(packed) == coverage);
+            // Still exactly a half (its R16 float store keeps the bits), within 3 of its last units.
+            CHECK(ffxDofRoundForHalfCoc(packed) == packed);
+            CHECK(std::abs(packed - rounded) <= 3.0f * rounded / 1024.0f);
+        }
+    }
+    // Far and in-focus radii are left as they are.
+    for (const float radius : {-40.0f, -3.2f, 0.0f, 0.25f}) CHECK(ffxDofPackNearCoverage(radius, 0.5f) == radius);
+}
+
+TEST_CASE("A quad the near field covers in part keeps its near pixels and their share", "[downsample]") {
+    const FfxFloat32x3 bar(1.0f, 0.8f, 0.6f), wall(0.2f, 0.2f, 0.2f);
+    // A bar of 1 px at radius 12 over an in-focus wall, in either column: half the quad, the bar's colour,
+    // its radius less the inset.
+    for (int column = 0; column < 2; ++column) {
+        INFO("column " << column);
+        const float left = column == 0 ? 12.0f : 0.0f, right = column == 0 ? 0.0f : 12.0f;
+        const FfxDofNearQuad quad =
+            ffxDofReduceNearQuad(column == 0 ? bar : wall, column == 0 ? wall : bar, column == 0 ? bar : wall,
+                                 column == 0 ? wall : bar, left, right, left, right);
+        CHECK(quad.partial);
+        CHECK(quad.coverage == 0.5f);
+        CHECK(quad.coc == 12.0f - FFX_DOF_NEAR_COVERAGE_INSET);
+        CHECK(quad.color.x == Approx(bar.x));
+        CHECK(quad.color.z == Approx(bar.z));
+    }
+    // One near pixel of four: a quarter.
+    CHECK(ffxDofReduceNearQuad(bar, wall, wall, wall, 6.0f, -3.0f, -3.0f, -3.0f).coverage == 0.25f);
+    // All near, none near, or a near radius too small to keep apart: the bilateral reduction stands.
+    CHECK_FALSE(ffxDofReduceNearQuad(bar, bar, bar, bar, 6.0f, 7.5f, 6.0f, 9.0f).partial);
+    CHECK_FALSE(ffxDofReduceNearQuad(wall, wall, wall, wall, 0.0f, -3.0f, 0.2f, -9.0f).partial);
+    CHECK_FALSE(
+        ffxDofReduceNearQuad(bar, wall, wall, wall, FFX_DOF_NEAR_COVERAGE_MIN_RADIUS - 0.1f, 0.0f, 0.0f, 0.0f).partial);
+}
+
 TEST_CASE("Bilateral reduce keeps a bright pixel's energy and radius wherever it lies in the quad", "[downsample]") {
     // A bright pixel of radius -4.8 among black ones of -5.65 (a point in front of a far background).
     for (int position = 0; position < 4; ++position) {
