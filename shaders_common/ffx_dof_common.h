@@ -249,9 +249,8 @@ FFX_DOF_INLINE FfxFloat32 ffxDofRoundForHalfCoc(FfxFloat32 coc)
 // samples by it. The coarse MIPs keep the bilateral reduction (a 2 px bar at radius 40, read from them by the
 // inner rings, is still a known failure).
 
-// Quads whose nearest pixel has a smaller radius (half-res px) keep the bilateral reduction: a near texel
-// of a few pixels' radius spreads, upsampled, beyond their discs (in-focus pixels of the floor scene
-// changed by up to 12/255 beyond every near radius).
+// Quads whose nearest pixel has a smaller radius (half-res px) keep the bilateral reduction: from every near
+// radius (0.5) the floor scene's near field lost 0.32 dB more, busy-background 0.03 dB, and no bar gained.
 #define FFX_DOF_NEAR_COVERAGE_MIN_RADIUS 2.0f
 // How much smaller (half-res px) the radius of a partly covered near texel is than its pixels': they lie up
 // to 0.35 half-res px from its centre, and its disc must stay within theirs through the composite's
