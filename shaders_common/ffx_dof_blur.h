@@ -970,8 +970,8 @@ FFX_DOF_INLINE FfxDofBlurResult ffxDofBlurTexel(FfxUInt32x2 texel, FfxFloat32x4 
     result.nearColor = FfxDofFloat3(0.0f, 0.0f, 0.0f);
     result.farColor = ffxDofLoadHalfColor(FfxInt32x2(texel));
     result.alpha = FfxFloat32x2(0.0f, 1.0f);
-    // Every radius of a copy tile lies within its dilated range, below the in-focus radius: no texel has
-    // a ring, and the copy pipeline holds no gather.
+    // A copy tile's kernels are all in focus (its dilated range, below the in-focus radius): its texels are
+    // the far layer, as they were when every class shared one pipeline, and the copy pipeline holds no gather.
     if (blurClass == FfxUInt32(FFX_DOF_BLUR_CLASS_COPY))
         return result;
 

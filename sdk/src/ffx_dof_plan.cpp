@@ -101,10 +101,9 @@ FfxDofErrorCode planPass(const ContextPlan& context, Pass pass, const shaders::P
     out->perTileList = listAxis != kNone;
     out->tileListVariants = uint32_t(listValues.size());
     out->variantCount = uint32_t(dispatchValues.size() * listValues.size());
-    if (out->variantCount > kMaxPassVariants) {
-        return fail(FFX_DOF_ERROR_BACKEND, "the pass %s has %u pipelines, more than kMaxPassVariants", kPassNames[p],
-                    out->variantCount);
-    }
+    // The generated kMaxPassVariants is the largest product of a pass's per-dispatch values and lists, and
+    // tileListRuns only leaves lists out: a pass with more is a generator fault, not a context's.
+    assert(out->variantCount <= kMaxPassVariants && "more pipelines than kMaxPassVariants");
     for (uint32_t v = 0; v < out->variantCount; ++v) {
         PassVariant& variant = out->variants[v];
         variant.dispatchValue = dispatchAxis != kNone ? dispatchValues[v / out->tileListVariants] : 0;
