@@ -587,9 +587,12 @@ FFX_DOF_INLINE void ffxDofWalkSamples(FFX_DOF_INOUT(FfxDofGather) gather, FFX_DO
         FfxFloat32 farWeight = weight * farShare;
         if (parts.nearField)
         {
-            // A MIP-0 texel of a quad the near field covers in part carries that share (Near coverage,
-            // ffx_dof_common.h); equal-weight tiles hold none (their tiles are all near or all far).
-            FfxFloat32 coverage = coarse || parts.equalWeights ? 1.0f : ffxDofNearCoverage(coc);
+            // A texel the near field covers in part carries that share, in quarters at MIP 0 and sixteenths
+            // above (Near coverage, ffx_dof_common.h); equal-weight tiles hold none (their tiles are all near
+            // or all far).
+            FfxFloat32 coverage = parts.equalWeights ? 1.0f
+                                  : coarse           ? ffxDofCoarseNearCoverage(coc)
+                                                     : ffxDofNearCoverage(coc);
             FfxFloat32 nearWeight = (weight - farWeight) * coverage;
             gather.nearSum += color * nearWeight;
             gather.nearWeight += nearWeight;

@@ -177,7 +177,8 @@ FFX_DOF_INLINE FfxDofFloat3 ffxDofRoundForPackedColor(FfxDofFloat3 color)
 
 // A texel of COARSE_MIPS (MIPs 1 to 3 of the half-res colour and radius): everything the blur reads of
 // a coarse sample in one 64-bit fetch (x: its colour as B10G11R11 float bits; y: its radius as a half
-// in bits 0..15, its light offset as two snorm8 in bits 16..31, twice the offset in its own texels).
+// in bits 0..15, a near radius with its coverage in the four lowest mantissa bits (ffxDofPackCoarseNearCoverage),
+// its light offset as two snorm8 in bits 16..31, twice the offset in its own texels).
 // On lavapipe every fetch of the blur's sample loop costs about as much as the rest of the sample: a
 // sample read from three images (colour, radius, light offset) made the blur up to 1.35 times as long
 // as one read from two (docs/performance.md, "Coarse texels in one fetch").
@@ -246,8 +247,8 @@ FFX_DOF_INLINE FfxFloat32 ffxDofRoundForHalfCoc(FfxFloat32 coc)
 // column (docs/quality.md, thin near bars). Such a quad's MIP-0 texel is now its near pixels alone
 // (ffxDofReduceNearQuad) with their share of the quad, its coverage, in the two lowest mantissa bits of the
 // texel's radius in HALF_COC (a half: near radii keep 8 mantissa bits, 0.4%); the blur weighs the texel's near
-// samples by it. The coarse MIPs keep the bilateral reduction (a 2 px bar at radius 40, read from them by the
-// inner rings, is still a known failure).
+// samples by it. The coarse MIPs reduce such texels the same way, with the coverage in sixteenths
+// (ffxDofPackCoarseNearCoverage).
 
 // Quads whose nearest pixel has a smaller radius (half-res px) keep the bilateral reduction: from every near
 // radius (0.5) the floor scene's near field lost 0.32 dB more, busy-background 0.03 dB, and no bar gained.
@@ -273,6 +274,31 @@ FFX_DOF_INLINE FfxFloat32 ffxDofPackNearCoverage(FfxFloat32 coc, FfxFloat32 cove
 FFX_DOF_INLINE FfxFloat32 ffxDofNearCoverage(FfxFloat32 coc)
 {
     return FfxFloat32(((ffxDofAsUInt(coc) >> FFX_DOF_NEAR_COVERAGE_SHIFT) & 3u) + 1u) * 0.25f;
+}
+
+// The coarse MIPs carry a near texel's coverage too, in sixteenths (a bar of 1 px covers a sixteenth of a
+// MIP-3 texel), in the four lowest mantissa bits of the radius's half in COARSE_MIPS (ffxDofPackCoarseTexel):
+// near radii there keep 6 mantissa bits (1.6%). A bar of 1 or 2 px read by the inner rings at radius 40 filled
+// its coarse texel or vanished there (docs/quality.md, thin near bars).
+#define FFX_DOF_COARSE_COVERAGE_STEPS 16u
+
+// A near radius rounded to nearest at 6 mantissa bits with `coverage` (1/16 to 1) in the 4 below, an exact half.
+FFX_DOF_INLINE FfxFloat32 ffxDofPackCoarseNearCoverage(FfxFloat32 coc, FfxFloat32 coverage)
+{
+    if (coc < FFX_DOF_NEAR_THRESHOLD)
+        return coc;
+    FfxFloat32 steps = FfxFloat32(FFX_DOF_COARSE_COVERAGE_STEPS);
+    FfxUInt32 level = FfxUInt32(clamp(floor(coverage * steps + 0.5f), 1.0f, steps));
+    FfxUInt32 mask = (FFX_DOF_COARSE_COVERAGE_STEPS - 1u) << FFX_DOF_NEAR_COVERAGE_SHIFT;
+    FfxUInt32 rounded = ffxDofAsUInt(ffxDofRoundMantissa(coc, 6u));
+    return ffxDofAsFloat((rounded & ~mask) | ((level - 1u) << FFX_DOF_NEAR_COVERAGE_SHIFT));
+}
+
+// The coverage of a near radius read from COARSE_MIPS (ffxDofPackCoarseNearCoverage).
+FFX_DOF_INLINE FfxFloat32 ffxDofCoarseNearCoverage(FfxFloat32 coc)
+{
+    FfxUInt32 level = (ffxDofAsUInt(coc) >> FFX_DOF_NEAR_COVERAGE_SHIFT) & (FFX_DOF_COARSE_COVERAGE_STEPS - 1u);
+    return FfxFloat32(level + 1u) * (1.0f / FfxFloat32(FFX_DOF_COARSE_COVERAGE_STEPS));
 }
 
 // ---- HDR range ---------------------------------------------------------------------------------

@@ -176,43 +176,126 @@ FFX_DOF_INLINE void ffxDofBilateralReduce(FfxDofFloat3 color0, FfxDofFloat3 colo
                                coc, offset);
 }
 
-// The MIP-0 texel of a quad whose nearest pixel is near and which also holds pixels behind the near field
-// (Near coverage, ffx_dof_common.h): its near pixels alone, weighted by their radius's closeness to the
-// nearest (ffxDofBilateralWeight, at least a trace so that every near pixel counts), with the quad's share
-// they cover. `partial` false: the quad is all near, or none of it, or of too small a radius.
+// The texel of a quad whose nearest source is near and which also holds sources behind the near field, or
+// near sources that cover their own texel in part (Near coverage, ffx_dof_common.h): its near sources alone,
+// weighted by their coverage and their radius's closeness to the nearest (ffxDofBilateralWeight, at least a
+// trace so that every near source counts), with the share of the quad they cover. The same kernel makes every
+// level: MIP 0 from full-resolution pixels (coverage 1, no offsets), MIPs 1..3 from the level below. `partial`
+// false: the quad is all near and covered, or holds no near source, or of too small a radius.
 struct FfxDofNearQuad
 {
     FfxBoolean partial;
     FfxDofFloat3 color;
-    FfxFloat32 coc;       // their radius, less FFX_DOF_NEAR_COVERAGE_INSET
-    FfxFloat32 coverage;  // near pixels / 4
+    FfxFloat32 coc;            // their radius, less `inset`
+    FfxFloat32 coverage;       // the near sources' coverage, summed, / 4
+    FfxFloat32x2 lightOffset;  // where they lie in the texel (ffxDofReduceLightOffset)
 };
 FFX_DOF_INLINE FfxFloat32 ffxDofNearQuadWeight(FfxFloat32 nearest, FfxFloat32 coc)
 {
     return coc >= FFX_DOF_NEAR_THRESHOLD ? max(ffxDofBilateralWeight(nearest, coc), 1e-3f) : 0.0f;
 }
+FFX_DOF_INLINE FfxFloat32 ffxDofNearShare(FfxFloat32 coc, FfxFloat32 coverage)
+{
+    return coc >= FFX_DOF_NEAR_THRESHOLD ? coverage : 0.0f;
+}
+FFX_DOF_INLINE FfxDofNearQuad ffxDofReduceNearSources(FfxDofFloat3 color0, FfxDofFloat3 color1, FfxDofFloat3 color2,
+                                                      FfxDofFloat3 color3, FfxFloat32 coc0, FfxFloat32 coc1,
+                                                      FfxFloat32 coc2, FfxFloat32 coc3, FfxFloat32x4 coverages,
+                                                      FfxFloat32x2 offset0, FfxFloat32x2 offset1, FfxFloat32x2 offset2,
+                                                      FfxFloat32x2 offset3, FfxFloat32 minRadius, FfxFloat32 inset)
+{
+    FfxDofNearQuad quad;
+    FfxFloat32 nearest = max(max(coc0, coc1), max(coc2, coc3));
+    FfxFloat32 weight0 = ffxDofNearQuadWeight(nearest, coc0) * coverages.x;
+    FfxFloat32 weight1 = ffxDofNearQuadWeight(nearest, coc1) * coverages.y;
+    FfxFloat32 weight2 = ffxDofNearQuadWeight(nearest, coc2) * coverages.z;
+    FfxFloat32 weight3 = ffxDofNearQuadWeight(nearest, coc3) * coverages.w;
+    quad.coverage = (ffxDofNearShare(coc0, coverages.x) + ffxDofNearShare(coc1, coverages.y) +
+                     ffxDofNearShare(coc2, coverages.z) + ffxDofNearShare(coc3, coverages.w)) *
+                    0.25f;
+    quad.partial = nearest >= minRadius && quad.coverage < 1.0f;
+    FfxFloat32 sum = max(weight0 + weight1 + weight2 + weight3, 1e-6f);
+    FfxFloat32 normalization = 1.0f / sum;
+    quad.color = (color0 * FfxDofFloat(weight0) + color1 * FfxDofFloat(weight1) + color2 * FfxDofFloat(weight2) +
+                  color3 * FfxDofFloat(weight3)) *
+                 FfxDofFloat(normalization);
+    quad.coc = max((coc0 * weight0 + coc1 * weight1 + coc2 * weight2 + coc3 * weight3) * normalization - inset,
+                   FFX_DOF_NEAR_THRESHOLD);
+    quad.lightOffset = ffxDofReduceLightOffset(weight0 + 1e-6f, weight1 + 1e-6f, weight2 + 1e-6f, weight3 + 1e-6f,
+                                               offset0, offset1, offset2, offset3);
+    return quad;
+}
+// MIP 0: a quad of full-resolution pixels.
 FFX_DOF_INLINE FfxDofNearQuad ffxDofReduceNearQuad(FfxDofFloat3 color0, FfxDofFloat3 color1, FfxDofFloat3 color2,
                                                    FfxDofFloat3 color3, FfxFloat32 coc0, FfxFloat32 coc1,
                                                    FfxFloat32 coc2, FfxFloat32 coc3)
 {
-    FfxDofNearQuad quad;
-    FfxFloat32 nearest = max(max(coc0, coc1), max(coc2, coc3));
-    FfxFloat32 weight0 = ffxDofNearQuadWeight(nearest, coc0);
-    FfxFloat32 weight1 = ffxDofNearQuadWeight(nearest, coc1);
-    FfxFloat32 weight2 = ffxDofNearQuadWeight(nearest, coc2);
-    FfxFloat32 weight3 = ffxDofNearQuadWeight(nearest, coc3);
-    FfxFloat32 nearPixels = (weight0 > 0.0f ? 1.0f : 0.0f) + (weight1 > 0.0f ? 1.0f : 0.0f) +
-                            (weight2 > 0.0f ? 1.0f : 0.0f) + (weight3 > 0.0f ? 1.0f : 0.0f);
-    quad.partial = nearest >= FFX_DOF_NEAR_COVERAGE_MIN_RADIUS && nearPixels < 4.0f;
-    FfxFloat32 normalization = 1.0f / max(weight0 + weight1 + weight2 + weight3, 1e-3f);
-    quad.color = (color0 * FfxDofFloat(weight0) + color1 * FfxDofFloat(weight1) + color2 * FfxDofFloat(weight2) +
-                  color3 * FfxDofFloat(weight3)) *
-                 FfxDofFloat(normalization);
-    quad.coc = max((coc0 * weight0 + coc1 * weight1 + coc2 * weight2 + coc3 * weight3) * normalization -
-                       FFX_DOF_NEAR_COVERAGE_INSET,
-                   FFX_DOF_NEAR_THRESHOLD);
-    quad.coverage = nearPixels * 0.25f;
-    return quad;
+    FfxFloat32x2 none = FfxFloat32x2(0.0f, 0.0f);
+    return ffxDofReduceNearSources(color0, color1, color2, color3, coc0, coc1, coc2, coc3,
+                                   FfxFloat32x4(1.0f, 1.0f, 1.0f, 1.0f), none, none, none, none,
+                                   FFX_DOF_NEAR_COVERAGE_MIN_RADIUS, FFX_DOF_NEAR_COVERAGE_INSET);
+}
+
+// A texel of the MIP chain as the levels above reduce it: colour, radius, the share of it its near sources cover
+// (1 where it is not partly near) and where its light lies.
+struct FfxDofMipTexel
+{
+    FfxDofFloat3 color;
+    FfxFloat32 coc;
+    FfxFloat32 coverage;
+    FfxFloat32x2 lightOffset;
+};
+FFX_DOF_INLINE FfxDofMipTexel ffxDofMakeMipTexel(FfxDofFloat3 color, FfxFloat32 coc, FfxFloat32 coverage,
+                                                 FfxFloat32x2 lightOffset)
+{
+    FfxDofMipTexel texel;
+    texel.color = color;
+    texel.coc = coc;
+    texel.coverage = coverage;
+    texel.lightOffset = lightOffset;
+    return texel;
+}
+FFX_DOF_INLINE FfxDofMipTexel ffxDofNearQuadTexel(FfxDofNearQuad quad)
+{
+    return ffxDofMakeMipTexel(quad.color, quad.coc, quad.coverage, quad.lightOffset);
+}
+
+// MIP 0 from a quad of full-resolution pixels: its near pixels where the near field covers it in part, else the
+// bilateral reduction.
+FFX_DOF_INLINE FfxDofMipTexel ffxDofReduceQuadTexel(FfxDofFloat3 color0, FfxDofFloat3 color1, FfxDofFloat3 color2,
+                                                    FfxDofFloat3 color3, FfxFloat32 coc0, FfxFloat32 coc1,
+                                                    FfxFloat32 coc2, FfxFloat32 coc3)
+{
+    FfxDofNearQuad nearQuad = ffxDofReduceNearQuad(color0, color1, color2, color3, coc0, coc1, coc2, coc3);
+    if (nearQuad.partial)
+        return ffxDofNearQuadTexel(nearQuad);
+    FfxDofMipTexel texel;
+    FfxFloat32x2 pixelOffset = FfxFloat32x2(0.0f, 0.0f);  // a full-resolution pixel is a point
+    ffxDofBilateralReduceLight(color0, color1, color2, color3, coc0, coc1, coc2, coc3, pixelOffset, pixelOffset,
+                               pixelOffset, pixelOffset, texel.color, texel.coc, texel.lightOffset);
+    texel.coverage = 1.0f;
+    return texel;
+}
+
+// A texel of MIP 1..3 from four of the level below: the near sources where they cover it in part (a partly
+// covered child's radius is at least FFX_DOF_NEAR_COVERAGE_MIN_RADIUS less the inset, so its share always
+// carries on up), else the bilateral reduction.
+FFX_DOF_INLINE FfxDofMipTexel ffxDofReduceMipTexel(FfxDofMipTexel texel0, FfxDofMipTexel texel1, FfxDofMipTexel texel2,
+                                                   FfxDofMipTexel texel3)
+{
+    FfxDofNearQuad nearSources = ffxDofReduceNearSources(
+        texel0.color, texel1.color, texel2.color, texel3.color, texel0.coc, texel1.coc, texel2.coc, texel3.coc,
+        FfxFloat32x4(texel0.coverage, texel1.coverage, texel2.coverage, texel3.coverage), texel0.lightOffset,
+        texel1.lightOffset, texel2.lightOffset, texel3.lightOffset,
+        FFX_DOF_NEAR_COVERAGE_MIN_RADIUS - FFX_DOF_NEAR_COVERAGE_INSET, 0.0f);
+    if (nearSources.partial)
+        return ffxDofNearQuadTexel(nearSources);
+    FfxDofMipTexel texel;
+    ffxDofBilateralReduceLight(texel0.color, texel1.color, texel2.color, texel3.color, texel0.coc, texel1.coc,
+                               texel2.coc, texel3.coc, texel0.lightOffset, texel1.lightOffset, texel2.lightOffset,
+                               texel3.lightOffset, texel.color, texel.coc, texel.lightOffset);
+    texel.coverage = 1.0f;
+    return texel;
 }
 
 // ---- Light rims -------------------------------------------------------------------------------------
@@ -275,6 +358,12 @@ FFX_DOF_INLINE FfxFloat32 ffxDofColorRangeScale(FfxFloat32 peak)
 FFX_DOF_GROUPSHARED FfxDofFloat3 ffxDofSharedMipColor[FFX_DOF_GROUP_THREADS];
 FFX_DOF_GROUPSHARED FfxFloat32 ffxDofSharedMipCoc[FFX_DOF_GROUP_THREADS];
 FFX_DOF_GROUPSHARED FfxFloat32x2 ffxDofSharedMipLightOffset[FFX_DOF_GROUP_THREADS];
+FFX_DOF_GROUPSHARED FfxFloat32 ffxDofSharedMipCoverage[FFX_DOF_GROUP_THREADS];
+FFX_DOF_INLINE FfxDofMipTexel ffxDofSharedMipTexel(FfxUInt32 index)
+{
+    return ffxDofMakeMipTexel(ffxDofSharedMipColor[index], ffxDofSharedMipCoc[index], ffxDofSharedMipCoverage[index],
+                              ffxDofSharedMipLightOffset[index]);
+}
 
 // The group's full-resolution pixels and a one-pixel border: (luminance, radius) for the light rims.
 #define FFX_DOF_RIM_SIDE (2u * FFX_DOF_TILE_SIZE + 2u)
@@ -370,25 +459,19 @@ FFX_DOF_INLINE void ffxDofDownsampleColor(FfxUInt32x2 groupId, FfxUInt32 localIn
     FfxFloat32 coc2 = ffxDofLightRimCocAt(cell + FfxUInt32x2(0u, 1u));
     FfxFloat32 coc3 = ffxDofLightRimCocAt(cell + FfxUInt32x2(1u, 1u));
 
-    FfxDofFloat3 color;
-    FfxFloat32 coc;
-    FfxFloat32x2 lightOffset;
-    FfxFloat32x2 pixelOffset = FfxFloat32x2(0.0f, 0.0f);  // a full-resolution pixel is a point
-    ffxDofBilateralReduceLight(ffxDofRgb(input0), ffxDofRgb(input1), ffxDofRgb(input2), ffxDofRgb(input3), coc0, coc1,
-                               coc2, coc3, pixelOffset, pixelOffset, pixelOffset, pixelOffset, color, coc, lightOffset);
-    // MIP 0 keeps a partly near quad's near pixels with their coverage; the coarse levels reduce the quad's
-    // bilateral texel, as before.
-    FfxDofNearQuad nearQuad = ffxDofReduceNearQuad(ffxDofRgb(input0), ffxDofRgb(input1), ffxDofRgb(input2),
-                                                   ffxDofRgb(input3), coc0, coc1, coc2, coc3);
+    // MIP 0 keeps a partly near quad's near pixels with their coverage (Near coverage, ffx_dof_common.h), and the
+    // coarse levels reduce what it keeps.
+    FfxDofMipTexel mip0 = ffxDofReduceQuadTexel(ffxDofRgb(input0), ffxDofRgb(input1), ffxDofRgb(input2),
+                                                ffxDofRgb(input3), coc0, coc1, coc2, coc3);
     if (texel.x < constants.halfSize.x && texel.y < constants.halfSize.y)
     {
-        ffxDofStoreHalfColor(texel, ffxDofRoundForPackedColor(nearQuad.partial ? nearQuad.color : color));
-        ffxDofStoreHalfCoc(texel, ffxDofPackNearCoverage(ffxDofRoundForHalfCoc(nearQuad.partial ? nearQuad.coc : coc),
-                                                         nearQuad.partial ? nearQuad.coverage : 1.0f));
+        ffxDofStoreHalfColor(texel, ffxDofRoundForPackedColor(mip0.color));
+        ffxDofStoreHalfCoc(texel, ffxDofPackNearCoverage(ffxDofRoundForHalfCoc(mip0.coc), mip0.coverage));
     }
-    ffxDofSharedMipColor[localIndex] = color;
-    ffxDofSharedMipCoc[localIndex] = coc;
-    ffxDofSharedMipLightOffset[localIndex] = lightOffset;
+    ffxDofSharedMipColor[localIndex] = mip0.color;
+    ffxDofSharedMipCoc[localIndex] = mip0.coc;
+    ffxDofSharedMipCoverage[localIndex] = mip0.coverage;
+    ffxDofSharedMipLightOffset[localIndex] = mip0.lightOffset;
 
     // Level m is kept at the top-left texel of each 2^m block: a thread only overwrites a slot it
     // has read itself, so one barrier per level suffices.
@@ -404,22 +487,21 @@ FFX_DOF_INLINE void ffxDofDownsampleColor(FfxUInt32x2 groupId, FfxUInt32 localIn
             FfxUInt32 i1 = localIndex + halfStep;
             FfxUInt32 i2 = localIndex + halfStep * FfxUInt32(FFX_DOF_GROUP_SIDE);
             FfxUInt32 i3 = i2 + halfStep;
-            ffxDofBilateralReduceLight(ffxDofSharedMipColor[i0], ffxDofSharedMipColor[i1], ffxDofSharedMipColor[i2],
-                                       ffxDofSharedMipColor[i3], ffxDofSharedMipCoc[i0], ffxDofSharedMipCoc[i1],
-                                       ffxDofSharedMipCoc[i2], ffxDofSharedMipCoc[i3], ffxDofSharedMipLightOffset[i0],
-                                       ffxDofSharedMipLightOffset[i1], ffxDofSharedMipLightOffset[i2],
-                                       ffxDofSharedMipLightOffset[i3], color, coc, lightOffset);
-            ffxDofSharedMipColor[i0] = color;
-            ffxDofSharedMipCoc[i0] = coc;
-            ffxDofSharedMipLightOffset[i0] = lightOffset;
+            FfxDofMipTexel reduced = ffxDofReduceMipTexel(ffxDofSharedMipTexel(i0), ffxDofSharedMipTexel(i1),
+                                                          ffxDofSharedMipTexel(i2), ffxDofSharedMipTexel(i3));
+            ffxDofSharedMipColor[i0] = reduced.color;
+            ffxDofSharedMipCoc[i0] = reduced.coc;
+            ffxDofSharedMipCoverage[i0] = reduced.coverage;
+            ffxDofSharedMipLightOffset[i0] = reduced.lightOffset;
             FfxUInt32x2 mipTexel =
                 groupId * (FfxUInt32(FFX_DOF_TILE_SIZE) >> mip) + FfxUInt32x2(local.x >> mip, local.y >> mip);
             FfxUInt32x2 mipSize = ffxDofMipSize(constants.halfSize, mip);
             if (mipTexel.x < mipSize.x && mipTexel.y < mipSize.y)
             {
-                ffxDofStoreCoarseMip(
-                    mip, mipTexel,
-                    ffxDofPackCoarseTexel(ffxDofToFloat32x3(ffxDofRoundForPackedColor(color)), coc, lightOffset));
+                ffxDofStoreCoarseMip(mip, mipTexel,
+                                     ffxDofPackCoarseTexel(ffxDofToFloat32x3(ffxDofRoundForPackedColor(reduced.color)),
+                                                           ffxDofPackCoarseNearCoverage(reduced.coc, reduced.coverage),
+                                                           reduced.lightOffset));
             }
         }
     }

@@ -17,7 +17,8 @@
 //   COARSE_MIPS    quarter (MIP 1 of half), FFX_DOF_OPTION_MAX_MIP - 1 levels, R32G32 uint: level l
 //                                            is MIP l + 1 of the chain, each texel its color, CoC and
 //                                            where in the texel its light lies (ffxDofPackCoarseTexel:
-//                                            the blur reads a coarse sample in one fetch)
+//                                            the blur reads a coarse sample in one fetch); a near radius
+//                                            carries its coverage in sixteenths (ffxDofPackCoarseNearCoverage)
 //   TILES          tiles, R16G16B16A16 float (min, max) signed CoC per tile; z: its colour peak (largest
 //                                            finite channel, clamped to the half range), w: unused
 //   DILATED_TILES  tiles, R16G16B16A16 float dilated (far, near) radii per tile, and the (min, max)

@@ -154,9 +154,6 @@ struct ThinBarCase {
     // and 0.005).
     bool opacityOk() const { return std::abs(opacitySum / width - 1.0) <= 0.10; }
     bool stepOk() const { return largestStep <= truthLargestStep * 1.1 + 0.005; }
-    // Known failures (docs/quality.md, thin near bars): a bar narrower than a half-res texel, and one
-    // of 2 px at a radius whose inner rings are read from a coarser MIP.
-    bool knownFailure() const { return width < 4.0 && radius > 24.0; }
 };
 ThinBarCase runThinBar(vkrun::Device& device, double width, double radius, uint32_t left);
 std::vector<ThinBarCase> runThinBarCases(vkrun::Device& device);

@@ -25,22 +25,9 @@ TEST_CASE(
     "[quality][vulkan][bars]") {
     quality::validatedDevice().clearValidationMessages();
     for (const quality::ThinBarCase& bar : allThinBars()) {
-        if (bar.knownFailure()) continue;
         INFO(bar.describe());
         CHECK(bar.opacityOk());
         CHECK(bar.stepOk());
     }
     CHECK(quality::validatedDevice().validationMessages().empty());
-}
-
-TEST_CASE("thin near bars of 1 and 2 px at radius 40 - known failure", "[quality][vulkan][bars][!shouldfail]") {
-    // At radius 40 the inner rings read MIP levels 1 to 3, whose texels reduce a quad bilaterally: a bar of
-    // 1 or 2 px fills its coarse texel or vanishes there, depending on its column (MIP 0 keeps a partly
-    // near quad's coverage: docs/technique.md, Near coverage; docs/quality.md).
-    for (const quality::ThinBarCase& bar : allThinBars()) {
-        if (!bar.knownFailure()) continue;
-        INFO(bar.describe());
-        CHECK(bar.opacityOk());
-        CHECK(bar.stepOk());
-    }
 }

@@ -109,6 +109,82 @@ TEST_CASE("A quad the near field covers in part keeps its near pixels and their 
         ffxDofReduceNearQuad(bar, wall, wall, wall, FFX_DOF_NEAR_COVERAGE_MIN_RADIUS - 0.1f, 0.0f, 0.0f, 0.0f).partial);
 }
 
+TEST_CASE("A coarse near radius carries its coverage in sixteenths and stays a half", "[downsample]") {
+    for (const float radius : {1.5f, 2.75f, 7.3f, 24.0f, 40.1f, 130.0f}) {
+        for (int sixteenths = 1; sixteenths <= 16; ++sixteenths) {
+            const float coverage = float(sixteenths) / 16.0f;
+            INFO("radius " << radius << ", coverage " << coverage);
+            const float packed = ffxDofPackCoarseNearCoverage(radius, coverage);
+            CHECK(ffxDofCoarseNearCoverage(packed) == coverage);
+            // Exactly a half (ffxDofPackCoarseTexel stores it as one), within 1/32 of the radius.
+            CHECK(ffxDofRoundForHalfCoc(packed) == packed);
+            CHECK(std::abs(packed - radius) <= radius / 32.0f);
+        }
+    }
+    // Below a sixteenth rounds up to one: a near texel never vanishes.
+    CHECK(ffxDofCoarseNearCoverage(ffxDofPackCoarseNearCoverage(12.0f, 0.01f)) == 1.0f / 16.0f);
+    for (const float radius : {-40.0f, -3.2f, 0.0f, 0.25f}) CHECK(ffxDofPackCoarseNearCoverage(radius, 0.5f) == radius);
+}
+
+namespace {
+
+// A 16 x 16 pixel block reduced to its MIP-3 texel as ffxDofDownsampleColor does it.
+FfxDofMipTexel reduceBlockToMip3(const std::vector<FfxFloat32x3>& colors, const std::vector<float>& cocs) {
+    std::vector<FfxDofMipTexel> level;
+    for (int y = 0; y < 8; ++y)
+        for (int x = 0; x < 8; ++x) {
+            auto at = [&](int dx, int dy) { return size_t((2 * y + dy) * 16 + 2 * x + dx); };
+            level.push_back(ffxDofReduceQuadTexel(colors[at(0, 0)], colors[at(1, 0)], colors[at(0, 1)],
+                                                  colors[at(1, 1)], cocs[at(0, 0)], cocs[at(1, 0)], cocs[at(0, 1)],
+                                                  cocs[at(1, 1)]));
+        }
+    for (int side = 4; side >= 1; side /= 2) {
+        std::vector<FfxDofMipTexel> next;
+        for (int y = 0; y < side; ++y)
+            for (int x = 0; x < side; ++x) {
+                auto child = [&](int dx, int dy) { return level[size_t((2 * y + dy) * 2 * side + 2 * x + dx)]; };
+                next.push_back(ffxDofReduceMipTexel(child(0, 0), child(1, 0), child(0, 1), child(1, 1)));
+            }
+        level = next;
+    }
+    return level[0];
+}
+
+}  // namespace
+
+TEST_CASE("The coarse levels keep a thin near bar's share of their texel and where it lies", "[downsample]") {
+    const FfxFloat32x3 bar(1.0f, 0.8f, 0.6f), wall(0.2f, 0.2f, 0.2f);
+    for (const int width : {1, 2, 4}) {
+        for (int left = 0; left + width <= 16; left += 3) {
+            INFO("bar of " << width << " px from column " << left);
+            std::vector<FfxFloat32x3> colors(256, wall);
+            std::vector<float> cocs(256, 0.0f);
+            for (int y = 0; y < 16; ++y)
+                for (int x = left; x < left + width; ++x) {
+                    colors[size_t(y * 16 + x)] = bar;
+                    cocs[size_t(y * 16 + x)] = 20.0f;
+                }
+            const FfxDofMipTexel mip3 = reduceBlockToMip3(colors, cocs);
+            CHECK(mip3.coverage == Approx(width / 16.0f));
+            CHECK(mip3.color.x == Approx(bar.x));
+            // The radius of the bar's quads: the bar's where it covers them whole (an even width from an even
+            // column), the inset less where only in part, their mean where both.
+            const bool wholeQuads = left % 2 == 0 && width % 2 == 0;
+            CHECK(mip3.coc <= 20.0f);
+            CHECK(mip3.coc >= 20.0f - (wholeQuads ? 0.0f : FFX_DOF_NEAR_COVERAGE_INSET));
+            if (!wholeQuads && width <= 2) CHECK(mip3.coc == 20.0f - FFX_DOF_NEAR_COVERAGE_INSET);
+            // The light offset (MIP-3 texels from the centre) points at the bar's pixels, whose quads lie
+            // within one pixel of them.
+            const float barCentre = (float(left) + 0.5f * float(width)) / 16.0f - 0.5f;
+            CHECK(std::abs(mip3.lightOffset.x - barCentre) <= 1.0f / 16.0f);
+            CHECK(std::abs(mip3.lightOffset.y) <= 1e-3f);
+            // Stored and read back, the coverage is the bar's share in sixteenths.
+            CHECK(ffxDofCoarseNearCoverage(ffxDofPackCoarseNearCoverage(mip3.coc, mip3.coverage)) ==
+                  float(width) / 16.0f);
+        }
+    }
+}
+
 TEST_CASE("Bilateral reduce keeps a bright pixel's energy and radius wherever it lies in the quad", "[downsample]") {
     // A bright pixel of radius -4.8 among black ones of -5.65 (a point in front of a far background).
     for (int position = 0; position < 4; ++position) {
