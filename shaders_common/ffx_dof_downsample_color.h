@@ -358,10 +358,24 @@ FFX_DOF_INLINE FfxFloat32 ffxDofColorRangeScale(FfxFloat32 peak)
 FFX_DOF_GROUPSHARED FfxDofFloat3 ffxDofSharedMipColor[FFX_DOF_GROUP_THREADS];
 FFX_DOF_GROUPSHARED FfxFloat32 ffxDofSharedMipCoc[FFX_DOF_GROUP_THREADS];
 FFX_DOF_GROUPSHARED FfxFloat32x2 ffxDofSharedMipLightOffset[FFX_DOF_GROUP_THREADS];
-FFX_DOF_GROUPSHARED FfxFloat32 ffxDofSharedMipCoverage[FFX_DOF_GROUP_THREADS];
+
+// A level's texel in group-shared memory: its radius carries its coverage in its 8 lowest mantissa bits (in
+// 256ths, exact: MIP 0's quarters summed over three levels; a 32-bit radius keeps 15 bits). On lavapipe every
+// group-shared read is a loop over the lanes: a fourth array for the coverage cost about half of what the
+// coarse levels' coverage added to the pass (docs/performance.md, "Near coverage in the coarse MIPs").
+#define FFX_DOF_SHARED_COVERAGE_MASK 0xffu
+FFX_DOF_INLINE void ffxDofStoreSharedMipTexel(FfxUInt32 index, FfxDofMipTexel texel)
+{
+    FfxUInt32 code = FfxUInt32(clamp(floor(texel.coverage * 256.0f + 0.5f), 1.0f, 256.0f)) - 1u;
+    ffxDofSharedMipColor[index] = texel.color;
+    ffxDofSharedMipCoc[index] = ffxDofAsFloat((ffxDofAsUInt(texel.coc) & ~FFX_DOF_SHARED_COVERAGE_MASK) | code);
+    ffxDofSharedMipLightOffset[index] = texel.lightOffset;
+}
 FFX_DOF_INLINE FfxDofMipTexel ffxDofSharedMipTexel(FfxUInt32 index)
 {
-    return ffxDofMakeMipTexel(ffxDofSharedMipColor[index], ffxDofSharedMipCoc[index], ffxDofSharedMipCoverage[index],
+    FfxUInt32 cocBits = ffxDofAsUInt(ffxDofSharedMipCoc[index]);
+    return ffxDofMakeMipTexel(ffxDofSharedMipColor[index], ffxDofAsFloat(cocBits & ~FFX_DOF_SHARED_COVERAGE_MASK),
+                              FfxFloat32((cocBits & FFX_DOF_SHARED_COVERAGE_MASK) + 1u) * (1.0f / 256.0f),
                               ffxDofSharedMipLightOffset[index]);
 }
 
@@ -468,10 +482,7 @@ FFX_DOF_INLINE void ffxDofDownsampleColor(FfxUInt32x2 groupId, FfxUInt32 localIn
         ffxDofStoreHalfColor(texel, ffxDofRoundForPackedColor(mip0.color));
         ffxDofStoreHalfCoc(texel, ffxDofPackNearCoverage(ffxDofRoundForHalfCoc(mip0.coc), mip0.coverage));
     }
-    ffxDofSharedMipColor[localIndex] = mip0.color;
-    ffxDofSharedMipCoc[localIndex] = mip0.coc;
-    ffxDofSharedMipCoverage[localIndex] = mip0.coverage;
-    ffxDofSharedMipLightOffset[localIndex] = mip0.lightOffset;
+    ffxDofStoreSharedMipTexel(localIndex, mip0);
 
     // Level m is kept at the top-left texel of each 2^m block: a thread only overwrites a slot it
     // has read itself, so one barrier per level suffices.
@@ -489,10 +500,7 @@ FFX_DOF_INLINE void ffxDofDownsampleColor(FfxUInt32x2 groupId, FfxUInt32 localIn
             FfxUInt32 i3 = i2 + halfStep;
             FfxDofMipTexel reduced = ffxDofReduceMipTexel(ffxDofSharedMipTexel(i0), ffxDofSharedMipTexel(i1),
                                                           ffxDofSharedMipTexel(i2), ffxDofSharedMipTexel(i3));
-            ffxDofSharedMipColor[i0] = reduced.color;
-            ffxDofSharedMipCoc[i0] = reduced.coc;
-            ffxDofSharedMipCoverage[i0] = reduced.coverage;
-            ffxDofSharedMipLightOffset[i0] = reduced.lightOffset;
+            ffxDofStoreSharedMipTexel(i0, reduced);
             FfxUInt32x2 mipTexel =
                 groupId * (FfxUInt32(FFX_DOF_TILE_SIZE) >> mip) + FfxUInt32x2(local.x >> mip, local.y >> mip);
             FfxUInt32x2 mipSize = ffxDofMipSize(constants.halfSize, mip);

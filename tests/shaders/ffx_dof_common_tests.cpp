@@ -152,6 +152,22 @@ FfxDofMipTexel reduceBlockToMip3(const std::vector<FfxFloat32x3>& colors, const 
 
 }  // namespace
 
+TEST_CASE("A MIP texel in group-shared memory keeps its coverage in 256ths and its radius", "[downsample]") {
+    for (const float radius : {-40.0f, -3.2f, 0.0f, 0.75f, 2.5f, 19.5f, 130.0f}) {
+        for (const int parts : {1, 3, 16, 64, 255, 256}) {
+            const float coverage = float(parts) / 256.0f;
+            INFO("radius " << radius << ", coverage " << coverage);
+            ffxDofStoreSharedMipTexel(
+                5u, ffxDofMakeMipTexel(FfxFloat32x3(1.0f, 2.0f, 3.0f), radius, coverage, FfxFloat32x2(0.25f, -0.125f)));
+            const FfxDofMipTexel texel = ffxDofSharedMipTexel(5u);
+            CHECK(texel.coverage == coverage);
+            CHECK(std::abs(texel.coc - radius) <= std::abs(radius) / 32768.0f);
+            CHECK(texel.color.y == 2.0f);
+            CHECK(texel.lightOffset.y == -0.125f);
+        }
+    }
+}
+
 TEST_CASE("The coarse levels keep a thin near bar's share of their texel and where it lies", "[downsample]") {
     const FfxFloat32x3 bar(1.0f, 0.8f, 0.6f), wall(0.2f, 0.2f, 0.2f);
     for (const int width : {1, 2, 4}) {
