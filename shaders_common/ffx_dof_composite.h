@@ -21,7 +21,7 @@
 //      it, alone from FFX_DOF_FAR_LAYER_ONLY_RADIUS (ffxDofFarBlend), and the near layer on top
 //      (ffxDofNearLayerWeight). Between FFX_DOF_OWN_SURFACE_MIN_RADIUS and FFX_DOF_FAR_LAYER_ONLY_RADIUS the
 //      pixel's own surface is instead gathered at full resolution from a 30 x 30 neighbourhood the
-//      group loads once (ffxDofGatherOwnSurface), the far layer showing where that surface does not
+//      group loads once (a quad at a time: ffxDofGatherOwnSurfaceQuad), the far layer showing where it does not
 //      cover the disc (near pixels too: their far layer is the background the blur extrapolates
 //      behind them), and handing over to the layers over the last half-res px. Only the FULL_RES class
 //      gathers at full resolution (own surface and small sources); the LAYERS class's pipeline has
@@ -368,30 +368,129 @@ FFX_DOF_INLINE FfxFloat32x3 ffxDofFixedBlur(FfxDofQuadNeighbourhood neighbourhoo
 // disc's area (scatter as gather, like the blur), so a sharper neighbour never spreads beyond its own
 // disc. `local`: the pixel in the group's ffxDofSharedOwn* arrays. Returns the color and, in w, the
 // coverage: the summed weights over pi (1 where the surface goes on all around the disc; less at its
-// edges, where the half-res layers show what lies behind).
+// edges, where the half-res layers show what lies behind). The composite gathers a quad's four pixels in
+// one walk (ffxDofGatherOwnSurfaceQuad), with the same samples, weights and order.
+struct FfxDofOwnDisc
+{
+    FfxFloat32 reachLimit;  // 2 |radius| + 0.5 full-res px
+    FfxInt32 extent;        // rows and columns read each side, within the neighbourhood's border
+};
+FFX_DOF_INLINE FfxDofOwnDisc ffxDofMakeOwnDisc(FfxFloat32 absCoc)
+{
+    FfxDofOwnDisc disc;
+    disc.reachLimit = 2.0f * absCoc + 0.5f;
+    disc.extent = min(FfxInt32(ceil(disc.reachLimit)), FfxInt32(FFX_DOF_OWN_SURFACE_BORDER));
+    return disc;
+}
+// Columns read each side in row `dy` of the disc (valid for |dy| <= extent).
+FFX_DOF_INLINE FfxInt32 ffxDofOwnDiscRowExtent(FfxDofOwnDisc disc, FfxInt32 dy)
+{
+    return min(FfxInt32(sqrt(max(disc.reachLimit * disc.reachLimit - FfxFloat32(dy * dy), 0.0f))), disc.extent);
+}
+// What a sample of |radius| `sampleRadius` (full-res px) at (dx, dy) from the pixel weighs in its gather.
+FFX_DOF_INLINE FfxFloat32 ffxDofOwnSampleWeight(FfxFloat32 sampleRadius, FfxFloat32 areaWeight, FfxInt32 dx,
+                                                FfxInt32 dy)
+{
+    return ffxDofReach(sampleRadius, sqrt(FfxFloat32(dx * dx + dy * dy))) * areaWeight;
+}
+FFX_DOF_INLINE FfxFloat32x4 ffxDofFinishOwnGather(FfxFloat32x3 sum, FfxFloat32 weightSum)
+{
+    return FfxFloat32x4(sum / weightSum, ffxDofSaturate(weightSum * (1.0f / FFX_DOF_PI)));
+}
 FFX_DOF_INLINE FfxFloat32x4 ffxDofGatherOwnSurface(FfxInt32x2 local, FfxFloat32 absCoc)
 {
-    FfxFloat32 reachLimit = 2.0f * absCoc + 0.5f;
-    FfxInt32 extent = min(FfxInt32(ceil(reachLimit)), FfxInt32(FFX_DOF_OWN_SURFACE_BORDER));
+    FfxDofOwnDisc disc = ffxDofMakeOwnDisc(absCoc);
     FfxFloat32x3 sum = FfxFloat32x3(0.0f, 0.0f, 0.0f);
     FfxFloat32 weightSum = 0.0f;
     FFX_DOF_LOOP
-    for (FfxInt32 dy = -extent; dy <= extent; ++dy)
+    for (FfxInt32 dy = -disc.extent; dy <= disc.extent; ++dy)
     {
-        FfxInt32 rowExtent = min(FfxInt32(sqrt(max(reachLimit * reachLimit - FfxFloat32(dy * dy), 0.0f))), extent);
+        FfxInt32 rowExtent = ffxDofOwnDiscRowExtent(disc, dy);
         FfxInt32 row = (local.y + dy) * FfxInt32(FFX_DOF_OWN_SURFACE_SIDE) + local.x;
         FFX_DOF_LOOP
         for (FfxInt32 dx = -rowExtent; dx <= rowExtent; ++dx)
         {
             FfxFloat32x4 colorRadius = ffxDofLoadOwnSample(FfxUInt32(row + dx));
-            FfxFloat32 weight =
-                ffxDofReach(colorRadius.w, sqrt(FfxFloat32(dx * dx + dy * dy))) * ffxDofRoundAreaWeight(colorRadius.w);
+            FfxFloat32 weight = ffxDofOwnSampleWeight(colorRadius.w, ffxDofRoundAreaWeight(colorRadius.w), dx, dy);
             sum += FfxFloat32x3(colorRadius.x, colorRadius.y, colorRadius.z) * weight;
             weightSum += weight;
         }
     }
     // The pixel itself always weighs (reach 1 at distance 0), so weightSum > 0.
-    return FfxFloat32x4(sum / weightSum, ffxDofSaturate(weightSum * (1.0f / FFX_DOF_PI)));
+    return ffxDofFinishOwnGather(sum, weightSum);
+}
+
+// The own-surface gathers of a quad's four pixels (0: top-left, 1: top-right, 2: bottom-left, 3:
+// bottom-right; `topLeft` in the ffxDofSharedOwn* arrays) in one walk over the union of their discs: each
+// sample is read from group-shared memory once for the four instead of once per pixel whose disc holds it
+// (on lavapipe a group-shared read is a loop over the lanes; the composite took 0.9 times as long:
+// docs/performance.md, "The own-surface gather a quad at a time"). A pixel's sums take the samples of its own
+// disc, in its own walk's order, so each result is ffxDofGatherOwnSurface's to the bit. `gathers`: which
+// pixels gather (the others' results are undefined).
+struct FfxDofQuadOwnGathers
+{
+    FfxFloat32x4 gathered[4];
+};
+FFX_DOF_INLINE FfxDofQuadOwnGathers ffxDofGatherOwnSurfaceQuad(FfxInt32x2 topLeft, FfxFloat32x4 absCocs,
+                                                               FfxUInt32 gathers)
+{
+    FfxDofOwnDisc discs[4];
+    FfxFloat32x3 sums[4];
+    FfxFloat32 weightSums[4];
+    FfxInt32 extent = -1;  // of the union, around the top-left pixel (one more to the right and below)
+    FFX_DOF_UNROLL
+    for (FfxUInt32 k = 0u; k < 4u; ++k)
+    {
+        discs[k] = ffxDofMakeOwnDisc(absCocs[k]);
+        // A pixel that does not gather reads no row (|dy| <= -1 never holds).
+        if ((gathers & (1u << k)) == 0u)
+            discs[k].extent = -1;
+        extent = max(extent, discs[k].extent);
+        sums[k] = FfxFloat32x3(0.0f, 0.0f, 0.0f);
+        weightSums[k] = 0.0f;
+    }
+    FFX_DOF_LOOP
+    for (FfxInt32 y = -extent; y <= extent + 1; ++y)
+    {
+        // The union's columns in this row, and each pixel's own.
+        FfxInt32 rowExtents[4];
+        FfxInt32 first = 1;
+        FfxInt32 last = 0;
+        FFX_DOF_UNROLL
+        for (FfxUInt32 k = 0u; k < 4u; ++k)
+        {
+            FfxInt32 dy = y - FfxInt32(k >> 1u);
+            rowExtents[k] = abs(dy) <= discs[k].extent ? ffxDofOwnDiscRowExtent(discs[k], dy) : -1;
+            if (rowExtents[k] >= 0)
+            {
+                first = min(first, FfxInt32(k & 1u) - rowExtents[k]);
+                last = max(last, FfxInt32(k & 1u) + rowExtents[k]);
+            }
+        }
+        FfxInt32 row = (topLeft.y + y) * FfxInt32(FFX_DOF_OWN_SURFACE_SIDE) + topLeft.x;
+        FFX_DOF_LOOP
+        for (FfxInt32 x = first; x <= last; ++x)
+        {
+            FfxFloat32x4 colorRadius = ffxDofLoadOwnSample(FfxUInt32(row + x));
+            FfxFloat32x3 color = FfxFloat32x3(colorRadius.x, colorRadius.y, colorRadius.z);
+            FfxFloat32 areaWeight = ffxDofRoundAreaWeight(colorRadius.w);
+            FFX_DOF_UNROLL
+            for (FfxUInt32 k = 0u; k < 4u; ++k)
+            {
+                FfxInt32 dx = x - FfxInt32(k & 1u);
+                FfxInt32 dy = y - FfxInt32(k >> 1u);
+                FfxFloat32 weight =
+                    abs(dx) <= rowExtents[k] ? ffxDofOwnSampleWeight(colorRadius.w, areaWeight, dx, dy) : 0.0f;
+                sums[k] += color * weight;
+                weightSums[k] += weight;
+            }
+        }
+    }
+    FfxDofQuadOwnGathers result;
+    FFX_DOF_UNROLL
+    for (FfxUInt32 k = 0u; k < 4u; ++k)
+        result.gathered[k] = ffxDofFinishOwnGather(sums[k], max(weightSums[k], 1e-30f));
+    return result;
 }
 
 // The area of a disc of `radius` full-res px drawn on the pixel grid by ffxDofReach: the sum of its
@@ -462,6 +561,12 @@ FFX_DOF_INLINE FfxFloat32 ffxDofOwnSurfaceLayerShare(FfxFloat32 absCoc)
                           (1.0f / FFX_DOF_OWN_SURFACE_FADE));
 }
 
+// Whether a pixel of |radius| `absCoc` (half-res px) takes its own surface gathered at full resolution.
+FFX_DOF_INLINE FfxBoolean ffxDofPixelGathersOwnSurface(FfxBoolean ownSurfaceTile, FfxFloat32 absCoc)
+{
+    return ownSurfaceTile && absCoc >= FFX_DOF_OWN_SURFACE_MIN_RADIUS && absCoc < FFX_DOF_FAR_LAYER_ONLY_RADIUS;
+}
+
 // The filtered half-res texels around a full-res pixel (top-left, top-right, bottom-left, bottom-right), as
 // its upsampling reads them: post-filtered near and far colour, (near opacity, far validity) and radius.
 struct FfxDofUpsampleTaps
@@ -477,12 +582,10 @@ struct FfxDofUpsampleTaps
 // loaded the full-res neighbourhood from `ownSurfaceOrigin` (ffxDofTileGathersOwnSurface). Returns false
 // (and leaves `color` alone) when the pixel keeps its input value.
 FFX_DOF_INLINE FfxBoolean ffxDofComposePixel(FfxUInt32x2 pixel, FfxDofUpsampleTaps taps, FfxFloat32x2 fraction,
-                                             FfxDofConstants constants, FfxFloat32x3 fixedBlur,
-                                             FfxBoolean ownSurfaceTile, FfxBoolean smallSourceTile,
+                                             FfxFloat32 coc, FfxFloat32x3 fixedBlur, FfxBoolean ownSurfaceTile,
+                                             FfxFloat32x4 ownGather, FfxBoolean smallSourceTile,
                                              FfxInt32x2 ownSurfaceOrigin, FFX_DOF_INOUT(FfxFloat32x4) color)
 {
-    FfxFloat32 coc =
-        ffxDofCocFromDepth(ffxDofLoadInputDepth(pixel), constants.cocScale, constants.cocBias, constants.cocLimit);
     FfxFloat32 bilinear[4];
     bilinear[0] = (1.0f - fraction.x) * (1.0f - fraction.y);
     bilinear[1] = fraction.x * (1.0f - fraction.y);
@@ -521,15 +624,13 @@ FFX_DOF_INLINE FfxBoolean ffxDofComposePixel(FfxUInt32x2 pixel, FfxDofUpsampleTa
     // Radii below FFX_DOF_FAR_LAYER_ONLY_RADIUS: the own surface gathered at full resolution, the half-res
     // layers where it does not cover the disc and over the fade; elsewhere (or in tiles the test of the
     // group left out) the input, the fixed 3x3 blur and the layers mixed by their variance.
-    FfxBoolean gatherOwn =
-        ownSurfaceTile && absCoc >= FFX_DOF_OWN_SURFACE_MIN_RADIUS && absCoc < FFX_DOF_FAR_LAYER_ONLY_RADIUS;
+    FfxBoolean gatherOwn = ffxDofPixelGathersOwnSurface(ownSurfaceTile, absCoc);
     FfxFloat32 layerShare = ffxDofFarBlend(absCoc, 1.0f);
     FfxFloat32 ownCoverage = 1.0f;
     if (gatherOwn)
     {
-        FfxFloat32x4 own = ffxDofGatherOwnSurface(FfxInt32x2(pixel) - ownSurfaceOrigin, absCoc);
-        result = FfxFloat32x3(own.x, own.y, own.z);
-        ownCoverage = own.w;
+        result = FfxFloat32x3(ownGather.x, ownGather.y, ownGather.z);
+        ownCoverage = ownGather.w;
         layerShare = ffxDofOwnSurfaceLayerShare(absCoc);
     }
     else
@@ -703,6 +804,25 @@ FFX_DOF_INLINE void ffxDofComposite(FfxUInt32 compositeClass, FfxUInt32 listInde
         blockFar[b] = ffxDofSharedFar[index];
         blockCoc[b] = ffxDofSharedCoc[index];
     }
+    // The quad's radii, and the own-surface gathers of those of its pixels that take one, in one walk.
+    FfxFloat32x4 cocs = FfxFloat32x4(0.0f, 0.0f, 0.0f, 0.0f);
+    FfxUInt32 ownGathers = 0u;
+    FFX_DOF_UNROLL
+    for (FfxUInt32 k = 0u; k < 4u; ++k)
+    {
+        FfxUInt32x2 pixel = quad + FfxUInt32x2(k & 1u, k >> 1u);
+        cocs[k] = ffxDofCocFromDepth(ffxDofLoadInputDepth(min(pixel, constants.fullSize - FfxUInt32x2(1u, 1u))),
+                                     constants.cocScale, constants.cocBias, constants.cocLimit);
+        if (pixel.x < constants.fullSize.x && pixel.y < constants.fullSize.y &&
+            ffxDofPixelGathersOwnSurface(ownSurfaceTile, abs(cocs[k])))
+            ownGathers |= 1u << k;
+    }
+    FfxDofQuadOwnGathers own;
+    FFX_DOF_UNROLL
+    for (FfxUInt32 k = 0u; k < 4u; ++k)
+        own.gathered[k] = FfxFloat32x4(0.0f, 0.0f, 0.0f, 0.0f);
+    if (ownGathers != 0u)
+        own = ffxDofGatherOwnSurfaceQuad(FfxInt32x2(quad) - ownSurfaceOrigin, abs(cocs), ownGathers);
     FFX_DOF_UNROLL
     for (FfxUInt32 k = 0u; k < 4u; ++k)
     {
@@ -724,12 +844,12 @@ FFX_DOF_INLINE void ffxDofComposite(FfxUInt32 compositeClass, FfxUInt32 listInde
         }
         FfxFloat32x4 color = inputColors[k];
 #if FFX_DOF_OPTION_OUTPUT_PRE_INIT
-        if (ffxDofComposePixel(pixel, taps, fraction, constants, fixedBlurs[k], ownSurfaceTile, smallSourceTile,
-                               ownSurfaceOrigin, color))
+        if (ffxDofComposePixel(pixel, taps, fraction, cocs[k], fixedBlurs[k], ownSurfaceTile, own.gathered[k],
+                               smallSourceTile, ownSurfaceOrigin, color))
             ffxDofStoreOutput(pixel, ffxDofUnscaleColor(color, scale));
 #else
-        if (ffxDofComposePixel(pixel, taps, fraction, constants, fixedBlurs[k], ownSurfaceTile, smallSourceTile,
-                               ownSurfaceOrigin, color))
+        if (ffxDofComposePixel(pixel, taps, fraction, cocs[k], fixedBlurs[k], ownSurfaceTile, own.gathered[k],
+                               smallSourceTile, ownSurfaceOrigin, color))
             ffxDofStoreOutput(pixel, ffxDofUnscaleColor(color, scale));
         else
             ffxDofStoreOutput(pixel, ffxDofLoadInputColor(pixel));

@@ -1154,6 +1154,40 @@ TEST_CASE("The own-surface gather blurs a pixel's own disc at full resolution", 
     CHECK(edgeCoverage < 0.7f);
 }
 
+TEST_CASE("A quad's own-surface gathers in one walk equal each pixel's own, to the bit", "[composite]") {
+    std::mt19937 random(17);
+    std::uniform_real_distribution<float> unit(0.0f, 1.0f);
+    const int side = FFX_DOF_OWN_SURFACE_SIDE;
+    for (int trial = 0; trial < 40; ++trial) {
+        // Radii of every kind around the quad: in focus, the gather's own range, beyond it; some lights.
+        for (int y = 0; y < side; ++y)
+            for (int x = 0; x < side; ++x) {
+                const float radius = unit(random) < 0.2f ? 0.0f : 12.0f * unit(random);
+                const float light = unit(random) < 0.05f ? 100.0f : 1.0f;
+                ffxDofStoreOwnSample(uint32_t(y * side + x),
+                                     glm::vec3(unit(random), unit(random), unit(random)) * light,
+                                     unit(random) < 0.5f ? radius : -radius);
+            }
+        const glm::ivec2 topLeft(FFX_DOF_OWN_SURFACE_BORDER + 2 * (trial % 4),
+                                 FFX_DOF_OWN_SURFACE_BORDER + 2 * ((trial / 4) % 4));
+        glm::vec4 absCocs;
+        for (int k = 0; k < 4; ++k)
+            absCocs[k] = FFX_DOF_OWN_SURFACE_MIN_RADIUS +
+                         (FFX_DOF_FAR_LAYER_ONLY_RADIUS - FFX_DOF_OWN_SURFACE_MIN_RADIUS) * unit(random);
+        const uint32_t gathers = trial < 16 ? 15u : uint32_t(trial % 16);
+        const FfxDofQuadOwnGathers quad = ffxDofGatherOwnSurfaceQuad(topLeft, absCocs, gathers);
+        for (int k = 0; k < 4; ++k) {
+            if ((gathers & (1u << k)) == 0u) continue;
+            INFO("trial " << trial << ", pixel " << k << ", radius " << absCocs[k]);
+            const glm::vec4 alone = ffxDofGatherOwnSurface(topLeft + glm::ivec2(k & 1, k >> 1), absCocs[k]);
+            CHECK(quad.gathered[k].x == alone.x);
+            CHECK(quad.gathered[k].y == alone.y);
+            CHECK(quad.gathered[k].z == alone.z);
+            CHECK(quad.gathered[k].w == alone.w);
+        }
+    }
+}
+
 TEST_CASE("The own-surface gather covers radii below the far-layer radius, and hands over to the layers",
           "[composite]") {
     // Tiles of (min, max) signed radii, half-res px.
