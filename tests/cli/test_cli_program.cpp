@@ -358,6 +358,20 @@ TEST_CASE("bench --json", "[vulkan]") {
     CHECK(json.at("hostRecordCalls") == 1000);
 }
 
+TEST_CASE("bench --scene times another built-in scene, and names the scenes when it does not know one", "[vulkan]") {
+    const ProgramResult lights =
+        runProgram("bench --scene mid-lights --width 80 --height 48 --repeat 1 --json --validate");
+    INFO(lights.err);
+    REQUIRE(lights.exitCode == 0);
+    CHECK(nlohmann::json::parse(lights.out).at("scene") == "mid-lights");
+    const ProgramResult plain = runProgram("bench --width 40 --height 24 --repeat 1 --json");
+    REQUIRE(plain.exitCode == 0);
+    CHECK(nlohmann::json::parse(plain.out).at("scene") == "floor");
+    const ProgramResult unknown = runProgram("bench --scene moon --width 40 --height 24 --repeat 1");
+    requireError(unknown, 3, "moon");
+    CHECK_THAT(unknown.err, Catch::Contains("floor") && Catch::Contains("mid-lights"));
+}
+
 TEST_CASE("bench prints the host recording time", "[vulkan]") {
     const ProgramResult bench = runProgram("bench --width 40 --height 24 --repeat 1 --validate");
     INFO(bench.err);

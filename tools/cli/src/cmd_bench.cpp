@@ -1,6 +1,6 @@
 // ffx-dof bench: GPU timestamps of every pass, the total, the internal memory, a plain copy pass
 // measured in the same run (the device floor), and the host CPU time of recording one dispatch, on a
-// reproducible procedural scene.
+// reproducible procedural scene (a built-in scene of the reference renderer, the floor by default).
 #include "cli_error.h"
 #include "commands.h"
 #include "effect_run.h"
@@ -14,14 +14,11 @@
 #include <vector>
 #include <ctime>
 #include <optional>
+#include <stdexcept>
 #include <string>
 
 namespace ffxdof::cli {
 namespace {
-
-// A floor receding from 0.6 m to 60 m with objects before, at and behind the focus: every tile class
-// of the blur pass occurs (in focus, near, far, mixed). The reference renderer draws it deterministically.
-constexpr const char* kBenchScene = "floor";
 
 // ffxDofContextDispatch calls timed on the host (recorded, never submitted) after the GPU runs.
 constexpr uint32_t kHostRecordCalls = 1000;
@@ -85,7 +82,12 @@ void runBench(const BenchOptions& options) {
     }
     if (options.autofocus) checkAutofocusRegion(*options.autofocus);
 
-    const ref::SceneSetup setup = ref::makeScene(kBenchScene, options.width, options.height);
+    ref::SceneSetup setup;
+    try {
+        setup = ref::makeScene(options.scene, options.width, options.height);
+    } catch (const std::invalid_argument& error) {
+        throw CliError(ExitCode::InvalidValue, std::string("--scene: ") + error.what());
+    }
     ref::RenderSettings renderSettings;
     const ref::PinholeImages pinhole = ref::renderPinhole(setup.scene, setup.camera, renderSettings);
 
@@ -140,7 +142,7 @@ void runBench(const BenchOptions& options) {
         json["cocLimit"] = options.effect.cocLimit;
         json["ringMerge"] = !options.effect.noRingMerge;
         json["float16"] = float16;
-        json["scene"] = kBenchScene;
+        json["scene"] = options.scene;
         json["repeat"] = options.repeat;
         nlohmann::ordered_json passes;
         for (uint32_t pass = 0; pass < vkrun::kPassCount; ++pass) {
@@ -171,7 +173,8 @@ void runBench(const BenchOptions& options) {
     std::printf("ffx-dof bench, %s, %s\n", utcDate().c_str(), device->name().c_str());
     std::printf("%ux%u, quality %u, coc-limit %g, ring merge %s, 16-bit %s, scene %s, median of %u\n", options.width,
                 options.height, options.effect.quality, options.effect.cocLimit,
-                options.effect.noRingMerge ? "off" : "on", float16 ? "yes" : "no", kBenchScene, options.repeat);
+                options.effect.noRingMerge ? "off" : "on", float16 ? "yes" : "no", options.scene.c_str(),
+                options.repeat);
     for (uint32_t pass = 0; pass < vkrun::kPassCount; ++pass) {
         std::printf("  %-24s %10.3f ms\n", vkrun::passName(pass), result.passMilliseconds[pass]);
     }

@@ -88,6 +88,9 @@ struct DemoOptions {
 void runDemo(const DemoOptions& options);
 
 struct BenchOptions {
+    // A built-in scene of the reference renderer. The floor (default) has every tile class of the blur and
+    // the composite; mid-lights and far-highlights have small sources above white, which the floor has not.
+    std::string scene = "floor";
     uint32_t width = 1920;
     uint32_t height = 1080;
     uint32_t repeat = 20;

@@ -296,6 +296,11 @@ int run(int argc, char** argv) {
     BenchOptions bench;
     CLI::App* benchCommand =
         app.add_subcommand("bench", "Time every pass on a procedural scene against a plain copy pass");
+    benchCommand
+        ->add_option("--scene", bench.scene,
+                     "Built-in scene of the reference renderer (floor: every tile class; mid-lights, "
+                     "far-highlights: small lights above white)")
+        ->capture_default_str();
     benchCommand->add_option("--width", bench.width, "Width, pixels")->check(kUnsigned)->capture_default_str();
     benchCommand->add_option("--height", bench.height, "Height, pixels")->check(kUnsigned)->capture_default_str();
     benchCommand->add_option("--repeat", bench.repeat, "Dispatches to time; the median is printed")
