@@ -427,12 +427,11 @@ FFX_DOF_INLINE FfxFloat32x4 ffxDofGatherOwnSurface(FfxInt32x2 local, FfxFloat32 
 // docs/performance.md, "The own-surface gather a quad at a time"). A pixel's sums take the samples of its own
 // disc, in its own walk's order, so each result is ffxDofGatherOwnSurface's to the bit. `gathers`: which
 // pixels gather (the others' results are undefined).
-struct FfxDofQuadOwnGathers
+struct FfxDofQuadGathers
 {
     FfxFloat32x4 gathered[4];
 };
-FFX_DOF_INLINE FfxDofQuadOwnGathers ffxDofGatherOwnSurfaceQuad(FfxInt32x2 topLeft, FfxFloat32x4 absCocs,
-                                                               FfxUInt32 gathers)
+FFX_DOF_INLINE FfxDofQuadGathers ffxDofGatherOwnSurfaceQuad(FfxInt32x2 topLeft, FfxFloat32x4 absCocs, FfxUInt32 gathers)
 {
     FfxDofOwnDisc discs[4];
     FfxFloat32x3 sums[4];
@@ -486,7 +485,7 @@ FFX_DOF_INLINE FfxDofQuadOwnGathers ffxDofGatherOwnSurfaceQuad(FfxInt32x2 topLef
             }
         }
     }
-    FfxDofQuadOwnGathers result;
+    FfxDofQuadGathers result;
     FFX_DOF_UNROLL
     for (FfxUInt32 k = 0u; k < 4u; ++k)
         result.gathered[k] = ffxDofFinishOwnGather(sums[k], max(weightSums[k], 1e-30f));
@@ -518,10 +517,28 @@ FFX_DOF_INLINE FfxFloat32 ffxDofPixelDiscArea(FfxFloat32 radius)
 // disc's area times its ffxDofSmallSourceShare, the share the blur leaves out of the half-res layers.
 // Returns their color and, in w, their coverage (their reach summed over the disc's area on the pixel
 // grid, ffxDofPixelDiscArea), to be composed over the far layer. Sources reach at most
-// 2 FFX_DOF_FAR_LAYER_ONLY_RADIUS + 0.5 full-res px, within the border.
+// 2 FFX_DOF_FAR_LAYER_ONLY_RADIUS + 0.5 full-res px, within the border. The composite gathers a quad's
+// four pixels in one walk (ffxDofGatherSmallSourcesQuad), with the same samples, weights and order.
+#define FFX_DOF_SMALL_SOURCE_EXTENT FfxInt32(2.0f * FFX_DOF_FAR_LAYER_ONLY_RADIUS)
+// A sample's share for a pixel of |radius| `absCoc`: far sources only, judged in half-res px.
+FFX_DOF_INLINE FfxFloat32 ffxDofSmallSourceSampleShare(FfxBoolean far, FfxFloat32 sourceAbs, FfxFloat32 absCoc)
+{
+    return far && sourceAbs >= FFX_DOF_IN_FOCUS_RADIUS
+               ? ffxDofSmallSourceShare(sourceAbs, absCoc) * ffxDofFarNearerShare(sourceAbs, absCoc)
+               : 0.0f;
+}
+FFX_DOF_INLINE FfxFloat32x4 ffxDofFinishSmallSources(FfxFloat32x3 sum, FfxFloat32 weightSum, FfxFloat32 radiusSum)
+{
+    if (weightSum <= 0.0f)
+        return FfxFloat32x4(0.0f, 0.0f, 0.0f, 0.0f);
+    // The weights sum the sources' coverage in units of pi radius^2; the grid's disc is
+    // ffxDofPixelDiscArea, evaluated at the sources' mean radius (one radius for one light).
+    FfxFloat32 radius = radiusSum / weightSum;
+    return FfxFloat32x4(sum / weightSum, ffxDofSaturate(weightSum * radius * radius / ffxDofPixelDiscArea(radius)));
+}
 FFX_DOF_INLINE FfxFloat32x4 ffxDofGatherSmallSources(FfxInt32x2 local, FfxFloat32 absCoc)
 {
-    FfxInt32 extent = FfxInt32(2.0f * FFX_DOF_FAR_LAYER_ONLY_RADIUS);
+    FfxInt32 extent = FFX_DOF_SMALL_SOURCE_EXTENT;
     FfxFloat32x3 sum = FfxFloat32x3(0.0f, 0.0f, 0.0f);
     FfxFloat32 weightSum = 0.0f;
     FfxFloat32 radiusSum = 0.0f;
@@ -533,11 +550,9 @@ FFX_DOF_INLINE FfxFloat32x4 ffxDofGatherSmallSources(FfxInt32x2 local, FfxFloat3
         for (FfxInt32 dx = -extent; dx <= extent; ++dx)
         {
             FfxFloat32x4 colorRadius = ffxDofLoadOwnSample(FfxUInt32(row + dx));
-            // Far sources only, in half-res px for the shares.
             FfxFloat32 sourceAbs = colorRadius.w * 0.5f;
-            FfxFloat32 share = ffxDofOwnSampleIsFar(FfxUInt32(row + dx)) && sourceAbs >= FFX_DOF_IN_FOCUS_RADIUS
-                                   ? ffxDofSmallSourceShare(sourceAbs, absCoc) * ffxDofFarNearerShare(sourceAbs, absCoc)
-                                   : 0.0f;
+            FfxFloat32 share =
+                ffxDofSmallSourceSampleShare(ffxDofOwnSampleIsFar(FfxUInt32(row + dx)), sourceAbs, absCoc);
             FfxFloat32 weight = ffxDofReach(2.0f * sourceAbs, sqrt(FfxFloat32(dx * dx + dy * dy))) *
                                 ffxDofRoundAreaWeight(2.0f * sourceAbs) * share;
             sum += FfxFloat32x3(colorRadius.x, colorRadius.y, colorRadius.z) * weight;
@@ -545,12 +560,58 @@ FFX_DOF_INLINE FfxFloat32x4 ffxDofGatherSmallSources(FfxInt32x2 local, FfxFloat3
             radiusSum += colorRadius.w * weight;
         }
     }
-    if (weightSum <= 0.0f)
-        return FfxFloat32x4(0.0f, 0.0f, 0.0f, 0.0f);
-    // The weights sum the sources' coverage in units of pi radius^2; the grid's disc is
-    // ffxDofPixelDiscArea, evaluated at the sources' mean radius (one radius for one light).
-    FfxFloat32 radius = radiusSum / weightSum;
-    return FfxFloat32x4(sum / weightSum, ffxDofSaturate(weightSum * radius * radius / ffxDofPixelDiscArea(radius)));
+    return ffxDofFinishSmallSources(sum, weightSum, radiusSum);
+}
+
+// ffxDofGatherSmallSources of a quad's four pixels in one walk over the union of their squares, as
+// ffxDofGatherOwnSurfaceQuad: each result is the per-pixel gather's to the bit. `gathers`: which pixels gather
+// (the others' results are zero).
+FFX_DOF_INLINE FfxDofQuadGathers ffxDofGatherSmallSourcesQuad(FfxInt32x2 topLeft, FfxFloat32x4 absCocs,
+                                                              FfxUInt32 gathers)
+{
+    FfxInt32 extent = FFX_DOF_SMALL_SOURCE_EXTENT;
+    FfxFloat32x3 sums[4];
+    FfxFloat32 weightSums[4];
+    FfxFloat32 radiusSums[4];
+    FFX_DOF_UNROLL
+    for (FfxUInt32 k = 0u; k < 4u; ++k)
+    {
+        sums[k] = FfxFloat32x3(0.0f, 0.0f, 0.0f);
+        weightSums[k] = 0.0f;
+        radiusSums[k] = 0.0f;
+    }
+    FFX_DOF_LOOP
+    for (FfxInt32 y = -extent; y <= extent + 1; ++y)
+    {
+        FfxInt32 row = (topLeft.y + y) * FfxInt32(FFX_DOF_OWN_SURFACE_SIDE) + topLeft.x;
+        FFX_DOF_LOOP
+        for (FfxInt32 x = -extent; x <= extent + 1; ++x)
+        {
+            FfxFloat32x4 colorRadius = ffxDofLoadOwnSample(FfxUInt32(row + x));
+            FfxFloat32x3 color = FfxFloat32x3(colorRadius.x, colorRadius.y, colorRadius.z);
+            FfxBoolean far = ffxDofOwnSampleIsFar(FfxUInt32(row + x));
+            FfxFloat32 sourceAbs = colorRadius.w * 0.5f;
+            FfxFloat32 areaWeight = ffxDofRoundAreaWeight(2.0f * sourceAbs);
+            FFX_DOF_UNROLL
+            for (FfxUInt32 k = 0u; k < 4u; ++k)
+            {
+                FfxInt32 dx = x - FfxInt32(k & 1u);
+                FfxInt32 dy = y - FfxInt32(k >> 1u);
+                FfxBoolean inside = (gathers & (1u << k)) != 0u && abs(dx) <= extent && abs(dy) <= extent;
+                FfxFloat32 share = inside ? ffxDofSmallSourceSampleShare(far, sourceAbs, absCocs[k]) : 0.0f;
+                FfxFloat32 weight =
+                    ffxDofReach(2.0f * sourceAbs, sqrt(FfxFloat32(dx * dx + dy * dy))) * areaWeight * share;
+                sums[k] += color * weight;
+                weightSums[k] += weight;
+                radiusSums[k] += colorRadius.w * weight;
+            }
+        }
+    }
+    FfxDofQuadGathers result;
+    FFX_DOF_UNROLL
+    for (FfxUInt32 k = 0u; k < 4u; ++k)
+        result.gathered[k] = ffxDofFinishSmallSources(sums[k], weightSums[k], radiusSums[k]);
+    return result;
 }
 
 // Share of the half-res layers in a pixel whose own surface is gathered at full resolution: 0 up to
@@ -559,6 +620,13 @@ FFX_DOF_INLINE FfxFloat32 ffxDofOwnSurfaceLayerShare(FfxFloat32 absCoc)
 {
     return ffxDofSaturate((absCoc - FFX_DOF_FAR_LAYER_ONLY_RADIUS + FFX_DOF_OWN_SURFACE_FADE) *
                           (1.0f / FFX_DOF_OWN_SURFACE_FADE));
+}
+
+// Whether a far pixel of radius `coc` (half-res px) draws the small sources in front of it at full resolution
+// (where its far layer is valid).
+FFX_DOF_INLINE FfxBoolean ffxDofPixelGathersSmallSources(FfxBoolean smallSourceTile, FfxFloat32 coc)
+{
+    return smallSourceTile && coc <= -FFX_DOF_IN_FOCUS_RADIUS && abs(coc) > FFX_DOF_FAR_LAYER_ONLY_RADIUS - 1.0f;
 }
 
 // Whether a pixel of |radius| `absCoc` (half-res px) takes its own surface gathered at full resolution.
@@ -581,10 +649,10 @@ struct FfxDofUpsampleTaps
 // from `taps` with the bilinear `fraction` (ffxDofUpsamplePosition); `ownSurfaceTile` whether the group
 // loaded the full-res neighbourhood from `ownSurfaceOrigin` (ffxDofTileGathersOwnSurface). Returns false
 // (and leaves `color` alone) when the pixel keeps its input value.
-FFX_DOF_INLINE FfxBoolean ffxDofComposePixel(FfxUInt32x2 pixel, FfxDofUpsampleTaps taps, FfxFloat32x2 fraction,
-                                             FfxFloat32 coc, FfxFloat32x3 fixedBlur, FfxBoolean ownSurfaceTile,
-                                             FfxFloat32x4 ownGather, FfxBoolean smallSourceTile,
-                                             FfxInt32x2 ownSurfaceOrigin, FFX_DOF_INOUT(FfxFloat32x4) color)
+FFX_DOF_INLINE FfxBoolean ffxDofComposePixel(FfxDofUpsampleTaps taps, FfxFloat32x2 fraction, FfxFloat32 coc,
+                                             FfxFloat32x3 fixedBlur, FfxBoolean ownSurfaceTile, FfxFloat32x4 ownGather,
+                                             FfxBoolean smallSourceTile, FfxFloat32x4 smallSources,
+                                             FFX_DOF_INOUT(FfxFloat32x4) color)
 {
     FfxFloat32 bilinear[4];
     bilinear[0] = (1.0f - fraction.x) * (1.0f - fraction.y);
@@ -652,11 +720,9 @@ FFX_DOF_INLINE FfxBoolean ffxDofComposePixel(FfxUInt32x2 pixel, FfxDofUpsampleTa
             gatherOwn ? max(layerShare, 1.0f - ownCoverage) * farValidity : ffxDofFarBlend(absCoc, farValidity);
         FfxFloat32x3 farColor = farSum / farWeight;
         // Small far sources in front of the pixel, which the blur left out of the layers it shows.
-        if (smallSourceTile && coc <= -FFX_DOF_IN_FOCUS_RADIUS && absCoc > FFX_DOF_FAR_LAYER_ONLY_RADIUS - 1.0f)
-        {
-            FfxFloat32x4 small = ffxDofGatherSmallSources(FfxInt32x2(pixel) - ownSurfaceOrigin, absCoc);
-            farColor = ffxDofLerp(farColor, FfxFloat32x3(small.x, small.y, small.z), small.w);
-        }
+        if (ffxDofPixelGathersSmallSources(smallSourceTile, coc))
+            farColor =
+                ffxDofLerp(farColor, FfxFloat32x3(smallSources.x, smallSources.y, smallSources.z), smallSources.w);
         result = ffxDofLerp(result, farColor, ownNear ? farValidity : farShare);
     }
     result = ffxDofLerp(result, nearColor, ffxDofNearLayerWeight(nearOpacity));
@@ -807,22 +873,33 @@ FFX_DOF_INLINE void ffxDofComposite(FfxUInt32 compositeClass, FfxUInt32 listInde
     // The quad's radii, and the own-surface gathers of those of its pixels that take one, in one walk.
     FfxFloat32x4 cocs = FfxFloat32x4(0.0f, 0.0f, 0.0f, 0.0f);
     FfxUInt32 ownGathers = 0u;
+    FfxUInt32 smallGathers = 0u;
     FFX_DOF_UNROLL
     for (FfxUInt32 k = 0u; k < 4u; ++k)
     {
         FfxUInt32x2 pixel = quad + FfxUInt32x2(k & 1u, k >> 1u);
         cocs[k] = ffxDofCocFromDepth(ffxDofLoadInputDepth(min(pixel, constants.fullSize - FfxUInt32x2(1u, 1u))),
                                      constants.cocScale, constants.cocBias, constants.cocLimit);
-        if (pixel.x < constants.fullSize.x && pixel.y < constants.fullSize.y &&
-            ffxDofPixelGathersOwnSurface(ownSurfaceTile, abs(cocs[k])))
+        FfxBoolean inside = pixel.x < constants.fullSize.x && pixel.y < constants.fullSize.y;
+        if (inside && ffxDofPixelGathersOwnSurface(ownSurfaceTile, abs(cocs[k])))
             ownGathers |= 1u << k;
+        if (inside && ffxDofPixelGathersSmallSources(smallSourceTile, cocs[k]))
+            smallGathers |= 1u << k;
     }
-    FfxDofQuadOwnGathers own;
+    FfxDofQuadGathers own;
+    FfxDofQuadGathers small;
     FFX_DOF_UNROLL
     for (FfxUInt32 k = 0u; k < 4u; ++k)
+    {
         own.gathered[k] = FfxFloat32x4(0.0f, 0.0f, 0.0f, 0.0f);
+        small.gathered[k] = FfxFloat32x4(0.0f, 0.0f, 0.0f, 0.0f);
+    }
+    FfxInt32x2 quadInNeighbourhood = FfxInt32x2(quad) - ownSurfaceOrigin;
     if (ownGathers != 0u)
-        own = ffxDofGatherOwnSurfaceQuad(FfxInt32x2(quad) - ownSurfaceOrigin, abs(cocs), ownGathers);
+        own = ffxDofGatherOwnSurfaceQuad(quadInNeighbourhood, abs(cocs), ownGathers);
+    // Also for a pixel whose far layer turns out empty (it then ignores them): rare, and the walk is the quad's.
+    if (smallGathers != 0u)
+        small = ffxDofGatherSmallSourcesQuad(quadInNeighbourhood, abs(cocs), smallGathers);
     FFX_DOF_UNROLL
     for (FfxUInt32 k = 0u; k < 4u; ++k)
     {
@@ -844,12 +921,12 @@ FFX_DOF_INLINE void ffxDofComposite(FfxUInt32 compositeClass, FfxUInt32 listInde
         }
         FfxFloat32x4 color = inputColors[k];
 #if FFX_DOF_OPTION_OUTPUT_PRE_INIT
-        if (ffxDofComposePixel(pixel, taps, fraction, cocs[k], fixedBlurs[k], ownSurfaceTile, own.gathered[k],
-                               smallSourceTile, ownSurfaceOrigin, color))
+        if (ffxDofComposePixel(taps, fraction, cocs[k], fixedBlurs[k], ownSurfaceTile, own.gathered[k], smallSourceTile,
+                               small.gathered[k], color))
             ffxDofStoreOutput(pixel, ffxDofUnscaleColor(color, scale));
 #else
-        if (ffxDofComposePixel(pixel, taps, fraction, cocs[k], fixedBlurs[k], ownSurfaceTile, own.gathered[k],
-                               smallSourceTile, ownSurfaceOrigin, color))
+        if (ffxDofComposePixel(taps, fraction, cocs[k], fixedBlurs[k], ownSurfaceTile, own.gathered[k], smallSourceTile,
+                               small.gathered[k], color))
             ffxDofStoreOutput(pixel, ffxDofUnscaleColor(color, scale));
         else
             ffxDofStoreOutput(pixel, ffxDofLoadInputColor(pixel));

@@ -1154,12 +1154,13 @@ TEST_CASE("The own-surface gather blurs a pixel's own disc at full resolution", 
     CHECK(edgeCoverage < 0.7f);
 }
 
-TEST_CASE("A quad's own-surface gathers in one walk equal each pixel's own, to the bit", "[composite]") {
+TEST_CASE("A quad's full-resolution gathers in one walk equal each pixel's own, to the bit", "[composite]") {
     std::mt19937 random(17);
     std::uniform_real_distribution<float> unit(0.0f, 1.0f);
     const int side = FFX_DOF_OWN_SURFACE_SIDE;
+    int smallSourcesSeen = 0;
     for (int trial = 0; trial < 40; ++trial) {
-        // Radii of every kind around the quad: in focus, the gather's own range, beyond it; some lights.
+        // Radii of every kind around the quad: in focus, the gathers' own ranges, beyond them; some lights.
         for (int y = 0; y < side; ++y)
             for (int x = 0; x < side; ++x) {
                 const float radius = unit(random) < 0.2f ? 0.0f : 12.0f * unit(random);
@@ -1170,22 +1171,34 @@ TEST_CASE("A quad's own-surface gathers in one walk equal each pixel's own, to t
             }
         const glm::ivec2 topLeft(FFX_DOF_OWN_SURFACE_BORDER + 2 * (trial % 4),
                                  FFX_DOF_OWN_SURFACE_BORDER + 2 * ((trial / 4) % 4));
-        glm::vec4 absCocs;
-        for (int k = 0; k < 4; ++k)
-            absCocs[k] = FFX_DOF_OWN_SURFACE_MIN_RADIUS +
-                         (FFX_DOF_FAR_LAYER_ONLY_RADIUS - FFX_DOF_OWN_SURFACE_MIN_RADIUS) * unit(random);
         const uint32_t gathers = trial < 16 ? 15u : uint32_t(trial % 16);
-        const FfxDofQuadOwnGathers quad = ffxDofGatherOwnSurfaceQuad(topLeft, absCocs, gathers);
+        // Own surface: radii within the gather's range.
+        glm::vec4 ownCocs;
+        for (int k = 0; k < 4; ++k)
+            ownCocs[k] = FFX_DOF_OWN_SURFACE_MIN_RADIUS +
+                         (FFX_DOF_FAR_LAYER_ONLY_RADIUS - FFX_DOF_OWN_SURFACE_MIN_RADIUS) * unit(random);
+        const FfxDofQuadGathers own = ffxDofGatherOwnSurfaceQuad(topLeft, ownCocs, gathers);
+        // Small sources: far pixels from the last half-res px below the far-layer radius.
+        glm::vec4 farCocs;
+        for (int k = 0; k < 4; ++k) farCocs[k] = FFX_DOF_FAR_LAYER_ONLY_RADIUS - 1.0f + 8.0f * unit(random);
+        const FfxDofQuadGathers small = ffxDofGatherSmallSourcesQuad(topLeft, farCocs, gathers);
         for (int k = 0; k < 4; ++k) {
-            if ((gathers & (1u << k)) == 0u) continue;
-            INFO("trial " << trial << ", pixel " << k << ", radius " << absCocs[k]);
-            const glm::vec4 alone = ffxDofGatherOwnSurface(topLeft + glm::ivec2(k & 1, k >> 1), absCocs[k]);
-            CHECK(quad.gathered[k].x == alone.x);
-            CHECK(quad.gathered[k].y == alone.y);
-            CHECK(quad.gathered[k].z == alone.z);
-            CHECK(quad.gathered[k].w == alone.w);
+            if ((gathers & (1u << k)) == 0u) {
+                CHECK(small.gathered[k] == glm::vec4(0.0f));
+                continue;
+            }
+            INFO("trial " << trial << ", pixel " << k << ", radii " << ownCocs[k] << " and " << farCocs[k]);
+            const glm::ivec2 pixel = topLeft + glm::ivec2(k & 1, k >> 1);
+            const glm::vec4 ownAlone = ffxDofGatherOwnSurface(pixel, ownCocs[k]);
+            const glm::vec4 smallAlone = ffxDofGatherSmallSources(pixel, farCocs[k]);
+            for (int c = 0; c < 4; ++c) {
+                CHECK(own.gathered[k][c] == ownAlone[c]);
+                CHECK(small.gathered[k][c] == smallAlone[c]);
+            }
+            if (smallAlone.w > 0.0f) ++smallSourcesSeen;
         }
     }
+    CHECK(smallSourcesSeen > 20);  // the small-source sums were not all empty
 }
 
 TEST_CASE("The own-surface gather covers radii below the far-layer radius, and hands over to the layers",
