@@ -645,10 +645,13 @@ struct FfxDofUpsampleTaps
     FfxFloat32 coc[4];
 };
 
-// The composed color of one full-res pixel whose input is `color` and fixed 3x3 blur `fixedBlur`, upsampled
-// from `taps` with the bilinear `fraction` (ffxDofUpsamplePosition); `ownSurfaceTile` whether the group
-// loaded the full-res neighbourhood from `ownSurfaceOrigin` (ffxDofTileGathersOwnSurface). Returns false
-// (and leaves `color` alone) when the pixel keeps its input value.
+// The composed color of one full-res pixel of radius `coc` whose input is `color` and fixed 3x3 blur
+// `fixedBlur`, upsampled from `taps` with the bilinear `fraction` (ffxDofUpsamplePosition). `ownSurfaceTile`
+// and `smallSourceTile`: whether the group loaded the full-res neighbourhood for either gather
+// (ffxDofTileGathersOwnSurface, ffxDofTileMayHoldBrightSmallSources); `ownGather` and `smallSources`: the
+// pixel's gathers (ffxDofGatherOwnSurfaceQuad, ffxDofGatherSmallSourcesQuad), used where
+// ffxDofPixelGathersOwnSurface and ffxDofPixelGathersSmallSources say. Returns false (and leaves `color`
+// alone) when the pixel keeps its input value.
 FFX_DOF_INLINE FfxBoolean ffxDofComposePixel(FfxDofUpsampleTaps taps, FfxFloat32x2 fraction, FfxFloat32 coc,
                                              FfxFloat32x3 fixedBlur, FfxBoolean ownSurfaceTile, FfxFloat32x4 ownGather,
                                              FfxBoolean smallSourceTile, FfxFloat32x4 smallSources,
