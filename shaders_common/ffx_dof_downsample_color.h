@@ -406,20 +406,21 @@ FFX_DOF_INLINE FfxUInt32x2 ffxDofRimBorderCell(FfxUInt32 index)
     return FfxUInt32x2(row < side - 2u ? 0u : side - 1u, 1u + row % (side - 2u));
 }
 
-FFX_DOF_INLINE FfxFloat32 ffxDofLightRimCocAt(FfxUInt32x2 cell)
+// The radius pixel `inQuad` (0: top-left .. 3: bottom-right) of a quad is downsampled with, from the quad's 4 x 4
+// neighbourhood of (luminance, radius), row by row from its top-left neighbour.
+FFX_DOF_INLINE FfxFloat32 ffxDofLightRimCocInQuad(FfxFloat32x2 around[16], FfxUInt32 inQuad)
 {
-    FfxFloat32x2 centre = ffxDofSharedRimSample[cell.y * FFX_DOF_RIM_SIDE + cell.x];
-    FfxDofLightRim rim = ffxDofLightRimBegin(centre.x, centre.y);
+    FfxUInt32 centre = (1u + (inQuad >> 1u)) * 4u + 1u + (inQuad & 1u);
+    FfxDofLightRim rim = ffxDofLightRimBegin(around[centre].x, around[centre].y);
     FFX_DOF_UNROLL
     for (FfxUInt32 neighbour = 0u; neighbour < 9u; ++neighbour)
     {
         if (neighbour == 4u)
             continue;
-        FfxUInt32x2 at = cell + FfxUInt32x2(neighbour % 3u, neighbour / 3u) - FfxUInt32x2(1u, 1u);
-        FfxFloat32x2 around = ffxDofSharedRimSample[at.y * FFX_DOF_RIM_SIDE + at.x];
-        rim = ffxDofLightRimAdd(rim, centre.x, centre.y, around.x, around.y);
+        FfxUInt32 at = centre + (neighbour / 3u) * 4u + neighbour % 3u - 5u;
+        rim = ffxDofLightRimAdd(rim, around[centre].x, around[centre].y, around[at].x, around[at].y);
     }
-    return ffxDofLightRimCoc(rim, centre.x, centre.y);
+    return ffxDofLightRimCoc(rim, around[centre].x, around[centre].y);
 }
 
 FFX_DOF_INLINE FfxDofFloat3 ffxDofRgb(FfxFloat32x4 color) { return FfxDofFloat3(color.x, color.y, color.z); }
@@ -468,10 +469,16 @@ FFX_DOF_INLINE void ffxDofDownsampleColor(FfxUInt32x2 groupId, FfxUInt32 localIn
                          ffxDofLoadInputCoc(pixel, constants));
     }
     ffxDofGroupBarrier();
-    FfxFloat32 coc0 = ffxDofLightRimCocAt(cell);
-    FfxFloat32 coc1 = ffxDofLightRimCocAt(cell + FfxUInt32x2(1u, 0u));
-    FfxFloat32 coc2 = ffxDofLightRimCocAt(cell + FfxUInt32x2(0u, 1u));
-    FfxFloat32 coc3 = ffxDofLightRimCocAt(cell + FfxUInt32x2(1u, 1u));
+    // The quad's 4 x 4 neighbourhood read once for its four pixels (16 group-shared reads instead of 36: on
+    // lavapipe each is a loop over the lanes).
+    FfxFloat32x2 around[16];
+    FFX_DOF_UNROLL
+    for (FfxUInt32 k = 0u; k < 16u; ++k)
+        around[k] = ffxDofSharedRimSample[(cell.y + k / 4u - 1u) * FFX_DOF_RIM_SIDE + cell.x + k % 4u - 1u];
+    FfxFloat32 coc0 = ffxDofLightRimCocInQuad(around, 0u);
+    FfxFloat32 coc1 = ffxDofLightRimCocInQuad(around, 1u);
+    FfxFloat32 coc2 = ffxDofLightRimCocInQuad(around, 2u);
+    FfxFloat32 coc3 = ffxDofLightRimCocInQuad(around, 3u);
 
     // MIP 0 keeps a partly near quad's near pixels with their coverage (Near coverage, ffx_dof_common.h), and the
     // coarse levels reduce what it keeps.
