@@ -176,68 +176,8 @@ FFX_DOF_INLINE void ffxDofBilateralReduce(FfxDofFloat3 color0, FfxDofFloat3 colo
                                coc, offset);
 }
 
-// The texel of a quad whose nearest source is near and which also holds sources behind the near field, or
-// near sources that cover their own texel in part (Near coverage, ffx_dof_common.h): its near sources alone,
-// weighted by their coverage and their radius's closeness to the nearest (ffxDofBilateralWeight, at least a
-// trace so that every near source counts), with the share of the quad they cover. The same kernel makes every
-// level: MIP 0 from full-resolution pixels (coverage 1, no offsets), MIPs 1..3 from the level below. `partial`
-// false: the quad is all near and covered, or holds no near source, or of too small a radius.
-struct FfxDofNearQuad
-{
-    FfxBoolean partial;
-    FfxDofFloat3 color;
-    FfxFloat32 coc;            // their radius, less `inset`
-    FfxFloat32 coverage;       // the near sources' coverage, summed, / 4
-    FfxFloat32x2 lightOffset;  // where they lie in the texel (ffxDofReduceLightOffset)
-};
-FFX_DOF_INLINE FfxFloat32 ffxDofNearQuadWeight(FfxFloat32 nearest, FfxFloat32 coc)
-{
-    return coc >= FFX_DOF_NEAR_THRESHOLD ? max(ffxDofBilateralWeight(nearest, coc), 1e-3f) : 0.0f;
-}
-FFX_DOF_INLINE FfxFloat32 ffxDofNearShare(FfxFloat32 coc, FfxFloat32 coverage)
-{
-    return coc >= FFX_DOF_NEAR_THRESHOLD ? coverage : 0.0f;
-}
-FFX_DOF_INLINE FfxDofNearQuad ffxDofReduceNearSources(FfxDofFloat3 color0, FfxDofFloat3 color1, FfxDofFloat3 color2,
-                                                      FfxDofFloat3 color3, FfxFloat32 coc0, FfxFloat32 coc1,
-                                                      FfxFloat32 coc2, FfxFloat32 coc3, FfxFloat32x4 coverages,
-                                                      FfxFloat32x2 offset0, FfxFloat32x2 offset1, FfxFloat32x2 offset2,
-                                                      FfxFloat32x2 offset3, FfxFloat32 minRadius, FfxFloat32 inset)
-{
-    FfxDofNearQuad quad;
-    FfxFloat32 nearest = max(max(coc0, coc1), max(coc2, coc3));
-    FfxFloat32 weight0 = ffxDofNearQuadWeight(nearest, coc0) * coverages.x;
-    FfxFloat32 weight1 = ffxDofNearQuadWeight(nearest, coc1) * coverages.y;
-    FfxFloat32 weight2 = ffxDofNearQuadWeight(nearest, coc2) * coverages.z;
-    FfxFloat32 weight3 = ffxDofNearQuadWeight(nearest, coc3) * coverages.w;
-    quad.coverage = (ffxDofNearShare(coc0, coverages.x) + ffxDofNearShare(coc1, coverages.y) +
-                     ffxDofNearShare(coc2, coverages.z) + ffxDofNearShare(coc3, coverages.w)) *
-                    0.25f;
-    quad.partial = nearest >= minRadius && quad.coverage < 1.0f;
-    FfxFloat32 sum = max(weight0 + weight1 + weight2 + weight3, 1e-6f);
-    FfxFloat32 normalization = 1.0f / sum;
-    quad.color = (color0 * FfxDofFloat(weight0) + color1 * FfxDofFloat(weight1) + color2 * FfxDofFloat(weight2) +
-                  color3 * FfxDofFloat(weight3)) *
-                 FfxDofFloat(normalization);
-    quad.coc = max((coc0 * weight0 + coc1 * weight1 + coc2 * weight2 + coc3 * weight3) * normalization - inset,
-                   FFX_DOF_NEAR_THRESHOLD);
-    quad.lightOffset = ffxDofReduceLightOffset(weight0 + 1e-6f, weight1 + 1e-6f, weight2 + 1e-6f, weight3 + 1e-6f,
-                                               offset0, offset1, offset2, offset3);
-    return quad;
-}
-// MIP 0: a quad of full-resolution pixels.
-FFX_DOF_INLINE FfxDofNearQuad ffxDofReduceNearQuad(FfxDofFloat3 color0, FfxDofFloat3 color1, FfxDofFloat3 color2,
-                                                   FfxDofFloat3 color3, FfxFloat32 coc0, FfxFloat32 coc1,
-                                                   FfxFloat32 coc2, FfxFloat32 coc3)
-{
-    FfxFloat32x2 none = FfxFloat32x2(0.0f, 0.0f);
-    return ffxDofReduceNearSources(color0, color1, color2, color3, coc0, coc1, coc2, coc3,
-                                   FfxFloat32x4(1.0f, 1.0f, 1.0f, 1.0f), none, none, none, none,
-                                   FFX_DOF_NEAR_COVERAGE_MIN_RADIUS, FFX_DOF_NEAR_COVERAGE_INSET);
-}
-
 // A texel of the MIP chain as the levels above reduce it: colour, radius, the share of it its near sources cover
-// (1 where it is not partly near) and where its light lies.
+// (1 where it is not partly near) and where its light lies (a full-resolution pixel: coverage 1, offset 0).
 struct FfxDofMipTexel
 {
     FfxDofFloat3 color;
@@ -255,9 +195,69 @@ FFX_DOF_INLINE FfxDofMipTexel ffxDofMakeMipTexel(FfxDofFloat3 color, FfxFloat32 
     texel.lightOffset = lightOffset;
     return texel;
 }
-FFX_DOF_INLINE FfxDofMipTexel ffxDofNearQuadTexel(FfxDofNearQuad quad)
+FFX_DOF_INLINE FfxDofMipTexel ffxDofPixelTexel(FfxDofFloat3 color, FfxFloat32 coc)
 {
-    return ffxDofMakeMipTexel(quad.color, quad.coc, quad.coverage, quad.lightOffset);
+    return ffxDofMakeMipTexel(color, coc, 1.0f, FfxFloat32x2(0.0f, 0.0f));
+}
+
+// The texel of a quad whose nearest source is near and which also holds sources behind the near field, or
+// near sources that cover their own texel in part (Near coverage, ffx_dof_common.h): its near sources alone,
+// weighted by their coverage and their radius's closeness to the nearest (ffxDofBilateralWeight, at least a
+// trace so that every near source counts), with the sum of their coverages over 4, their radius less `inset`,
+// and where they lie (ffxDofReduceLightOffset). The same kernel makes every level: MIP 0 from full-resolution
+// pixels, MIPs 1..3 from the level below. `partial` false: the quad is all near and covered, or holds no near
+// source, or its nearest radius lies below `minRadius`.
+struct FfxDofNearQuad
+{
+    FfxBoolean partial;
+    FfxDofMipTexel texel;
+};
+FFX_DOF_INLINE FfxFloat32 ffxDofNearQuadWeight(FfxFloat32 nearest, FfxDofMipTexel source)
+{
+    return source.coc >= FFX_DOF_NEAR_THRESHOLD
+               ? max(ffxDofBilateralWeight(nearest, source.coc), 1e-3f) * source.coverage
+               : 0.0f;
+}
+FFX_DOF_INLINE FfxFloat32 ffxDofNearShare(FfxDofMipTexel source)
+{
+    return source.coc >= FFX_DOF_NEAR_THRESHOLD ? source.coverage : 0.0f;
+}
+FFX_DOF_INLINE FfxDofNearQuad ffxDofReduceNearSources(FfxDofMipTexel source0, FfxDofMipTexel source1,
+                                                      FfxDofMipTexel source2, FfxDofMipTexel source3,
+                                                      FfxFloat32 minRadius, FfxFloat32 inset)
+{
+    FfxDofNearQuad quad;
+    FfxFloat32 nearest = max(max(source0.coc, source1.coc), max(source2.coc, source3.coc));
+    FfxFloat32 weight0 = ffxDofNearQuadWeight(nearest, source0);
+    FfxFloat32 weight1 = ffxDofNearQuadWeight(nearest, source1);
+    FfxFloat32 weight2 = ffxDofNearQuadWeight(nearest, source2);
+    FfxFloat32 weight3 = ffxDofNearQuadWeight(nearest, source3);
+    quad.texel.coverage =
+        (ffxDofNearShare(source0) + ffxDofNearShare(source1) + ffxDofNearShare(source2) + ffxDofNearShare(source3)) *
+        0.25f;
+    quad.partial = nearest >= minRadius && quad.texel.coverage < 1.0f;
+    FfxFloat32 normalization = 1.0f / max(weight0 + weight1 + weight2 + weight3, 1e-6f);
+    quad.texel.color = (source0.color * FfxDofFloat(weight0) + source1.color * FfxDofFloat(weight1) +
+                        source2.color * FfxDofFloat(weight2) + source3.color * FfxDofFloat(weight3)) *
+                       FfxDofFloat(normalization);
+    quad.texel.coc =
+        max((source0.coc * weight0 + source1.coc * weight1 + source2.coc * weight2 + source3.coc * weight3) *
+                    normalization -
+                inset,
+            FFX_DOF_NEAR_THRESHOLD);
+    quad.texel.lightOffset =
+        ffxDofReduceLightOffset(weight0 + 1e-6f, weight1 + 1e-6f, weight2 + 1e-6f, weight3 + 1e-6f, source0.lightOffset,
+                                source1.lightOffset, source2.lightOffset, source3.lightOffset);
+    return quad;
+}
+// MIP 0: a quad of full-resolution pixels.
+FFX_DOF_INLINE FfxDofNearQuad ffxDofReduceNearQuad(FfxDofFloat3 color0, FfxDofFloat3 color1, FfxDofFloat3 color2,
+                                                   FfxDofFloat3 color3, FfxFloat32 coc0, FfxFloat32 coc1,
+                                                   FfxFloat32 coc2, FfxFloat32 coc3)
+{
+    return ffxDofReduceNearSources(ffxDofPixelTexel(color0, coc0), ffxDofPixelTexel(color1, coc1),
+                                   ffxDofPixelTexel(color2, coc2), ffxDofPixelTexel(color3, coc3),
+                                   FFX_DOF_NEAR_COVERAGE_MIN_RADIUS, FFX_DOF_NEAR_COVERAGE_INSET);
 }
 
 // MIP 0 from a quad of full-resolution pixels: its near pixels where the near field covers it in part, else the
@@ -268,7 +268,7 @@ FFX_DOF_INLINE FfxDofMipTexel ffxDofReduceQuadTexel(FfxDofFloat3 color0, FfxDofF
 {
     FfxDofNearQuad nearQuad = ffxDofReduceNearQuad(color0, color1, color2, color3, coc0, coc1, coc2, coc3);
     if (nearQuad.partial)
-        return ffxDofNearQuadTexel(nearQuad);
+        return nearQuad.texel;
     FfxDofMipTexel texel;
     FfxFloat32x2 pixelOffset = FfxFloat32x2(0.0f, 0.0f);  // a full-resolution pixel is a point
     ffxDofBilateralReduceLight(color0, color1, color2, color3, coc0, coc1, coc2, coc3, pixelOffset, pixelOffset,
@@ -284,12 +284,9 @@ FFX_DOF_INLINE FfxDofMipTexel ffxDofReduceMipTexel(FfxDofMipTexel texel0, FfxDof
                                                    FfxDofMipTexel texel3)
 {
     FfxDofNearQuad nearSources = ffxDofReduceNearSources(
-        texel0.color, texel1.color, texel2.color, texel3.color, texel0.coc, texel1.coc, texel2.coc, texel3.coc,
-        FfxFloat32x4(texel0.coverage, texel1.coverage, texel2.coverage, texel3.coverage), texel0.lightOffset,
-        texel1.lightOffset, texel2.lightOffset, texel3.lightOffset,
-        FFX_DOF_NEAR_COVERAGE_MIN_RADIUS - FFX_DOF_NEAR_COVERAGE_INSET, 0.0f);
+        texel0, texel1, texel2, texel3, FFX_DOF_NEAR_COVERAGE_MIN_RADIUS - FFX_DOF_NEAR_COVERAGE_INSET, 0.0f);
     if (nearSources.partial)
-        return ffxDofNearQuadTexel(nearSources);
+        return nearSources.texel;
     FfxDofMipTexel texel;
     ffxDofBilateralReduceLight(texel0.color, texel1.color, texel2.color, texel3.color, texel0.coc, texel1.coc,
                                texel2.coc, texel3.coc, texel0.lightOffset, texel1.lightOffset, texel2.lightOffset,

@@ -95,13 +95,13 @@ TEST_CASE("A quad the near field covers in part keeps its near pixels and their 
             ffxDofReduceNearQuad(column == 0 ? bar : wall, column == 0 ? wall : bar, column == 0 ? bar : wall,
                                  column == 0 ? wall : bar, left, right, left, right);
         CHECK(quad.partial);
-        CHECK(quad.coverage == 0.5f);
-        CHECK(quad.coc == 12.0f - FFX_DOF_NEAR_COVERAGE_INSET);
-        CHECK(quad.color.x == Approx(bar.x));
-        CHECK(quad.color.z == Approx(bar.z));
+        CHECK(quad.texel.coverage == 0.5f);
+        CHECK(quad.texel.coc == 12.0f - FFX_DOF_NEAR_COVERAGE_INSET);
+        CHECK(quad.texel.color.x == Approx(bar.x));
+        CHECK(quad.texel.color.z == Approx(bar.z));
     }
     // One near pixel of four: a quarter.
-    CHECK(ffxDofReduceNearQuad(bar, wall, wall, wall, 6.0f, -3.0f, -3.0f, -3.0f).coverage == 0.25f);
+    CHECK(ffxDofReduceNearQuad(bar, wall, wall, wall, 6.0f, -3.0f, -3.0f, -3.0f).texel.coverage == 0.25f);
     // All near, none near, or a near radius too small to keep apart: the bilateral reduction stands.
     CHECK_FALSE(ffxDofReduceNearQuad(bar, bar, bar, bar, 6.0f, 7.5f, 6.0f, 9.0f).partial);
     CHECK_FALSE(ffxDofReduceNearQuad(wall, wall, wall, wall, 0.0f, -3.0f, 0.2f, -9.0f).partial);
