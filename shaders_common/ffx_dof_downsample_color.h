@@ -260,39 +260,40 @@ FFX_DOF_INLINE FfxDofNearQuad ffxDofReduceNearQuad(FfxDofFloat3 color0, FfxDofFl
                                    FFX_DOF_NEAR_COVERAGE_MIN_RADIUS, FFX_DOF_NEAR_COVERAGE_INSET);
 }
 
-// MIP 0 from a quad of full-resolution pixels: its near pixels where the near field covers it in part, else the
-// bilateral reduction.
-FFX_DOF_INLINE FfxDofMipTexel ffxDofReduceQuadTexel(FfxDofFloat3 color0, FfxDofFloat3 color1, FfxDofFloat3 color2,
-                                                    FfxDofFloat3 color3, FfxFloat32 coc0, FfxFloat32 coc1,
-                                                    FfxFloat32 coc2, FfxFloat32 coc3)
+// A texel from four sources of the level below: their near sources where they cover it in part
+// (ffxDofReduceNearSources), else the bilateral reduction.
+FFX_DOF_INLINE FfxDofMipTexel ffxDofReduceTexel(FfxDofMipTexel source0, FfxDofMipTexel source1, FfxDofMipTexel source2,
+                                                FfxDofMipTexel source3, FfxFloat32 minRadius, FfxFloat32 inset)
 {
-    FfxDofNearQuad nearQuad = ffxDofReduceNearQuad(color0, color1, color2, color3, coc0, coc1, coc2, coc3);
-    if (nearQuad.partial)
-        return nearQuad.texel;
+    FfxDofNearQuad nearSources = ffxDofReduceNearSources(source0, source1, source2, source3, minRadius, inset);
+    if (nearSources.partial)
+        return nearSources.texel;
     FfxDofMipTexel texel;
-    FfxFloat32x2 pixelOffset = FfxFloat32x2(0.0f, 0.0f);  // a full-resolution pixel is a point
-    ffxDofBilateralReduceLight(color0, color1, color2, color3, coc0, coc1, coc2, coc3, pixelOffset, pixelOffset,
-                               pixelOffset, pixelOffset, texel.color, texel.coc, texel.lightOffset);
+    ffxDofBilateralReduceLight(source0.color, source1.color, source2.color, source3.color, source0.coc, source1.coc,
+                               source2.coc, source3.coc, source0.lightOffset, source1.lightOffset, source2.lightOffset,
+                               source3.lightOffset, texel.color, texel.coc, texel.lightOffset);
     texel.coverage = 1.0f;
     return texel;
 }
 
-// A texel of MIP 1..3 from four of the level below: the near sources where they cover it in part (a partly
-// covered child's radius is at least FFX_DOF_NEAR_COVERAGE_MIN_RADIUS less the inset, so its share always
-// carries on up), else the bilateral reduction.
+// MIP 0 from a quad of full-resolution pixels (each a point of coverage 1).
+FFX_DOF_INLINE FfxDofMipTexel ffxDofReduceQuadTexel(FfxDofFloat3 color0, FfxDofFloat3 color1, FfxDofFloat3 color2,
+                                                    FfxDofFloat3 color3, FfxFloat32 coc0, FfxFloat32 coc1,
+                                                    FfxFloat32 coc2, FfxFloat32 coc3)
+{
+    return ffxDofReduceTexel(ffxDofPixelTexel(color0, coc0), ffxDofPixelTexel(color1, coc1),
+                             ffxDofPixelTexel(color2, coc2), ffxDofPixelTexel(color3, coc3),
+                             FFX_DOF_NEAR_COVERAGE_MIN_RADIUS, FFX_DOF_NEAR_COVERAGE_INSET);
+}
+
+// A texel of MIP 1..3 from four of the level below. A partly covered child's radius is at least
+// FFX_DOF_NEAR_COVERAGE_MIN_RADIUS less the inset, so from there its share always carries on up; the inset is
+// taken once, at MIP 0.
 FFX_DOF_INLINE FfxDofMipTexel ffxDofReduceMipTexel(FfxDofMipTexel texel0, FfxDofMipTexel texel1, FfxDofMipTexel texel2,
                                                    FfxDofMipTexel texel3)
 {
-    FfxDofNearQuad nearSources = ffxDofReduceNearSources(
-        texel0, texel1, texel2, texel3, FFX_DOF_NEAR_COVERAGE_MIN_RADIUS - FFX_DOF_NEAR_COVERAGE_INSET, 0.0f);
-    if (nearSources.partial)
-        return nearSources.texel;
-    FfxDofMipTexel texel;
-    ffxDofBilateralReduceLight(texel0.color, texel1.color, texel2.color, texel3.color, texel0.coc, texel1.coc,
-                               texel2.coc, texel3.coc, texel0.lightOffset, texel1.lightOffset, texel2.lightOffset,
-                               texel3.lightOffset, texel.color, texel.coc, texel.lightOffset);
-    texel.coverage = 1.0f;
-    return texel;
+    return ffxDofReduceTexel(texel0, texel1, texel2, texel3,
+                             FFX_DOF_NEAR_COVERAGE_MIN_RADIUS - FFX_DOF_NEAR_COVERAGE_INSET, 0.0f);
 }
 
 // ---- Light rims -------------------------------------------------------------------------------------
