@@ -251,6 +251,7 @@ FfxDofErrorCode buildContextPlan(const ContextConfig& config, const BackendCapab
             return status;
         }
         plan->touched |= pass.reads | pass.writes | pass.indirect;
+        plan->indirect |= pass.indirect;
     }
     plan->tileListsBytes = tileListsWordCount(c.tileCount.x, c.tileCount.y) * 4;
     return FFX_DOF_OK;

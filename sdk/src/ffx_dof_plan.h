@@ -99,6 +99,8 @@ struct ContextPlan {
     uint32_t tileListsBytes = 0;  // TILE_LISTS (TILE_LIST_ARGS: kTileListArgsBytes)
     // Every pass's reads | writes | indirect.
     ResourceSet touched = 0;
+    // Every pass's indirect: what the backends' barriers also make visible to the indirect-argument stage.
+    ResourceSet indirect = 0;
     FfxDofConstants constants{};  // the per-context part; planDispatch adds the per-frame values
 };
 

@@ -176,8 +176,7 @@ FfxDofErrorCode ContextVK::dispatch(const DispatchPlan& dispatch) {
     ResourceSet readSinceBarrier = 0;
     // Every barrier also covers the indirect stage where a pass is dispatched indirectly: dilate writes
     // the composite's dispatch arguments, and the barrier before the blur is the one after dilate.
-    bool indirect = false;
-    for (const PlannedPass& planned : plan_.passes) indirect = indirect || planned.indirect != 0;
+    const bool indirect = plan_.indirect != 0;
     for (uint32_t pass = 0; pass < kPassCount; ++pass) {
         if (!dispatch.runs[pass]) {
             // Not asked for (autofocus without pAutofocus): its timestamp still comes, so indices stay.
