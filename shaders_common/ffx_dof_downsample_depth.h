@@ -83,19 +83,25 @@ FFX_DOF_INLINE FfxFloat32 ffxDofWaveFarthestDepth(FfxFloat32 depth)
 // needs a single barrier: a barrier is cheap on a GPU but costs about as much as the whole pass's
 // memory traffic on a CPU implementation such as lavapipe, where the group's waves run as coroutines
 // (a log2(64)-step tree in group-shared memory, one barrier per step, made this pass 2.5x a copy pass).
-// Every tile list of the composite empty (TILE_LIST_ARGS): no workgroups, until dilate counts its tiles.
-FFX_DOF_INLINE void ffxDofEmptyTileLists()
+// Every tile list empty (TILE_LIST_ARGS: no workgroups) until dilate counts its tiles; invocation `list` of
+// the workgroup that calls it empties list `list`. The caller's condition is the workgroup's alone, so that
+// a CPU implementation (lavapipe) branches past it: a loop in one invocation, masked off in every other
+// workgroup, cost lavapipe about 0.4 ms per list at 1080p (docs/performance.md, "What pass 1 costs now").
+#if FFX_DOF_TILE_LIST_COUNT > FFX_DOF_GROUP_THREADS
+#error "ffxDofEmptyTileLists gives each list one invocation"
+#endif
+FFX_DOF_INLINE void ffxDofEmptyTileLists(FfxUInt32 localIndex)
 {
-    for (FfxUInt32 list = 0u; list < FfxUInt32(FFX_DOF_TILE_LIST_COUNT); ++list)
-        ffxDofStoreTileListArgs(list, FfxUInt32x3(0u, 1u, 1u));
+    if (localIndex < FfxUInt32(FFX_DOF_TILE_LIST_COUNT))
+        ffxDofStoreTileListArgs(localIndex, FfxUInt32x3(0u, 1u, 1u));
 }
 
 FFX_DOF_INLINE void ffxDofDownsampleDepth(FfxUInt32x2 groupId, FfxUInt32 localIndex)
 {
     FfxDofConstants constants = ffxDofGetFocusedConstants();
     // Empty lists for dilate (the previous dispatch's composite has read them).
-    if (groupId.x == 0u && groupId.y == 0u && localIndex == 0u)
-        ffxDofEmptyTileLists();
+    if (groupId.x == 0u && groupId.y == 0u)
+        ffxDofEmptyTileLists(localIndex);
     FfxUInt32x2 quad = groupId * FfxUInt32(FFX_DOF_DOWNSAMPLE_DEPTH_GROUP_EXTENT) + ffxDofLocalCoord(localIndex) * 2u;
     FfxUInt32x2 lastPixel = constants.fullSize - FfxUInt32x2(1u, 1u);
 
