@@ -84,9 +84,9 @@ FFX_DOF_INLINE FfxFloat32 ffxDofWaveFarthestDepth(FfxFloat32 depth)
 // memory traffic on a CPU implementation such as lavapipe, where the group's waves run as coroutines
 // (a log2(64)-step tree in group-shared memory, one barrier per step, made this pass 2.5x a copy pass).
 // Every tile list empty (TILE_LIST_ARGS: no workgroups) until dilate counts its tiles; invocation `list` of
-// the workgroup that calls it empties list `list`. The caller's condition is the workgroup's alone, so that
-// a CPU implementation (lavapipe) branches past it: a loop in one invocation, masked off in every other
-// workgroup, cost lavapipe about 0.4 ms per list at 1080p (docs/performance.md, "What pass 1 costs now").
+// the workgroup that calls it empties list `list`, under a condition of the workgroup alone: the same stores
+// as a loop in one invocation under a condition of the invocation cost lavapipe about 0.4 ms per list at
+// 1080p (docs/performance.md, "What pass 1 costs now").
 #if FFX_DOF_TILE_LIST_COUNT > FFX_DOF_GROUP_THREADS
 #error "ffxDofEmptyTileLists gives each list one invocation"
 #endif

@@ -162,6 +162,8 @@ TEST_CASE("each pass runs the permutation of the context's axes") {
         // Dispatched indirectly from TILE_LIST_ARGS, which it does not bind.
         CHECK(pass.indirect == (composite || blur ? resourceBit(Resource::TileListArgs) : 0u));
     }
+    // The plan sums the indirect reads once, for the backends' barriers.
+    CHECK(plan.indirect == resourceBit(Resource::TileListArgs));
 }
 
 namespace {
