@@ -219,6 +219,13 @@ FFX_DOF_INLINE FfxFloat32x2 ffxDofBorderSpan(FfxDofAnnulusBorder border, FfxFloa
     return FfxFloat32x2(first * border.block, last * border.block + border.block - 1.0f);
 }
 
+// Whether `texel` lies inside the border: a walk whose outer border it is read it, or a walk inside it.
+FFX_DOF_INLINE FfxBoolean ffxDofBorderHolds(FfxDofAnnulusBorder border, FfxFloat32x2 texel)
+{
+    FfxFloat32x2 span = ffxDofBorderSpan(border, texel.y);
+    return texel.x >= span.x && texel.x <= span.y;
+}
+
 FFX_DOF_INLINE FfxDofAnnulus ffxDofMakeAnnulus(FfxFloat32x2 origin, FfxFloat32 innerRadius, FfxFloat32 outerRadius,
                                                FfxFloat32 innerBlock, FfxFloat32 outerBlock, FfxFloat32 widthScale)
 {
@@ -520,6 +527,11 @@ struct FfxDofRingWalk
     FfxFloat32x2 centerToCorner;  // the kernel centre less half a texel, in texels of `mip`
     FfxFloat32x2 lastTexel;       // the last texel of `mip`
     FfxBoolean trackSpread;       // literal at every call: record the radius spread
+    // Leave out a coarse sample whose light lies in a texel of the kernel's MIP that the kernel's outermost
+    // ring read: where ffxDofGatherBehind walks coarser than the kernel (false at every other call).
+    FfxBoolean skipKernelTexels;
+    FfxFloat32 kernelTexelsPerTexel;   // texels of the kernel's MIP per texel of `mip`, per side
+    FfxDofAnnulusBorder kernelBorder;  // the outer border of the kernel's outermost ring, at the kernel's MIP
 };
 
 // The sample loop of one ring walk: every texel of `annulus` at the walk's MIP, once, added to the
@@ -548,7 +560,8 @@ FFX_DOF_INLINE void ffxDofWalkSamples(FFX_DOF_INOUT(FfxDofGather) gather, FFX_DO
         // the position walked: judged from the clamped texel instead, every read past the border counted
         // the edge texel again at its own place, so a near object within a kernel of the border grew
         // opaque there (near-object's near field 0.59 dB lower, docs/quality.md).
-        FfxFloat32x2 toTexel = walk.texel - ring.centerToCorner;
+        FfxFloat32x2 walked = walk.texel;
+        FfxFloat32x2 toTexel = walked - ring.centerToCorner;
         walk = ffxDofAnnulusNext(annulus, walk);
         FfxFloat32x3 color;
         FfxFloat32 coc = kernel.centerCoc;
@@ -558,7 +571,16 @@ FFX_DOF_INLINE void ffxDofWalkSamples(FFX_DOF_INOUT(FfxDofGather) gather, FFX_DO
             color = ffxDofCoarseTexelColor(packed);
             if (!parts.equalWeights)
                 coc = ffxDofCoarseTexelCoc(packed);
-            toTexel += ffxDofCoarseTexelLightOffset(packed);
+            FfxFloat32x2 lightOffset = ffxDofCoarseTexelLightOffset(packed);
+            toTexel += lightOffset;
+            if (ring.skipKernelTexels)
+            {
+                // The texel of the kernel's MIP that holds the light, judged by the kernel's own border
+                // figures (ffxDofBorderSpan), so that a light the kernel read is not read again.
+                FfxFloat32x2 kernelTexel =
+                    floor((walked + FfxFloat32x2(0.5f, 0.5f) + lightOffset) * ring.kernelTexelsPerTexel);
+                valid = ffxDofBorderHolds(ring.kernelBorder, kernelTexel) ? 0.0f : valid;
+            }
         }
         else
         {
@@ -653,6 +675,9 @@ FFX_DOF_INLINE FfxDofRingWalk ffxDofMakeRingWalk(FfxDofKernel kernel, FfxUInt32 
     // offset of the texel's centre.
     ring.centerToCorner = kernel.center * mipScale - FfxFloat32x2(0.5f, 0.5f);
     ring.lastTexel = FfxFloat32x2(ffxDofMipSize(constants.halfSize, mip) - FfxUInt32x2(1u, 1u));
+    ring.skipKernelTexels = false;
+    ring.kernelTexelsPerTexel = 1.0f;
+    ring.kernelBorder = ffxDofMakeAnnulusBorder(FfxFloat32x2(0.0f, 0.0f), 0.0f, 1.0f, 1.0f);
     return ring;
 }
 
@@ -891,14 +916,38 @@ FFX_DOF_INLINE FfxDofGatherParts ffxDofMakeGatherParts(FfxBoolean nearField, Ffx
 // docs/quality.md (docs/performance.md, "What lies behind the kernel").
 #define FFX_DOF_BEHIND_HIDDEN_COVERAGE 0.5f
 
-// What ffxDofGatherBehind walks, at the kernel's MIP: from the kernel's outer radius as its outermost ring
-// sees it (ffxDofKernelOuterRadius) out to the farthest far radius that reaches the tile.
-FFX_DOF_INLINE FfxDofAnnulus ffxDofBehindAnnulus(FfxDofKernel kernel, FfxBoolean shaped)
+// The MIP ffxDofGatherBehind walks for a kernel at `baseMip`: at least MIP 1, whose texels carry where their
+// light lies (their light offsets), as the kernels of the larger radii around read it. Read at MIP 0, where
+// a texel's light is taken at its centre, a small light up to 0.35 half-res px from it reached the texel
+// by less or more than it reached the texels around that read it at MIP 1: a dim light on a bright light's
+// rim cut the bright disc at its own texels by a quarter (it added 0.92 to 0.94 of its energy; docs/quality.md,
+// a dim light beside a bright one). A quarter of the texels, too.
+FFX_DOF_INLINE FfxUInt32 ffxDofBehindMip(FfxUInt32 baseMip)
 {
-    FfxFloat32 mipScale = 1.0f / FfxFloat32(1u << kernel.baseMip);
-    FfxFloat32 innerRadius = ffxDofKernelOuterRadius(kernel.rings, kernel.spacing * mipScale, kernel.baseMip);
+    return min(max(baseMip, 1u), FfxUInt32(FFX_DOF_OPTION_MAX_MIP - 1));
+}
+
+// How far inside the kernel's outer border (in texels of the walk's MIP) a texel of a coarser walk may hold
+// a light that lies in a texel of the kernel's MIP outside it: its light lies up to sqrt(1/2) of its own
+// texel from its centre, and the finer texel holding it has its centre up to sqrt(1/2) of a finer texel
+// farther (at most half a walk texel).
+#define FFX_DOF_BEHIND_INNER_MARGIN 1.07f
+
+// What ffxDofGatherBehind walks, at `mip` (ffxDofBehindMip): from the kernel's outer radius as its outermost
+// ring sees it (ffxDofKernelOuterRadius) out to the farthest far radius that reaches the tile. At the
+// kernel's MIP the two walks share that border; a coarser walk starts FFX_DOF_BEHIND_INNER_MARGIN inside it
+// and leaves out the lights the kernel read (FfxDofRingWalk::skipKernelTexels).
+FFX_DOF_INLINE FfxDofAnnulus ffxDofBehindAnnulus(FfxDofKernel kernel, FfxUInt32 mip, FfxBoolean shaped)
+{
+    FfxFloat32 mipScale = 1.0f / FfxFloat32(1u << mip);
+    FfxFloat32 kernelTexelSize = FfxFloat32(1u << kernel.baseMip);
+    FfxFloat32 kernelOuterRadius =
+        ffxDofKernelOuterRadius(kernel.rings, kernel.spacing / kernelTexelSize, kernel.baseMip) * kernelTexelSize *
+        mipScale;
+    FfxFloat32 innerRadius =
+        mip == kernel.baseMip ? kernelOuterRadius : max(kernelOuterRadius - FFX_DOF_BEHIND_INNER_MARGIN, 0.0f);
     FfxFloat32 outerRadius = max((kernel.behindRadius + 0.5f * kernel.spacing) * mipScale, innerRadius);
-    return ffxDofKernelAnnulus(kernel, kernel.baseMip, innerRadius, outerRadius, 1.0f, 1.0f, shaped);
+    return ffxDofKernelAnnulus(kernel, mip, innerRadius, outerRadius, 1.0f, 1.0f, shaped);
 }
 
 // Far samples beyond the kernel that still reach the texel. A far texel's kernel is its own radius, but
@@ -906,18 +955,24 @@ FFX_DOF_INLINE FfxDofAnnulus ffxDofBehindAnnulus(FfxDofKernel kernel, FfxBoolean
 // of its disc (a small light, the rim of an object) what lies behind shows through, a light there
 // included. Without this, a dim light on a bright light's disc cut the bright disc at its own texels as
 // if opaque: it added 0.79 of its energy instead of 1.00 (docs/quality.md, a dim light beside a bright
-// one). Walked at the kernel's MIP from the outermost ring's outer border (the same figures, so the two
-// share no texel and miss none) out to the farthest far radius that reaches the tile (dilate's far end),
-// only where the layers in front do not hide it already. Not on equal-weight tiles, whose samples are all
-// taken at the texel's own radius.
+// one). Walked from the kernel's outermost ring's outer border (ffxDofBehindAnnulus: the two read no light
+// twice and miss none) out to the farthest far radius that reaches the tile (dilate's far end), at
+// ffxDofBehindMip, only where the layers in front do not hide it already. Not on equal-weight tiles, whose
+// samples are all taken at the texel's own radius.
 FFX_DOF_INLINE void ffxDofGatherBehind(FFX_DOF_INOUT(FfxDofGather) gather, FfxDofKernel kernel, FfxDofGatherParts parts,
                                        FfxDofConstants constants)
 {
     FfxFloat32 covered = (gather.farNearer.weight + gather.farFront.weight) * (1.0f / FFX_DOF_PI);
     if (kernel.behindRadius <= 0.0f || covered >= FFX_DOF_BEHIND_HIDDEN_COVERAGE)
         return;
-    FfxDofRingWalk ring = ffxDofMakeRingWalk(kernel, kernel.baseMip, 1.0f, false, constants);
-    FfxDofAnnulus annulus = ffxDofBehindAnnulus(kernel, parts.shaped);
+    FfxUInt32 mip = ffxDofBehindMip(kernel.baseMip);
+    FfxDofRingWalk ring = ffxDofMakeRingWalk(kernel, mip, 1.0f, false, constants);
+    ring.skipKernelTexels = mip > kernel.baseMip;
+    ring.kernelTexelsPerTexel = FfxFloat32(1u << (mip - kernel.baseMip));
+    ring.kernelBorder = ffxDofRingsAnnulus(kernel, kernel.rings, kernel.rings, kernel.baseMip, kernel.baseMip,
+                                           kernel.baseMip, parts.shaped)
+                            .outer;
+    FfxDofAnnulus annulus = ffxDofBehindAnnulus(kernel, mip, parts.shaped);
     // Far buckets only: near samples this far out cannot reach (the kernel covers the near radii).
     FfxDofGatherParts behindParts = ffxDofMakeGatherParts(false, true, false, parts.shaped);
     FfxFloat32x3 unusedFillSum = FfxFloat32x3(0.0f, 0.0f, 0.0f);

@@ -88,32 +88,21 @@ TEST_CASE("mid-lights: every light measured alone, and no fewer lights within 5%
     CHECK(quality::validatedDevice().validationMessages().empty());
 }
 
-// The mid-lights scene's non-locality in its minimal case (quality_scenes.h, LightPairCase). Measured
-// 2026-11-28: alone the dim light adds 1.00 to 1.02 of its input; beside the bright light, with ring
-// merging, 0.79 and 0.81 at 16 px (their discs overlap most; 0.79 and 0.82 with merging off) and 1.00 to
-// 1.02 from 24 px on, as with merging off: 8 of 12. Before the coarse MIPs were packed in one texel
-// (COARSE_MIPS) the merged cases from 24 px on kept 0.93 to 0.95 (6 of 12; 4 before the whole-texel rim
-// inset, 0.81 to 0.93 while coarse texels were drawn about their centres): lavapipe's R16 float stores
-// truncated the coarse radius, which the packing rounds to nearest.
-// Until 2026-11-28 (ffxDofGatherBehind) the dim light's own texels never read the bright light, whose
-// disc reaches them from beyond their kernel, and cut its disc as if opaque: the cases at 16 px kept 0.79
-// to 0.82; since, 0.91 to 0.94 (every case at least kLeastBeside); since the composite's upsample weighs far texels by
-// the ratio of their radii (ffxDofUpsampleCocWeight, 2026-11-29), 0.92 to 0.94.
-// Until every case passes, the count is a ratchet: it may rise (raise kWithinFivePercent), never fall.
-TEST_CASE("small lights: a dim light beside a bright one adds its energy within 5%, and no fewer cases than measured",
-          "[quality][vulkan][lights]") {
-    constexpr size_t kWithinFivePercent = 8;  // of 12
-    constexpr double kLeastBeside = 0.9;
+// The mid-lights scene's non-locality in its minimal case (quality_scenes.h, LightPairCase): alone the dim
+// light adds 1.00 to 1.02 of its input; beside the bright light 0.97 to 1.02 (2026-11-29), with ring merging
+// and without. History (docs/quality.md has it in full): merged texels drew the bright disc about coarse texel
+// centres (the dim light lost 7 to 19% from 24 px on, until 2026-11-28); the dim light's own texels never read
+// the bright light beyond their kernel (0.79 to 0.82 at 16 px, until 2026-11-28, ffxDofGatherBehind); the
+// composite's upsample rejected far texels of another radius (0.91 to 0.94, until 2026-11-29,
+// ffxDofUpsampleCocWeight); the walk beyond the kernel read the bright light at MIP 0, at its texels'
+// centres (0.92 to 0.94, until 2026-11-29, ffxDofBehindMip).
+TEST_CASE("small lights: a dim light beside a bright one adds its energy within 5%", "[quality][vulkan][lights]") {
     quality::validatedDevice().clearValidationMessages();
     const std::vector<quality::LightPairCase> pairs = quality::runLightPairCases(quality::validatedDevice());
     REQUIRE(pairs.size() == 12);
-    size_t within = 0;
     for (const quality::LightPairCase& pair : pairs) {
         INFO(pair.describe());
-        CHECK(std::abs(pair.aloneRatio - 1.0) <= 0.05);
-        CHECK(pair.besideRatio >= kLeastBeside);
-        within += pair.energyOk();
+        CHECK(pair.energyOk());
     }
-    CHECK(within >= kWithinFivePercent);
     CHECK(quality::validatedDevice().validationMessages().empty());
 }

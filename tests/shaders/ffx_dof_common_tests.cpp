@@ -752,6 +752,8 @@ TEST_CASE("A coarse outermost ring reads every texel whose light the kernel reac
     // offset); the kernel's reach takes a light up to its radius + half a pixel away. The outermost
     // ring's outer border lies far enough out for the centre of any such texel, and the walk beyond
     // the kernel (ffxDofBehindAnnulus) starts at that border: the two share no texel and miss none.
+    // Behind a kernel at MIP 0 the walk beyond is at MIP 1 (ffxDofBehindMip) and leaves out the lights
+    // the kernel's border holds: a light in any texel of MIP 0 is read once.
     std::mt19937 rng(7);
     std::uniform_real_distribution<float> unit(0.0f, 1.0f);
     for (int trial = 0; trial < 400; ++trial) {
@@ -773,19 +775,30 @@ TEST_CASE("A coarse outermost ring reads every texel whose light the kernel reac
         for (const auto& t : walkAnnulus(ffxDofRingsAnnulus(kernel, kernel.rings, kernel.rings, kernel.baseMip,
                                                             kernel.baseMip, kernel.baseMip, false)))
             ring.insert(t);
+        const uint32_t behindMip = ffxDofBehindMip(kernel.baseMip);
         std::set<std::pair<int, int>> behind;
-        for (const auto& t : walkAnnulus(ffxDofBehindAnnulus(kernel, false))) {
-            REQUIRE(ring.count(t) == 0);
+        for (const auto& t : walkAnnulus(ffxDofBehindAnnulus(kernel, behindMip, false))) {
+            if (behindMip == kernel.baseMip) REQUIRE(ring.count(t) == 0);
             behind.insert(t);
         }
         const FfxFloat32x2 origin = kernel.origin / texel;
         const float innerOfRing = ffxDofRingInnerRadius(kernel.rings, kernel.spacing / texel);
         const float outerOfBehind = (kernel.behindRadius + 0.5f * kernel.spacing) / texel;
+        const FfxDofAnnulusBorder kernelBorder = ffxDofRingsAnnulus(kernel, kernel.rings, kernel.rings, kernel.baseMip,
+                                                                    kernel.baseMip, kernel.baseMip, false)
+                                                     .outer;
+        const int shift = int(behindMip - kernel.baseMip);
         for (int y = 0; y < 140; ++y)
             for (int x = 0; x < 140; ++x) {
+                // A light in texel (x, y) of the kernel's MIP: at a coarser walk, its texel holds it there
+                // (its light offset), and the walk leaves it out where the kernel's border holds it.
+                const bool behindReads = behind.count({x >> shift, y >> shift}) == 1 &&
+                                         (shift == 0 || !ffxDofBorderHolds(kernelBorder, FfxFloat32x2(x, y)));
                 const double d = centreDistance(origin, x, y);
-                if (d > innerOfRing + 1e-3 && d < outerOfBehind - 1e-3)
-                    REQUIRE(ring.count({x, y}) + behind.count({x, y}) == 1);
+                if (d <= innerOfRing + 1e-3)
+                    REQUIRE_FALSE(behindReads);  // the inner rings read it
+                else if (d < outerOfBehind - (1 << shift) - 1e-3)
+                    REQUIRE(ring.count({x, y}) + (behindReads ? 1 : 0) == 1);
             }
     }
 }

@@ -664,3 +664,59 @@ TEST_CASE("A small far light at a radius the composite blurs at full resolution 
         }
     }
 }
+
+TEST_CASE("A dim light on a bright light's rim leaves the bright disc there as it is", "[pipeline]") {
+    // Issue 17's pair of lights at 16 px (docs/quality.md, a dim light beside a bright one) at half-res
+    // radii: a bright light (3 x 3 px of 1000 at -9.1) and a dim one (2 x 2 px of 50 at -3) on the bright
+    // disc's rim, over a background of 0.05 at -16. The dim light's two texels read the bright light beyond
+    // their kernel (ffxDofGatherBehind). At MIP 0, where a texel's light is taken at its centre, the bright
+    // light's far texels lay beyond the bright disc's rim there, while the background's texels around read
+    // it from MIP 1 where its light lies: until 2026-11-29 the far layer at the dim light's texels kept 0.77
+    // and 0.70 of the bright disc there, and the dim light added 0.91 of its energy beside the bright light.
+    // Read from MIP 1 and up (ffxDofBehindMip): 0.95 and 0.92, and 0.95. What is left is the layering: at its
+    // own texels the nearer dim light hides what lies behind by its coverage (8%), the bright disc included.
+    const uint32_t w = 160, h = 128;
+    Scene none;
+    none.width = w;
+    none.height = h;
+    none.color.assign(size_t(w) * h, glm::vec4(0.05f, 0.05f, 0.05f, 1.0f));
+    none.depth.assign(size_t(w) * h, 16.0f);
+    const auto withLight = [&](Scene scene, int x0, int y0, int size, float value, float coc) {
+        for (int y = y0; y < y0 + size; ++y)
+            for (int x = x0; x < x0 + size; ++x) {
+                scene.color[size_t(y) * w + size_t(x)] = glm::vec4(value, value, value, 1.0f);
+                scene.depth[size_t(y) * w + size_t(x)] = -coc;
+            }
+        return scene;
+    };
+    const Scene bright = withLight(none, 80, 60, 3, 1000.0f, -9.1f);
+    const Scene dim = withLight(none, 64, 57, 2, 50.0f, -3.0f);
+    const Scene both = withLight(bright, 64, 57, 2, 50.0f, -3.0f);
+    Settings settings;
+    settings.cocLimit = 16.4f;
+    Layers noneLayers, brightLayers, dimLayers, bothLayers;
+    const std::vector<glm::vec4> noneOut = ffxdoftest::runPipeline(none, settings, &noneLayers);
+    const std::vector<glm::vec4> brightOut = ffxdoftest::runPipeline(bright, settings, &brightLayers);
+    const std::vector<glm::vec4> dimOut = ffxdoftest::runPipeline(dim, settings, &dimLayers);
+    const std::vector<glm::vec4> bothOut = ffxdoftest::runPipeline(both, settings, &bothLayers);
+    // The dim light's texels: half-res (32, 28) and (32, 29).
+    for (const size_t texel : {size_t(28) * brightLayers.halfWidth + 32, size_t(29) * brightLayers.halfWidth + 32}) {
+        REQUIRE(bothLayers.coc0[texel] == Approx(-3.0f));
+        const double brightThere = brightLayers.farColor[texel].y;
+        const double besideDim =
+            bothLayers.farColor[texel].y - (dimLayers.farColor[texel].y - noneLayers.farColor[texel].y);
+        INFO("texel " << texel << ": the bright disc's far layer " << brightThere << ", beside the dim light "
+                      << besideDim);
+        CHECK(besideDim / brightThere >= 0.9);
+    }
+    double dimAlone = 0.0, dimBeside = 0.0;
+    for (size_t i = 0; i < noneOut.size(); ++i) {
+        dimAlone += double(dimOut[i].y) - noneOut[i].y;
+        dimBeside += double(bothOut[i].y) - brightOut[i].y;
+    }
+    const double dimInput = 4.0 * (50.0 - 0.05);
+    INFO("the dim light adds " << dimAlone / dimInput << " of its energy alone, " << dimBeside / dimInput
+                               << " beside the bright light");
+    CHECK(dimAlone / dimInput == Approx(1.0).margin(0.05));
+    CHECK(dimBeside / dimInput == Approx(1.0).margin(0.05));
+}
