@@ -471,8 +471,16 @@ void writeSceneLights(std::ostream& md, vkrun::Device& device) {
        << worst->emitter << "'s (" << (worst->float32 ? "32" : "16") << "-bit: " << number(worst->energyRatio(), "%.3f")
        << "). " << ownDiscText.str()
        << " Ring merging and the rim inset are decided per tile from the radii its kernels read (dilate's footprint), "
-          "so a dim light in a bright light's tiles changes how the "
-          "bright light's rim is drawn. Lights beside in-focus objects (partly hidden) keep their rim pixels at "
+          "and per texel from the radii on its outermost ring, so a dim light near a bright light changes how the "
+          "bright light's disc is drawn. For light 2 (measured on 2026-11-29 by taking it out of the scene): with "
+          "ring merging off no pixel outside its own disc changes; with it on, the texels of light 3's disc within "
+          "about 16 px of light 2 stop merging while it is there, and there the merged rings had drawn light 3's "
+          "disc about 0.9% brighter than the full rings do (-0.25 in RGB summed per pixel over a disc level of "
+          "28.7). Tried on 2026-11-29, not kept: letting a tile merge unless a far radius whose disc can reach it is "
+          "too small (light 2's disc of 6.5 half-res px stops 2 px short of light 3's tiles): light 2 then added "
+          "0.88 instead of 0.93 (the texels whose outermost ring reads it still do not merge), and the dim light of "
+          "the pair above, 24 and 32 px from the bright one, 1.03 to 1.05 instead of 1.00 to 1.02. Lights beside "
+          "in-focus objects (partly hidden) keep their rim pixels at "
           "the in-focus depth, sharp, and their disc is not cut by the object as the thin lens cuts it. Light 12 "
           "lies half behind the box's edge: the half-res texel holding its visible pixels and in-focus box pixels "
           "drops the box pixels (another radius), so the light's pixels fill the texel and its energy there "
