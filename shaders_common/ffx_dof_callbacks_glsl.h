@@ -72,7 +72,10 @@ FfxDofFloat3 ffxDofLoadFarColor(FfxInt32x2 texel)
     vec4 color = texelFetch(ffxDofFarColor, texel, 0);
     return FfxDofFloat3(color.x, color.y, color.z);
 }
-FfxFloat32x2 ffxDofLoadLayerAlpha(FfxInt32x2 texel) { return texelFetch(ffxDofLayerAlpha, texel, 0).xy; }
+FfxFloat32x2 ffxDofLoadLayerAlpha(FfxInt32x2 texel)
+{
+    return ffxDofUnpackLayerAlpha(texelFetch(ffxDofLayerAlpha, texel, 0).x);
+}
 #endif
 
 #if FFX_DOF_USES_RW_MIPS
@@ -133,7 +136,7 @@ void ffxDofStoreDilatedTile(FfxUInt32x2 tile, FfxFloat32x4 farNearFootprint)
 #if FFX_DOF_USES_RW_LAYERS
 FFX_DOF_BINDING_UAV_IMAGE(FFX_DOF_UAV_NEAR_COLOR, r11f_g11f_b10f) uniform writeonly image2D ffxDofRwNearColor;
 FFX_DOF_BINDING_UAV_IMAGE(FFX_DOF_UAV_FAR_COLOR, r11f_g11f_b10f) uniform writeonly image2D ffxDofRwFarColor;
-FFX_DOF_BINDING_UAV_IMAGE(FFX_DOF_UAV_LAYER_ALPHA, rg8) uniform writeonly image2D ffxDofRwLayerAlpha;
+FFX_DOF_BINDING_UAV_IMAGE(FFX_DOF_UAV_LAYER_ALPHA, r8) uniform writeonly image2D ffxDofRwLayerAlpha;
 void ffxDofStoreNearColor(FfxUInt32x2 texel, FfxDofFloat3 color)
 {
     imageStore(ffxDofRwNearColor, ivec2(texel), vec4(color.x, color.y, color.z, 1.0f));
@@ -144,7 +147,7 @@ void ffxDofStoreFarColor(FfxUInt32x2 texel, FfxDofFloat3 color)
 }
 void ffxDofStoreLayerAlpha(FfxUInt32x2 texel, FfxFloat32x2 nearOpacityFarValidity)
 {
-    imageStore(ffxDofRwLayerAlpha, ivec2(texel), vec4(nearOpacityFarValidity.x, nearOpacityFarValidity.y, 0.0f, 0.0f));
+    imageStore(ffxDofRwLayerAlpha, ivec2(texel), vec4(ffxDofPackLayerAlpha(nearOpacityFarValidity), 0.0f, 0.0f, 0.0f));
 }
 #endif
 

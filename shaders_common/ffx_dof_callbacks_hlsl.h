@@ -92,10 +92,13 @@ Texture2D<float3> ffxDofNearColor : FFX_DOF_HLSL_REGISTER(t, FFX_DOF_SRV_NEAR_CO
 FFX_DOF_BINDING_SRV(FFX_DOF_SRV_FAR_COLOR)
 Texture2D<float3> ffxDofFarColor : FFX_DOF_HLSL_REGISTER(t, FFX_DOF_SRV_FAR_COLOR);
 FFX_DOF_BINDING_SRV(FFX_DOF_SRV_LAYER_ALPHA)
-Texture2D<float2> ffxDofLayerAlpha : FFX_DOF_HLSL_REGISTER(t, FFX_DOF_SRV_LAYER_ALPHA);
+Texture2D<float> ffxDofLayerAlpha : FFX_DOF_HLSL_REGISTER(t, FFX_DOF_SRV_LAYER_ALPHA);
 FfxDofFloat3 ffxDofLoadNearColor(FfxInt32x2 texel) { return FfxDofFloat3(ffxDofNearColor.Load(int3(texel, 0))); }
 FfxDofFloat3 ffxDofLoadFarColor(FfxInt32x2 texel) { return FfxDofFloat3(ffxDofFarColor.Load(int3(texel, 0))); }
-FfxFloat32x2 ffxDofLoadLayerAlpha(FfxInt32x2 texel) { return ffxDofLayerAlpha.Load(int3(texel, 0)); }
+FfxFloat32x2 ffxDofLoadLayerAlpha(FfxInt32x2 texel)
+{
+    return ffxDofUnpackLayerAlpha(ffxDofLayerAlpha.Load(int3(texel, 0)));
+}
 #endif
 
 #if FFX_DOF_USES_RW_MIPS
@@ -159,12 +162,12 @@ RWTexture2D<float3> ffxDofRwNearColor : FFX_DOF_HLSL_REGISTER(u, FFX_DOF_UAV_NEA
 FFX_DOF_BINDING_UAV_IMAGE(FFX_DOF_UAV_FAR_COLOR)
 RWTexture2D<float3> ffxDofRwFarColor : FFX_DOF_HLSL_REGISTER(u, FFX_DOF_UAV_FAR_COLOR);
 FFX_DOF_BINDING_UAV_IMAGE(FFX_DOF_UAV_LAYER_ALPHA)
-RWTexture2D<float2> ffxDofRwLayerAlpha : FFX_DOF_HLSL_REGISTER(u, FFX_DOF_UAV_LAYER_ALPHA);
+RWTexture2D<float> ffxDofRwLayerAlpha : FFX_DOF_HLSL_REGISTER(u, FFX_DOF_UAV_LAYER_ALPHA);
 void ffxDofStoreNearColor(FfxUInt32x2 texel, FfxDofFloat3 color) { ffxDofRwNearColor[texel] = float3(color); }
 void ffxDofStoreFarColor(FfxUInt32x2 texel, FfxDofFloat3 color) { ffxDofRwFarColor[texel] = float3(color); }
 void ffxDofStoreLayerAlpha(FfxUInt32x2 texel, FfxFloat32x2 nearOpacityFarValidity)
 {
-    ffxDofRwLayerAlpha[texel] = nearOpacityFarValidity;
+    ffxDofRwLayerAlpha[texel] = ffxDofPackLayerAlpha(nearOpacityFarValidity);
 }
 #endif
 

@@ -301,6 +301,28 @@ FFX_DOF_INLINE FfxFloat32 ffxDofCoarseNearCoverage(FfxFloat32 coc)
     return FfxFloat32(level + 1u) * (1.0f / FfxFloat32(FFX_DOF_COARSE_COVERAGE_STEPS));
 }
 
+// ---- Layer alpha -------------------------------------------------------------------------------------
+//
+// LAYER_ALPHA holds, per half-res texel, the near-field opacity and whether the far layer holds gathered
+// colour (a yes or no) in one 8-bit unorm: the validity in the top bit, the opacity in 127ths below it. Two
+// 8-bit channels (R8G8) cost 0.52 MB more at 1080p; the composite averages the opacity over 3 x 3 texels
+// and interpolates it: every gate of docs/quality.md holds, no scene moved by more than 0.01 dB, and a thin
+// near bar's summed veil moved by up to 4% of its width, its worst case within the gate's 10% as before
+// (0.971 of the width against 0.967; docs/performance.md, "LAYER_ALPHA in one byte").
+// The value stored lies a quarter of a step above its byte's multiple of 1/255, so that a conversion that
+// rounds to nearest and one that truncates (as lavapipe does its R16 float stores) store the same byte.
+FFX_DOF_INLINE FfxFloat32 ffxDofPackLayerAlpha(FfxFloat32x2 nearOpacityFarValidity)
+{
+    FfxFloat32 opacitySteps = floor(ffxDofSaturate(nearOpacityFarValidity.x) * 127.0f + 0.5f);
+    return (opacitySteps + (nearOpacityFarValidity.y > 0.0f ? 128.0f : 0.0f) + 0.25f) * (1.0f / 255.0f);
+}
+FFX_DOF_INLINE FfxFloat32x2 ffxDofUnpackLayerAlpha(FfxFloat32 packed)
+{
+    FfxFloat32 value = floor(packed * 255.0f + 0.5f);
+    FfxFloat32 validity = value >= 128.0f ? 1.0f : 0.0f;
+    return FfxFloat32x2((value - 128.0f * validity) * (1.0f / 127.0f), validity);
+}
+
 // ---- HDR range ---------------------------------------------------------------------------------
 
 // The internal colour images are B10G11R11 float (largest finite value 65024) and the 16-bit

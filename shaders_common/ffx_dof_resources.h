@@ -25,9 +25,10 @@
 //                                            radius of the tiles its blur kernels read
 //   NEAR_COLOR     half, B10G11R11 float     near-field color
 //   FAR_COLOR      half, B10G11R11 float     far-field color
-//   LAYER_ALPHA    half, R8G8 unorm          x: near-field opacity (coverage of the pixel by near-field
-//                                            blur, 0..1), y: far-field validity (1: FAR_COLOR holds
-//                                            gathered far-field color, 0: nothing was gathered)
+//   LAYER_ALPHA    half, R8 unorm            near-field opacity (coverage of the pixel by near-field
+//                                            blur, 0..1, in 127ths) and far-field validity (top bit; 1:
+//                                            FAR_COLOR holds gathered far-field color, 0: nothing was
+//                                            gathered), packed by ffxDofPackLayerAlpha
 //   GLOBALS        16-byte storage buffer    four uint words, all zero before the first dispatch:
 //                  [0] (FFX_DOF_GLOBALS_MAX_RADIUS): global max |radius|, half-res px, as float bits
 //                  (atomic max on uint: non-negative floats order like their bits); pass 1 writes,

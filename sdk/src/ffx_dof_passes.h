@@ -24,7 +24,7 @@ constexpr uint32_t kMipCount = 4;
 
 // The internal images, API-neutral: the one table both backends create from (each maps the format
 // to its API's enum). Names, formats and slots follow shaders_common/ffx_dof_resources.h.
-enum class InternalFormat : uint32_t { R11G11B10Float, R16Float, R16G16B16A16Float, R8G8Unorm, R32G32Uint };
+enum class InternalFormat : uint32_t { R11G11B10Float, R16Float, R16G16B16A16Float, R8Unorm, R32G32Uint };
 
 enum class ImageExtent : uint32_t {
     Half,     // ceil(W / 2) x ceil(H / 2)
@@ -54,7 +54,7 @@ constexpr InternalImageSpec kInternalImages[] = {
     {"NEAR_COLOR", InternalFormat::R11G11B10Float, ImageExtent::Half, 1, FFX_DOF_SRV_NEAR_COLOR,
      FFX_DOF_UAV_NEAR_COLOR},
     {"FAR_COLOR", InternalFormat::R11G11B10Float, ImageExtent::Half, 1, FFX_DOF_SRV_FAR_COLOR, FFX_DOF_UAV_FAR_COLOR},
-    {"LAYER_ALPHA", InternalFormat::R8G8Unorm, ImageExtent::Half, 1, FFX_DOF_SRV_LAYER_ALPHA, FFX_DOF_UAV_LAYER_ALPHA},
+    {"LAYER_ALPHA", InternalFormat::R8Unorm, ImageExtent::Half, 1, FFX_DOF_SRV_LAYER_ALPHA, FFX_DOF_UAV_LAYER_ALPHA},
 };
 constexpr uint32_t kInternalImageCount = sizeof(kInternalImages) / sizeof(kInternalImages[0]);
 

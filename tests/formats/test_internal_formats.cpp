@@ -62,7 +62,7 @@ const ShaderImage kSampledImages[] = {
 const std::set<std::string> kEngineStorageImages = {"ffxDofOutput"};
 const std::set<std::string> kEngineSampledImages = {"ffxDofInputColor", "ffxDofInputDepth"};
 
-const char* const kFormatNames[] = {"R11G11B10Float", "R16Float", "R16G16B16A16Float", "R8G8Unorm", "R32G32Uint"};
+const char* const kFormatNames[] = {"R11G11B10Float", "R16Float", "R16G16B16A16Float", "R8Unorm", "R32G32Uint"};
 
 SpvImageFormat spirvFormat(InternalFormat format) {
     switch (format) {
@@ -72,8 +72,8 @@ SpvImageFormat spirvFormat(InternalFormat format) {
             return SpvImageFormatR16f;
         case InternalFormat::R16G16B16A16Float:
             return SpvImageFormatRgba16f;
-        case InternalFormat::R8G8Unorm:
-            return SpvImageFormatRg8;
+        case InternalFormat::R8Unorm:
+            return SpvImageFormatR8;
         case InternalFormat::R32G32Uint:
             return SpvImageFormatRg32ui;
     }
@@ -94,8 +94,8 @@ std::string spirvFormatName(SpvImageFormat format) {
             return "Rg16f";
         case SpvImageFormatRgba16f:
             return "Rgba16f";
-        case SpvImageFormatRg8:
-            return "Rg8";
+        case SpvImageFormatR8:
+            return "R8";
         case SpvImageFormatRg32ui:
             return "Rg32ui";
         default:

@@ -1306,6 +1306,37 @@ TEST_CASE("Two 16-bit floats pack into one word and back", "[storage]") {
     CHECK(ffxDofPackHalf2(glm::vec2(0.0f, 1.0f)) == 0x3c000000u);
 }
 
+TEST_CASE("Near opacity and far validity share one 8-bit texel of LAYER_ALPHA", "[storage]") {
+    bool previousValid = false;
+    float previousPacked = -1.0f;
+    for (int valid = 0; valid < 2; ++valid) {
+        for (int i = 0; i <= 1000; ++i) {
+            const float opacity = float(i) / 1000.0f;
+            const float packed = ffxDofPackLayerAlpha(FfxFloat32x2(opacity, float(valid)));
+            INFO("opacity " << opacity << ", validity " << valid << ": " << packed);
+            // A quarter step above a multiple of 1/255: a unorm conversion that rounds to nearest and one
+            // that truncates store the same byte; the device reads back that multiple.
+            const float steps = packed * 255.0f;
+            REQUIRE(std::round(steps) == std::floor(steps));
+            REQUIRE(std::floor(steps) >= 0.0f);
+            REQUIRE(std::floor(steps) <= 255.0f);
+            const FfxFloat32x2 back = ffxDofUnpackLayerAlpha(std::floor(steps) / 255.0f);
+            CHECK(back.y == float(valid));
+            CHECK(std::fabs(back.x - opacity) <= 0.5f / 127.0f + 1e-6f);
+            // Monotonic in the opacity within each validity; every valid value above every invalid one.
+            if (valid == int(previousValid)) CHECK(packed >= previousPacked);
+            if (valid == 1 && i == 0) CHECK(packed > previousPacked);
+            previousPacked = packed;
+            previousValid = valid == 1;
+        }
+    }
+    // Read back unquantized by the device (the CPU pipeline's accessors), the packed value unpacks the same.
+    CHECK(ffxDofUnpackLayerAlpha(ffxDofPackLayerAlpha(FfxFloat32x2(1.0f, 1.0f))) == FfxFloat32x2(1.0f, 1.0f));
+    CHECK(ffxDofUnpackLayerAlpha(ffxDofPackLayerAlpha(FfxFloat32x2(0.0f, 0.0f))) == FfxFloat32x2(0.0f, 0.0f));
+    // Out-of-range opacities saturate.
+    CHECK(ffxDofUnpackLayerAlpha(ffxDofPackLayerAlpha(FfxFloat32x2(1.5f, 0.0f))).x == 1.0f);
+}
+
 TEST_CASE("Colors are rounded to nearest before a packed-float store", "[storage]") {
     CHECK(ffxDofRoundMantissa(1.0f + 1.0f / 256.0f, 6u) == 1.0f);
     CHECK(ffxDofRoundMantissa(1.0f + 3.0f / 256.0f, 6u) == 1.0f + 1.0f / 64.0f);

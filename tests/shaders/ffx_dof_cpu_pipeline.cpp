@@ -217,8 +217,9 @@ FfxUInt32x2 ffxDofLoadCoarseMip(FfxInt32x2 t, FfxUInt32 mip) {
 void ffxDofStoreNearColor(FfxUInt32x2 t, FfxDofFloat3 c) { g_state->nearColor.store(t.x, t.y, c); }
 void ffxDofStoreFarColor(FfxUInt32x2 t, FfxDofFloat3 c) { g_state->farColor.store(t.x, t.y, c); }
 void ffxDofStoreLayerAlpha(FfxUInt32x2 t, FfxFloat32x2 a) {
-    // LAYER_ALPHA is R8G8 UNORM: the values must already be in [0, 1].
-    if (a.x < 0.0f || a.x > 1.0f || a.y < 0.0f || a.y > 1.0f) throw std::range_error("layer alpha out of range");
+    // LAYER_ALPHA is one R8 UNORM (ffxDofPackLayerAlpha): the opacity must already be in [0, 1] and the
+    // validity 0 or 1. Kept unquantized, as the other layers are kept in 32-bit floats.
+    if (a.x < 0.0f || a.x > 1.0f || (a.y != 0.0f && a.y != 1.0f)) throw std::range_error("layer alpha out of range");
     g_state->layerAlpha.store(t.x, t.y, a);
 }
 FfxDofFloat3 ffxDofLoadNearColor(FfxInt32x2 t) { return g_state->nearColor.at(t.x, t.y); }

@@ -22,8 +22,8 @@ constexpr DXGI_FORMAT toDxgiFormat(InternalFormat format) {
             return DXGI_FORMAT_R16_FLOAT;
         case InternalFormat::R16G16B16A16Float:
             return DXGI_FORMAT_R16G16B16A16_FLOAT;
-        case InternalFormat::R8G8Unorm:
-            return DXGI_FORMAT_R8G8_UNORM;
+        case InternalFormat::R8Unorm:
+            return DXGI_FORMAT_R8_UNORM;
         case InternalFormat::R32G32Uint:
             return DXGI_FORMAT_R32G32_UINT;
     }

@@ -16,8 +16,8 @@ constexpr VkFormat toVkFormat(InternalFormat format) {
             return VK_FORMAT_R16_SFLOAT;
         case InternalFormat::R16G16B16A16Float:
             return VK_FORMAT_R16G16B16A16_SFLOAT;
-        case InternalFormat::R8G8Unorm:
-            return VK_FORMAT_R8G8_UNORM;
+        case InternalFormat::R8Unorm:
+            return VK_FORMAT_R8_UNORM;
         case InternalFormat::R32G32Uint:
             return VK_FORMAT_R32G32_UINT;
     }
