@@ -699,16 +699,22 @@ std::vector<SmallLightCase> runSmallLightCases(vkrun::Device& device, const std:
 }
 
 std::vector<LightPairCase> runLightPairCases(vkrun::Device& device) {
+    return runLightPairCases(device, {std::begin(kLightPairDimRadii), std::end(kLightPairDimRadii)},
+                             {std::begin(kLightPairDistances), std::end(kLightPairDistances)}, {true, false});
+}
+
+std::vector<LightPairCase> runLightPairCases(vkrun::Device& device, const std::vector<double>& dimRadii,
+                                             const std::vector<int>& distances, const std::vector<bool>& ringMerges) {
     // The bright light: 3 x 3 px of 1000 at radius 18.2 px, as mid-lights' light 3 (value and radius); the
     // dim one: 2 x 2 px of 50, `distance` px to its left and 3 px higher.
     const SquareLight bright{80, 60, 3, 1000.0, 18.2};
     std::vector<LightPairCase> cases;
-    for (bool ringMerge : {true, false}) {
+    for (bool ringMerge : ringMerges) {
         const uint32_t flags = ringMerge ? 0u : uint32_t(FFX_DOF_DISABLE_RING_MERGE);
         const vkrun::HostImage none = runSquareLights(device, {}, false, flags);
         const vkrun::HostImage brightOnly = runSquareLights(device, {bright}, false, flags);
-        for (double dimRadius : kLightPairDimRadii) {
-            for (int distance : kLightPairDistances) {
+        for (double dimRadius : dimRadii) {
+            for (int distance : distances) {
                 const SquareLight dim{bright.x0 - distance, bright.y0 - 3, 2, 50.0, dimRadius};
                 const double dimInput = dim.size * dim.size * (dim.value - kLightsBackground);
                 LightPairCase pair;

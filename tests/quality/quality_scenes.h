@@ -213,6 +213,12 @@ struct LightPairCase {
     bool energyOk() const { return std::abs(aloneRatio - 1.0) <= 0.05 && std::abs(besideRatio - 1.0) <= 0.05; }
 };
 std::vector<LightPairCase> runLightPairCases(vkrun::Device& device);
+// The same with other radii and distances, ring merging on or off (not gated: docs/quality.md's survey of
+// nearer placements, where the bright light lies inside the dim light's kernel or on its rim).
+constexpr double kLightPairSurveyDimRadii[] = {6.0, 10.0, 13.0, 16.0};  // full-res px, far field
+constexpr int kLightPairSurveyDistances[] = {8, 12, 16, 20};            // full-res px
+std::vector<LightPairCase> runLightPairCases(vkrun::Device& device, const std::vector<double>& dimRadii,
+                                             const std::vector<int>& distances, const std::vector<bool>& ringMerges);
 
 // The effect's settings for a scene's pinhole render, as runGate uses them: cocScale/cocBias from
 // ffxDofCalculateCocScale/Bias, a cocLimitFactor that covers the scene's largest radius, the camera's
