@@ -386,7 +386,8 @@ void writeLightPairs(std::ostream& md, vkrun::Device& device) {
           "bright light's rim leaves the bright disc there as it is`, tests/shaders). That walk now reads MIP 1 and "
           "up (`ffxDofBehindMip`, docs/technique.md): 0.95 and 0.92 there, and the figures above. What is left, 2 "
           "to 3%, is the layering: at its own texels the dim light, nearer, hides what lies behind by its coverage "
-          "(8% of those texels), the bright disc included, while in the thin lens the bright light's cone at the dim "
+          "(its two texels of light over its disc of pi x 3^2 texels: about 7%), the bright disc included, while in "
+          "the thin lens the bright light's cone at the dim "
           "light's depth reaches |18.2 - r| px from the bright light (5.2 and 12.2 px for the two radii), short of "
           "the 16 px to the dim light, and hides nothing of it.\n\n";
 

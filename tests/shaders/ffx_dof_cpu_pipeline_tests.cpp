@@ -674,7 +674,8 @@ TEST_CASE("A dim light on a bright light's rim leaves the bright disc there as i
     // it from MIP 1 where its light lies: until 2026-11-29 the far layer at the dim light's texels kept 0.77
     // and 0.70 of the bright disc there, and the dim light added 0.91 of its energy beside the bright light.
     // Read from MIP 1 and up (ffxDofBehindMip): 0.95 and 0.92, and 0.95. What is left is the layering: at its
-    // own texels the nearer dim light hides what lies behind by its coverage (8%), the bright disc included.
+    // own texels the nearer dim light hides what lies behind by its coverage (two texels of light over its disc
+    // of pi x 3^2 texels: about 7%), the bright disc included.
     const uint32_t w = 160, h = 128;
     Scene none;
     none.width = w;
