@@ -229,4 +229,14 @@ void ffxDofStoreTileListWord(FfxUInt32 word, FfxUInt32 packedTile) { ffxDofTileL
 FfxUInt32 ffxDofLoadTileListWord(FfxUInt32 word) { return ffxDofTileListWords[word]; }
 #endif
 
+#if FFX_DOF_USES_RW_HIGHLIGHTS || FFX_DOF_USES_HIGHLIGHTS
+FFX_DOF_BINDING_UAV_BUFFER(FFX_DOF_UAV_BUFFER_HIGHLIGHTS) buffer FfxDofHighlights { uint ffxDofHighlightWords[]; };
+#endif
+#if FFX_DOF_USES_RW_HIGHLIGHTS
+void ffxDofStoreHighlightWord(FfxUInt32 word, FfxUInt32 value) { ffxDofHighlightWords[word] = value; }
+#endif
+#if FFX_DOF_USES_HIGHLIGHTS
+FfxUInt32 ffxDofLoadHighlightWord(FfxUInt32 word) { return ffxDofHighlightWords[word]; }
+#endif
+
 #endif  // FFX_DOF_CALLBACKS_GLSL_H

@@ -256,4 +256,15 @@ void ffxDofStoreTileListWord(FfxUInt32 word, FfxUInt32 packedTile) { ffxDofTileL
 FfxUInt32 ffxDofLoadTileListWord(FfxUInt32 word) { return ffxDofTileLists[word]; }
 #endif
 
+#if FFX_DOF_USES_RW_HIGHLIGHTS || FFX_DOF_USES_HIGHLIGHTS
+FFX_DOF_BINDING_UAV_BUFFER(FFX_DOF_UAV_BUFFER_HIGHLIGHTS)
+RWStructuredBuffer<uint> ffxDofHighlights : FFX_DOF_HLSL_BUFFER_REGISTER(FFX_DOF_UAV_BUFFER_HIGHLIGHTS);
+#endif
+#if FFX_DOF_USES_RW_HIGHLIGHTS
+void ffxDofStoreHighlightWord(FfxUInt32 word, FfxUInt32 value) { ffxDofHighlights[word] = value; }
+#endif
+#if FFX_DOF_USES_HIGHLIGHTS
+FfxUInt32 ffxDofLoadHighlightWord(FfxUInt32 word) { return ffxDofHighlights[word]; }
+#endif
+
 #endif  // FFX_DOF_CALLBACKS_HLSL_H

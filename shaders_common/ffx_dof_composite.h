@@ -38,6 +38,7 @@
 #include "ffx_dof_tile_classes.h"
 #include "ffx_dof_focus.h"
 #include "ffx_dof_small_sources.h"
+#include "ffx_dof_highlights.h"
 
 #if defined(FFX_CPU)
 FfxDofConstants ffxDofGetConstants();
@@ -51,6 +52,7 @@ FfxDofFloat3 ffxDofLoadFarColor(FfxInt32x2 texel);
 FfxFloat32x2 ffxDofLoadLayerAlpha(FfxInt32x2 texel);
 void ffxDofStoreOutput(FfxUInt32x2 pixel, FfxFloat32x4 color);
 FfxFloat32 ffxDofLoadColorScale();
+FfxUInt32 ffxDofLoadHighlightWord(FfxUInt32 word);
 #endif
 
 // ---- Tuning constants -------------------------------------------------------------------------------
@@ -196,6 +198,10 @@ FFX_DOF_GROUPSHARED FfxFloat32 ffxDofSharedCoc[FFX_DOF_FILTERED_SIDE * FFX_DOF_F
 // Whether each of the 9 tiles around the group's may hold bright small sources (ffxDofSurveyTilesAround
 // with one load per invocation instead of nine per invocation).
 FFX_DOF_GROUPSHARED FfxUInt32 ffxDofSharedSmallSourceTiles[9];
+// Which tiles of the highlights' window hold one (ffxDofTileHoldsHighlights), a bit each in window order, and
+// whether any does.
+FFX_DOF_GROUPSHARED FfxUInt32 ffxDofSharedHighlightTiles[FFX_DOF_HIGHLIGHT_WINDOW_WORDS];
+FFX_DOF_GROUPSHARED FfxUInt32 ffxDofSharedHighlightsInReach;
 // Full-res input around the tile for the own-surface gather: per pixel its scaled color and |radius|
 // in full-res px as four 16-bit floats in 8 bytes, whatever the permutation's precision. The gather
 // reads this array 50 to 150 times per pixel: one 8-byte read instead of a color and a radius, and a
@@ -635,6 +641,99 @@ FFX_DOF_INLINE FfxBoolean ffxDofPixelGathersOwnSurface(FfxBoolean ownSurfaceTile
     return ownSurfaceTile && absCoc >= FFX_DOF_OWN_SURFACE_MIN_RADIUS && absCoc < FFX_DOF_FAR_LAYER_ONLY_RADIUS;
 }
 
+// ---- Far highlights ----------------------------------------------------------------------------------
+
+// Whether `tile` holds a highlight (in any of its quadrants' slots).
+FFX_DOF_INLINE FfxBoolean ffxDofTileHoldsHighlights(FfxUInt32x2 tile, FfxUInt32x2 tileCount)
+{
+    FfxUInt32 word = ffxDofHighlightWord(tile, 0u, tileCount);
+    FfxUInt32 energies = 0u;
+    FFX_DOF_UNROLL
+    for (FfxUInt32 slot = 0u; slot < FfxUInt32(FFX_DOF_HIGHLIGHT_SLOTS); ++slot)
+        energies |= ffxDofLoadHighlightWord(word + slot * FfxUInt32(FFX_DOF_HIGHLIGHT_WORDS));
+    return energies != 0u;
+}
+
+// The window of tiles whose highlights may reach a pixel of `tile` (ffxDofHighlightTileRange), clipped to the
+// image: first..last inclusive.
+FFX_DOF_INLINE void ffxDofHighlightWindow(FfxUInt32x2 tile, FfxDofConstants constants, FFX_DOF_OUT(FfxInt32x2) first,
+                                          FFX_DOF_OUT(FfxInt32x2) last)
+{
+    FfxInt32 range = ffxDofHighlightTileRange(constants.cocLimit, ffxDofApertureExtent(constants));
+    first = max(FfxInt32x2(tile) - FfxInt32x2(range, range), FfxInt32x2(0, 0));
+    last = min(FfxInt32x2(tile) + FfxInt32x2(range, range), FfxInt32x2(constants.tileCount) - FfxInt32x2(1, 1));
+}
+
+// What the highlights of the tiles in the window add to the far layers of a quad's four pixels (0: top-left
+// .. 3: bottom-right; `quad` its top-left pixel, `cocs` their radii), each as far as what lies in front does
+// not hide it (ffxDofHighlightBlockerPoint). Tiles in the window's order, slots in theirs: the same sum
+// whatever the order the groups ran in.
+struct FfxDofQuadHighlights
+{
+    FfxFloat32x3 added[4];
+};
+FFX_DOF_INLINE FfxDofQuadHighlights ffxDofHighlightsAtQuad(FfxUInt32x2 tile, FfxUInt32x2 quad, FfxFloat32x4 cocs,
+                                                           FfxDofConstants constants)
+{
+    FfxDofQuadHighlights result;
+    FFX_DOF_UNROLL
+    for (FfxUInt32 k = 0u; k < 4u; ++k)
+        result.added[k] = FfxFloat32x3(0.0f, 0.0f, 0.0f);
+    // The aperture at the quad's centre (half-res px): the cat's eye changes over a frame, not over a quad.
+    FfxDofPixelAperture aperture = ffxDofMakeAperture(constants, (FfxFloat32x2(quad) + FfxFloat32x2(1.0f, 1.0f)) * 0.5f,
+                                                      FfxFloat32x2(constants.halfSize));
+    FfxInt32x2 first;
+    FfxInt32x2 last;
+    ffxDofHighlightWindow(tile, constants, first, last);
+    FfxUInt32 width = FfxUInt32(last.x - first.x + 1);
+    FfxUInt32 words = (width * FfxUInt32(last.y - first.y + 1) + 31u) / 32u;
+    FfxFloat32 extent = ffxDofApertureExtent(constants);
+    FfxFloat32x2 quadCentre = FfxFloat32x2(quad) + FfxFloat32x2(1.0f, 1.0f);
+    // Only the tiles that hold a highlight (ffxDofSharedHighlightTiles), in window order.
+    FFX_DOF_LOOP
+    for (FfxUInt32 w = 0u; w < words; ++w)
+    {
+        FfxUInt32 bits = ffxDofSharedHighlightTiles[w];
+        FFX_DOF_LOOP
+        while (bits != 0u)
+        {
+            FfxUInt32 index = w * 32u + ffxDofFirstBitLow(bits);
+            bits &= bits - 1u;
+            FfxUInt32x2 source = FfxUInt32x2(first) + FfxUInt32x2(index % width, index / width);
+            FfxUInt32 word = ffxDofHighlightWord(source, 0u, constants.tileCount);
+            FfxFloat32x2 origin = FfxFloat32x2(source * 2u * FfxUInt32(FFX_DOF_TILE_SIZE));
+            FFX_DOF_LOOP
+            for (FfxUInt32 slot = 0u; slot < FfxUInt32(FFX_DOF_HIGHLIGHT_SLOTS); ++slot)
+            {
+                FfxUInt32x2 words2 = FfxUInt32x2(ffxDofLoadHighlightWord(word), ffxDofLoadHighlightWord(word + 1u));
+                word += FfxUInt32(FFX_DOF_HIGHLIGHT_WORDS);
+                if (words2.x == 0u)
+                    continue;
+                FfxDofHighlight highlight = ffxDofUnpackHighlight(words2);
+                FfxFloat32x2 centre = origin + highlight.position;
+                // The quad's pixels lie within 0.71 px of its centre.
+                if (length(quadCentre - centre) > ffxDofHighlightReach(highlight.radius, extent) + 0.71f)
+                    continue;
+                FFX_DOF_UNROLL
+                for (FfxUInt32 k = 0u; k < 4u; ++k)
+                {
+                    FfxFloat32x2 pixelCentre =
+                        FfxFloat32x2(quad + FfxUInt32x2(k & 1u, k >> 1u)) + FfxFloat32x2(0.5f, 0.5f);
+                    FfxFloat32x3 added = ffxDofHighlightAt(highlight, pixelCentre - centre, aperture);
+                    FfxFloat32x2 blocker;
+                    if (ffxDofHighlightBlockerPoint(pixelCentre, centre, cocs[k], highlight.radius, blocker))
+                    {
+                        FfxInt32x2 texel = ffxDofClampHalfTexel(FfxInt32x2(floor(blocker * 0.5f)), constants.halfSize);
+                        added *= ffxDofHighlightVisibility(ffxDofLoadHalfCoc(texel), highlight.radius);
+                    }
+                    result.added[k] += added;
+                }
+            }
+        }
+    }
+    return result;
+}
+
 // The filtered half-res texels around a full-res pixel (top-left, top-right, bottom-left, bottom-right), as
 // its upsampling reads them: post-filtered near and far colour, (near opacity, far validity) and radius.
 struct FfxDofUpsampleTaps
@@ -650,12 +749,13 @@ struct FfxDofUpsampleTaps
 // and `smallSourceTile`: whether the group loaded the full-res neighbourhood for either gather
 // (ffxDofTileGathersOwnSurface, ffxDofTileMayHoldBrightSmallSources); `ownGather` and `smallSources`: the
 // pixel's gathers (ffxDofGatherOwnSurfaceQuad, ffxDofGatherSmallSourcesQuad), used where
-// ffxDofPixelGathersOwnSurface and ffxDofPixelGathersSmallSources say. Returns false (and leaves `color`
-// alone) when the pixel keeps its input value.
+// ffxDofPixelGathersOwnSurface and ffxDofPixelGathersSmallSources say; `highlights` what the far highlights
+// add to its far layer (ffxDofHighlightsAtQuad). Returns false (and leaves `color` alone) when the pixel keeps
+// its input value.
 FFX_DOF_INLINE FfxBoolean ffxDofComposePixel(FfxDofUpsampleTaps taps, FfxFloat32x2 fraction, FfxFloat32 coc,
                                              FfxFloat32x3 fixedBlur, FfxBoolean ownSurfaceTile, FfxFloat32x4 ownGather,
                                              FfxBoolean smallSourceTile, FfxFloat32x4 smallSources,
-                                             FFX_DOF_INOUT(FfxFloat32x4) color)
+                                             FfxFloat32x3 highlights, FFX_DOF_INOUT(FfxFloat32x4) color)
 {
     FfxFloat32 bilinear[4];
     bilinear[0] = (1.0f - fraction.x) * (1.0f - fraction.y);
@@ -726,6 +826,8 @@ FFX_DOF_INLINE FfxBoolean ffxDofComposePixel(FfxDofUpsampleTaps taps, FfxFloat32
         if (ffxDofPixelGathersSmallSources(smallSourceTile, coc))
             farColor =
                 ffxDofLerp(farColor, FfxFloat32x3(smallSources.x, smallSources.y, smallSources.z), smallSources.w);
+        // Far highlights the layers left out (ffxDofHighlightsAtQuad), on top of what lies behind them.
+        farColor += highlights;
         result = ffxDofLerp(result, farColor, ownNear ? farValidity : farShare);
     }
     result = ffxDofLerp(result, nearColor, ffxDofNearLayerWeight(nearOpacity));
@@ -774,6 +876,10 @@ FFX_DOF_INLINE void ffxDofComposite(FfxUInt32 compositeClass, FfxUInt32 listInde
                 ffxDofScaleColor(ffxDofLoadInputColor(pixel), scale);
     }
 #endif
+    if (localIndex == 0u)
+        ffxDofSharedHighlightsInReach = 0u;
+    if (localIndex < FfxUInt32(FFX_DOF_HIGHLIGHT_WINDOW_WORDS))
+        ffxDofSharedHighlightTiles[localIndex] = 0u;
     if (fullResTile && localIndex < 9u)
         ffxDofSharedSmallSourceTiles[localIndex] = ffxDofTileMayHoldBrightSmallSources(ffxDofLoadTileRangeAndPeak(
                                                        ffxDofTileAround(groupId, localIndex, constants.tileCount)))
@@ -807,6 +913,25 @@ FFX_DOF_INLINE void ffxDofComposite(FfxUInt32 compositeClass, FfxUInt32 listInde
             smallSourceTiles |= ffxDofSharedSmallSourceTiles[k];
     }
     FfxBoolean smallSourceTile = smallSourceTiles != 0u;
+    // Which tiles in the highlights' window hold one, a tile an invocation (known after the next barrier).
+    if (fullResTile)
+    {
+        FfxInt32x2 first;
+        FfxInt32x2 last;
+        ffxDofHighlightWindow(groupId, constants, first, last);
+        FfxUInt32 width = FfxUInt32(last.x - first.x + 1);
+        FfxUInt32 windowTiles = width * FfxUInt32(last.y - first.y + 1);
+        FFX_DOF_LOOP
+        for (FfxUInt32 index = localIndex; index < windowTiles; index += FfxUInt32(FFX_DOF_GROUP_THREADS))
+        {
+            if (ffxDofTileHoldsHighlights(FfxUInt32x2(first) + FfxUInt32x2(index % width, index / width),
+                                          constants.tileCount))
+            {
+                ffxDofGroupAtomicOr(ffxDofSharedHighlightTiles[index >> 5u], 1u << (index & 31u));
+                ffxDofGroupAtomicOr(ffxDofSharedHighlightsInReach, 1u);
+            }
+        }
+    }
     FfxInt32x2 ownSurfaceOrigin =
         FfxInt32x2(groupId * extent) - FfxInt32x2(FFX_DOF_OWN_SURFACE_BORDER, FFX_DOF_OWN_SURFACE_BORDER);
     if (ownSurfaceTile || smallSourceTile)
@@ -889,6 +1014,12 @@ FFX_DOF_INLINE void ffxDofComposite(FfxUInt32 compositeClass, FfxUInt32 listInde
         if (inside && ffxDofPixelGathersSmallSources(smallSourceTile, cocs[k]))
             smallGathers |= 1u << k;
     }
+    FfxDofQuadHighlights highlights;
+    FFX_DOF_UNROLL
+    for (FfxUInt32 k = 0u; k < 4u; ++k)
+        highlights.added[k] = FfxFloat32x3(0.0f, 0.0f, 0.0f);
+    if (fullResTile && ffxDofSharedHighlightsInReach != 0u)
+        highlights = ffxDofHighlightsAtQuad(groupId, quad, cocs, constants);
     FfxDofQuadGathers own;
     FfxDofQuadGathers small;
     FFX_DOF_UNROLL
@@ -925,11 +1056,11 @@ FFX_DOF_INLINE void ffxDofComposite(FfxUInt32 compositeClass, FfxUInt32 listInde
         FfxFloat32x4 color = inputColors[k];
 #if FFX_DOF_OPTION_OUTPUT_PRE_INIT
         if (ffxDofComposePixel(taps, fraction, cocs[k], fixedBlurs[k], ownSurfaceTile, own.gathered[k], smallSourceTile,
-                               small.gathered[k], color))
+                               small.gathered[k], highlights.added[k], color))
             ffxDofStoreOutput(pixel, ffxDofUnscaleColor(color, scale));
 #else
         if (ffxDofComposePixel(taps, fraction, cocs[k], fixedBlurs[k], ownSurfaceTile, own.gathered[k], smallSourceTile,
-                               small.gathered[k], color))
+                               small.gathered[k], highlights.added[k], color))
             ffxDofStoreOutput(pixel, ffxDofUnscaleColor(color, scale));
         else
             ffxDofStoreOutput(pixel, ffxDofLoadInputColor(pixel));

@@ -17,6 +17,7 @@
 #include "ffx_dof_common.h"
 #include "ffx_dof_tile_classes.h"
 #include "ffx_dof_small_sources.h"
+#include "ffx_dof_highlights.h"
 
 #if defined(FFX_CPU)
 FfxDofConstants ffxDofGetConstants();
@@ -80,10 +81,12 @@ FFX_DOF_INLINE void ffxDofTileWindow(FfxInt32x2 center, FfxInt32 range, FfxUInt3
 }
 
 // The dilated (far, near) range of `centerTile` given the radius every tile spreads.
-// `extent` (ffxDofApertureExtent): how far a disc reaches over its radius.
+// `extent` (ffxDofApertureExtent): how far a disc reaches over its radius. `reachedByHighlights`: whether the
+// far discs of a tile that may hold highlights (ffxDofTileMayHoldHighlights) reach it.
 FFX_DOF_INLINE FfxFloat32x2 ffxDofDilateTile(FfxUInt32x2 centerTile, FfxUInt32x2 tileCount, FfxFloat32 globalMaxRadius,
-                                             FfxFloat32 extent)
+                                             FfxFloat32 extent, FFX_DOF_OUT(FfxBoolean) reachedByHighlights)
 {
+    reachedByHighlights = false;
     FfxFloat32x2 own = ffxDofLoadTile(centerTile);
     FfxFloat32 farCoc = own.x;
     FfxFloat32 nearCoc = own.y;
@@ -97,10 +100,13 @@ FFX_DOF_INLINE FfxFloat32x2 ffxDofDilateTile(FfxUInt32x2 centerTile, FfxUInt32x2
         FFX_DOF_LOOP
         for (FfxInt32 x = first.x; x <= last.x; ++x)
         {
-            FfxFloat32x2 tile = ffxDofLoadTile(FfxUInt32x2(FfxUInt32(x), FfxUInt32(y)));
+            FfxFloat32x3 tile = ffxDofLoadTileRangeAndPeak(FfxUInt32x2(FfxUInt32(x), FfxUInt32(y)));
             FfxFloat32 distance = ffxDofTileGapDistance(FfxInt32x2(x, y) - center);
             if (ffxDofTileReaches(-tile.x * extent, distance))
+            {
                 farCoc = min(farCoc, tile.x);
+                reachedByHighlights = reachedByHighlights || ffxDofTileMayHoldHighlights(tile);
+            }
             if (ffxDofTileReaches(tile.y * extent, distance))
                 nearCoc = max(nearCoc, tile.y);
         }
@@ -166,7 +172,9 @@ FFX_DOF_INLINE void ffxDofDilate(FfxUInt32x2 groupId, FfxUInt32 localIndex)
     // A shaped disc reaches at most its extent times its radius in any direction: the dilation and the
     // footprint take that, a circle of the shape's largest extent.
     FfxFloat32 extent = ffxDofApertureExtent(constants);
-    FfxFloat32x2 farNear = ffxDofDilateTile(tile, constants.tileCount, ffxDofLoadGlobalMaxRadius(), extent);
+    FfxBoolean reachedByHighlights;
+    FfxFloat32x2 farNear =
+        ffxDofDilateTile(tile, constants.tileCount, ffxDofLoadGlobalMaxRadius(), extent, reachedByHighlights);
     FfxFloat32 footprint = ffxDofKernelFootprintRadius(ffxDofTileKernelRadius(farNear) * extent, constants.maxRings);
     FfxFloat32x4 dilated = FfxFloat32x4(farNear, ffxDofFootprintRange(tile, constants.tileCount, footprint));
     ffxDofStoreDilatedTile(tile, dilated);
@@ -174,7 +182,8 @@ FFX_DOF_INLINE void ffxDofDilate(FfxUInt32x2 groupId, FfxUInt32 localIndex)
     FfxUInt32 packedTile = ffxDofPackListedTile(tile);
     ffxDofListTile(FfxUInt32(FFX_DOF_BLUR_TILE_LIST_FIRST) + ffxDofBlurTileClass(dilated), packedTile, tilesPerList);
     FfxUInt32 compositeClass = ffxDofCompositeTileClass(
-        ffxDofLoadTile(tile), farNear.y, ffxDofSurveyTilesAround(tile, constants.tileCount).drawsSmallSources);
+        ffxDofLoadTile(tile), farNear.y,
+        ffxDofSurveyTilesAround(tile, constants.tileCount).drawsSmallSources || reachedByHighlights);
     ffxDofListTile(FfxUInt32(FFX_DOF_COMPOSITE_TILE_LIST_FIRST) + compositeClass, packedTile, tilesPerList);
 }
 

@@ -15,6 +15,7 @@
 
 #include "ffx_dof_common.h"
 #include "ffx_dof_focus.h"
+#include "ffx_dof_highlights.h"
 
 #if defined(FFX_CPU)
 FfxDofConstants ffxDofGetConstants();
@@ -25,6 +26,7 @@ void ffxDofStoreHalfCoc(FfxUInt32x2 texel, FfxFloat32 coc);
 void ffxDofStoreCoarseMip(FfxUInt32 mip, FfxUInt32x2 texel, FfxUInt32x2 packed);
 FfxFloat32 ffxDofLoadColorPeak();
 void ffxDofStoreColorScale(FfxFloat32 scale);
+void ffxDofStoreHighlightWord(FfxUInt32 word, FfxUInt32 value);
 #endif
 
 // ---- Bilateral downsampling -------------------------------------------------------------------------
@@ -381,6 +383,32 @@ FFX_DOF_INLINE FfxDofMipTexel ffxDofSharedMipTexel(FfxUInt32 index)
 #define FFX_DOF_RIM_SIDE (2u * FFX_DOF_TILE_SIZE + 2u)
 FFX_DOF_GROUPSHARED FfxFloat32x2 ffxDofSharedRimSample[FFX_DOF_RIM_SIDE * FFX_DOF_RIM_SIDE];
 
+// The highlight sums of the group's quads (ffxDofQuadHighlightSums), for the quadrants' slots, and whether any
+// quad gives light (so that a group without any skips the quadrants' sums).
+FFX_DOF_GROUPSHARED FfxFloat32x4 ffxDofSharedHighlightEnergyLight[FFX_DOF_GROUP_THREADS];
+FFX_DOF_GROUPSHARED FfxFloat32x4 ffxDofSharedHighlightPlaceRadius[FFX_DOF_GROUP_THREADS];
+FFX_DOF_GROUPSHARED FfxUInt32 ffxDofSharedHighlightAny;
+
+// The sums of quadrant `quadrant` (0: top-left .. 3: bottom-right) of the group's 8 x 8 quads.
+FFX_DOF_INLINE FfxDofHighlightSums ffxDofQuadrantHighlightSums(FfxUInt32 quadrant)
+{
+    FfxUInt32 first = (quadrant >> 1u) * 4u * FfxUInt32(FFX_DOF_GROUP_SIDE) + (quadrant & 1u) * 4u;
+    FfxDofHighlightSums sums;
+    sums.energyLight = FfxFloat32x4(0.0f, 0.0f, 0.0f, 0.0f);
+    sums.placeRadius = FfxFloat32x4(0.0f, 0.0f, 0.0f, 0.0f);
+    FFX_DOF_UNROLL
+    for (FfxUInt32 k = 0u; k < 16u; ++k)
+    {
+        FfxUInt32 index = first + (k >> 2u) * FfxUInt32(FFX_DOF_GROUP_SIDE) + (k & 3u);
+        sums.energyLight += ffxDofSharedHighlightEnergyLight[index];
+        sums.placeRadius += ffxDofSharedHighlightPlaceRadius[index];
+    }
+    return sums;
+}
+
+// Per wave, the dimmest far luminance of the group's pixels and border (the floor its highlights stand on).
+FFX_DOF_GROUPSHARED FfxFloat32 ffxDofSharedWaveFarFloor[FFX_DOF_GROUP_THREADS];
+
 // Scaled in 32-bit (and clamped to the half range) before any conversion to 16 bits.
 FFX_DOF_INLINE FfxFloat32x4 ffxDofLoadScaledInputColor(FfxUInt32x2 pixel, FfxFloat32 scale)
 {
@@ -390,6 +418,18 @@ FFX_DOF_INLINE FfxFloat32x4 ffxDofLoadScaledInputColor(FfxUInt32x2 pixel, FfxFlo
 FFX_DOF_INLINE FfxFloat32 ffxDofLoadInputCoc(FfxUInt32x2 pixel, FfxDofConstants constants)
 {
     return ffxDofCocFromDepth(ffxDofLoadInputDepth(pixel), constants.cocScale, constants.cocBias, constants.cocLimit);
+}
+
+// A pixel's (luminance, radius) for the rim grid, and the luminance where it is in the far field (else the largest
+// float): what the highlights' floor takes.
+FFX_DOF_INLINE FfxFloat32x2 ffxDofRimSample(FfxFloat32x4 color, FfxUInt32x2 pixel, FfxDofConstants constants)
+{
+    return FfxFloat32x2(ffxDofLuminance32(FfxFloat32x3(color.x, color.y, color.z)),
+                        ffxDofLoadInputCoc(pixel, constants));
+}
+FFX_DOF_INLINE FfxFloat32 ffxDofFarLuminance(FfxFloat32x2 rimSample)
+{
+    return rimSample.y <= -FFX_DOF_IN_FOCUS_RADIUS ? rimSample.x : FFX_DOF_FLOAT32_MAX;
 }
 
 // Cell `index` of the border ring of the rim grid: the top row, the bottom row, then the sides.
@@ -446,14 +486,19 @@ FFX_DOF_INLINE void ffxDofDownsampleColor(FfxUInt32x2 groupId, FfxUInt32 localIn
 
     // The light rims need each pixel's 8 neighbours: the group's pixels and a border of one.
     FfxUInt32x2 cell = local * 2u + FfxUInt32x2(1u, 1u);
-    ffxDofSharedRimSample[cell.y * FFX_DOF_RIM_SIDE + cell.x] = FfxFloat32x2(
-        ffxDofLuminance32(FfxFloat32x3(input0.x, input0.y, input0.z)), ffxDofLoadInputCoc(pixel0, constants));
-    ffxDofSharedRimSample[cell.y * FFX_DOF_RIM_SIDE + cell.x + 1u] = FfxFloat32x2(
-        ffxDofLuminance32(FfxFloat32x3(input1.x, input1.y, input1.z)), ffxDofLoadInputCoc(pixel1, constants));
-    ffxDofSharedRimSample[(cell.y + 1u) * FFX_DOF_RIM_SIDE + cell.x] = FfxFloat32x2(
-        ffxDofLuminance32(FfxFloat32x3(input2.x, input2.y, input2.z)), ffxDofLoadInputCoc(pixel2, constants));
-    ffxDofSharedRimSample[(cell.y + 1u) * FFX_DOF_RIM_SIDE + cell.x + 1u] = FfxFloat32x2(
-        ffxDofLuminance32(FfxFloat32x3(input3.x, input3.y, input3.z)), ffxDofLoadInputCoc(pixel3, constants));
+    FfxFloat32x2 rim0 = ffxDofRimSample(input0, pixel0, constants);
+    FfxFloat32x2 rim1 = ffxDofRimSample(input1, pixel1, constants);
+    FfxFloat32x2 rim2 = ffxDofRimSample(input2, pixel2, constants);
+    FfxFloat32x2 rim3 = ffxDofRimSample(input3, pixel3, constants);
+    ffxDofSharedRimSample[cell.y * FFX_DOF_RIM_SIDE + cell.x] = rim0;
+    ffxDofSharedRimSample[cell.y * FFX_DOF_RIM_SIDE + cell.x + 1u] = rim1;
+    ffxDofSharedRimSample[(cell.y + 1u) * FFX_DOF_RIM_SIDE + cell.x] = rim2;
+    ffxDofSharedRimSample[(cell.y + 1u) * FFX_DOF_RIM_SIDE + cell.x + 1u] = rim3;
+    if (localIndex == 0u)
+        ffxDofSharedHighlightAny = 0u;
+    // The highlights' floor (below): the dimmest far pixel of the group's and of the border, per wave here.
+    FfxFloat32 dimmestFar = min(min(ffxDofFarLuminance(rim0), ffxDofFarLuminance(rim1)),
+                                min(ffxDofFarLuminance(rim2), ffxDofFarLuminance(rim3)));
     FfxInt32x2 origin = FfxInt32x2(groupId * (2u * FfxUInt32(FFX_DOF_TILE_SIZE))) - FfxInt32x2(1, 1);
     FFX_DOF_LOOP
     for (FfxUInt32 border = localIndex; border < 4u * (FFX_DOF_RIM_SIDE - 1u); border += FFX_DOF_GROUP_THREADS)
@@ -461,11 +506,13 @@ FFX_DOF_INLINE void ffxDofDownsampleColor(FfxUInt32x2 groupId, FfxUInt32 localIn
         FfxUInt32x2 borderCell = ffxDofRimBorderCell(border);
         FfxUInt32x2 pixel =
             FfxUInt32x2(clamp(origin + FfxInt32x2(borderCell), FfxInt32x2(0, 0), FfxInt32x2(lastPixel)));
-        FfxFloat32x4 bordering = ffxDofLoadScaledInputColor(pixel, scale);
-        ffxDofSharedRimSample[borderCell.y * FFX_DOF_RIM_SIDE + borderCell.x] =
-            FfxFloat32x2(ffxDofLuminance32(FfxFloat32x3(bordering.x, bordering.y, bordering.z)),
-                         ffxDofLoadInputCoc(pixel, constants));
+        FfxFloat32x2 bordering = ffxDofRimSample(ffxDofLoadScaledInputColor(pixel, scale), pixel, constants);
+        ffxDofSharedRimSample[borderCell.y * FFX_DOF_RIM_SIDE + borderCell.x] = bordering;
+        dimmestFar = min(dimmestFar, ffxDofFarLuminance(bordering));
     }
+    dimmestFar = ffxDofWaveMin(dimmestFar);
+    if (ffxDofWaveIsFirstLane())
+        ffxDofSharedWaveFarFloor[ffxDofWaveIndex(localIndex)] = dimmestFar;
     ffxDofGroupBarrier();
     // The quad's 4 x 4 neighbourhood read once for its four pixels (16 group-shared reads instead of 36: on
     // lavapipe each is a loop over the lanes).
@@ -477,6 +524,37 @@ FFX_DOF_INLINE void ffxDofDownsampleColor(FfxUInt32x2 groupId, FfxUInt32 localIn
     FfxFloat32 coc1 = ffxDofLightRimCocInQuad(around, 1u);
     FfxFloat32 coc2 = ffxDofLightRimCocInQuad(around, 2u);
     FfxFloat32 coc3 = ffxDofLightRimCocInQuad(around, 3u);
+
+    // Far highlights: the light of a quad far brighter than the pixels around it leaves the half-res colour
+    // for the composite's full-resolution discs (ffx_dof_highlights.h), one per quadrant of the tile.
+    // The floor: the dimmest far pixel of the tile and its border (the waves' minima above), so that every pixel
+    // of a light within it gives its light (a light split between both paths drew its rest from the layers 1.05
+    // to 1.10 times too bright, docs/technique.md).
+    FfxFloat32 tileFloor = FFX_DOF_FLOAT32_MAX;
+    FFX_DOF_LOOP
+    for (FfxUInt32 wave = 0u; wave < ffxDofWaveCount(); ++wave)
+        tileFloor = min(tileFloor, ffxDofSharedWaveFarFloor[wave]);
+    FfxFloat32x4 shares = FfxFloat32x4(ffxDofHighlightShare(around[5].x, coc0, tileFloor, scale),
+                                       ffxDofHighlightShare(around[6].x, coc1, tileFloor, scale),
+                                       ffxDofHighlightShare(around[9].x, coc2, tileFloor, scale),
+                                       ffxDofHighlightShare(around[10].x, coc3, tileFloor, scale));
+    // A quad the image's edge cuts repeats its edge pixels: it keeps them in the layers.
+    if (quad.x + 1u >= constants.fullSize.x || quad.y + 1u >= constants.fullSize.y)
+        shares = FfxFloat32x4(0.0f, 0.0f, 0.0f, 0.0f);
+    FfxDofHighlightSums highlightSums =
+        ffxDofQuadHighlightSums(FfxFloat32x3(input0.x, input0.y, input0.z), FfxFloat32x3(input1.x, input1.y, input1.z),
+                                FfxFloat32x3(input2.x, input2.y, input2.z), FfxFloat32x3(input3.x, input3.y, input3.z),
+                                FfxFloat32x4(coc0, coc1, coc2, coc3), shares, FfxFloat32x2(local * 2u));
+    ffxDofSharedHighlightEnergyLight[localIndex] = highlightSums.energyLight;
+    ffxDofSharedHighlightPlaceRadius[localIndex] = highlightSums.placeRadius;
+    if (ffxDofHighlightSumsHoldLight(highlightSums))
+    {
+        ffxDofGroupAtomicOr(ffxDofSharedHighlightAny, 1u);
+        input0 = FfxFloat32x4(FfxFloat32x3(input0.x, input0.y, input0.z) * (1.0f - shares.x), input0.w);
+        input1 = FfxFloat32x4(FfxFloat32x3(input1.x, input1.y, input1.z) * (1.0f - shares.y), input1.w);
+        input2 = FfxFloat32x4(FfxFloat32x3(input2.x, input2.y, input2.z) * (1.0f - shares.z), input2.w);
+        input3 = FfxFloat32x4(FfxFloat32x3(input3.x, input3.y, input3.z) * (1.0f - shares.w), input3.w);
+    }
 
     // MIP 0 keeps a partly near quad's near pixels with their coverage (Near coverage, ffx_dof_common.h), and the
     // coarse levels reduce what it keeps.
@@ -517,6 +595,25 @@ FFX_DOF_INLINE void ffxDofDownsampleColor(FfxUInt32x2 groupId, FfxUInt32 localIn
                                                            reduced.lightOffset));
             }
         }
+    }
+
+    // The quadrants' highlights, once every quad's sums are in group-shared memory (the MIP levels' barriers
+    // passed; without coarse levels, one of its own).
+#if FFX_DOF_OPTION_MAX_MIP < 2
+    ffxDofGroupBarrier();
+#endif
+    if (localIndex < FfxUInt32(FFX_DOF_HIGHLIGHT_SLOTS))
+    {
+        FfxUInt32x2 packed = FfxUInt32x2(0u, 0u);
+        if (ffxDofSharedHighlightAny != 0u)
+        {
+            FfxDofHighlightSums quadrant = ffxDofQuadrantHighlightSums(localIndex);
+            if (ffxDofHighlightSumsHoldLight(quadrant))
+                packed = ffxDofPackHighlight(ffxDofFinishHighlight(quadrant));
+        }
+        FfxUInt32 word = ffxDofHighlightWord(groupId, localIndex, constants.tileCount);
+        ffxDofStoreHighlightWord(word, packed.x);
+        ffxDofStoreHighlightWord(word + 1u, packed.y);
     }
 }
 

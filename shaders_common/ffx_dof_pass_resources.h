@@ -17,6 +17,7 @@
 #define FFX_DOF_USES_INPUT_DEPTH 1
 #define FFX_DOF_USES_RW_MIPS 1  // HALF_COLOR, HALF_COC and COARSE_MIPS
 #define FFX_DOF_USES_GLOBALS 1
+#define FFX_DOF_USES_RW_HIGHLIGHTS 1
 #elif defined(FFX_DOF_PASS_DILATE)
 #define FFX_DOF_USES_TILES 1
 #define FFX_DOF_USES_RW_DILATED_TILES 1
@@ -41,6 +42,7 @@
 #define FFX_DOF_USES_RW_OUTPUT 1
 #define FFX_DOF_USES_GLOBALS 1
 #define FFX_DOF_USES_TILE_LISTS 1  // and TILE_LIST_ARGS as its indirect dispatch arguments, unbound
+#define FFX_DOF_USES_HIGHLIGHTS 1
 #if FFX_DOF_OPTION_OUTPUT_PRE_INIT
 // In place, the input pixels next to the tile are read from the half-res color (other workgroups
 // write the full-res ones during the pass); see ffx_dof_composite.h.
@@ -100,6 +102,12 @@
 #endif
 #ifndef FFX_DOF_USES_TILE_LISTS
 #define FFX_DOF_USES_TILE_LISTS 0
+#endif
+#ifndef FFX_DOF_USES_RW_HIGHLIGHTS
+#define FFX_DOF_USES_RW_HIGHLIGHTS 0
+#endif
+#ifndef FFX_DOF_USES_HIGHLIGHTS
+#define FFX_DOF_USES_HIGHLIGHTS 0
 #endif
 
 #endif  // FFX_DOF_PASS_RESOURCES_H

@@ -106,6 +106,10 @@
 // Which wave of the workgroup the invocation runs in, and how many waves the workgroup has.
 #define ffxDofWaveIndex(localIndex) gl_SubgroupID
 #define ffxDofWaveCount() gl_NumSubgroups
+// Sets bits of a group-shared word for the whole group, and counts a word's set bits.
+#define ffxDofGroupAtomicOr(word, bits) atomicOr(word, bits)
+#define ffxDofCountBits(x) FfxUInt32(bitCount(x))
+#define ffxDofFirstBitLow(x) FfxUInt32(findLSB(x))
 
 // GLSL has no saturate/rcp; overloads per type keep the literals in the argument's precision.
 float ffxDofSaturate(float x) { return clamp(x, 0.0f, 1.0f); }
@@ -179,6 +183,9 @@ typedef half4 FfxFloat16x4;
 // every D3D12 driver uses for a one-dimensional group (FidelityFX SPD relies on it too).
 #define ffxDofWaveIndex(localIndex) ((localIndex) / WaveGetLaneCount())
 #define ffxDofWaveCount() ((FfxUInt32(FFX_DOF_GROUP_THREADS) + WaveGetLaneCount() - 1u) / WaveGetLaneCount())
+#define ffxDofGroupAtomicOr(word, bits) InterlockedOr(word, bits)
+#define ffxDofCountBits(x) countbits(x)
+#define ffxDofFirstBitLow(x) firstbitlow(x)
 
 //==================================================================================================
 #else  // FFX_CPU
@@ -287,6 +294,12 @@ inline glm::vec2 ffxDofUnpackHalf2(uint32_t bits) { return glm::unpackHalf2x16(b
 #define ffxDofWaveIsFirstLane() true
 #define ffxDofWaveIndex(localIndex) (localIndex)
 #define ffxDofWaveCount() FfxUInt32(FFX_DOF_GROUP_THREADS)
+// The invocations of a CPU workgroup are threads (tests/shaders): the GCC / Clang builtin, as C++17 has no
+// std::atomic_ref for a plain word.
+inline void ffxDofGroupAtomicOr(uint32_t& word, uint32_t bits) { __atomic_fetch_or(&word, bits, __ATOMIC_RELAXED); }
+inline uint32_t ffxDofCountBits(uint32_t x) { return uint32_t(__builtin_popcount(x)); }
+// Of a nonzero word.
+inline uint32_t ffxDofFirstBitLow(uint32_t x) { return uint32_t(__builtin_ctz(x)); }
 
 #endif  // language
 

@@ -51,6 +51,12 @@
 //                  each list (x | y << 16), in no order; lists 2a and 2a + 1 share array a, one from each
 //                  end (ffxDofTileListWord). The blur's or composite's workgroup i of a list works on the
 //                  list's tile i.
+//   HIGHLIGHTS     storage buffer, tiles x FFX_DOF_HIGHLIGHT_SLOTS x FFX_DOF_HIGHLIGHT_WORDS uint words: per
+//                  tile the far highlights pass 2 took out of the half-res colour, for the composite to draw
+//                  at full resolution (ffx_dof_highlights.h); a slot of zeros is empty. Pass 2 writes every
+//                  slot of every tile each dispatch, so it needs no initial value. Slot s of tile (x, y)
+//                  starts at word ((y * tileCount.x + x) * FFX_DOF_HIGHLIGHT_SLOTS + s) *
+//                  FFX_DOF_HIGHLIGHT_WORDS.
 #ifndef FFX_DOF_RESOURCES_H
 #define FFX_DOF_RESOURCES_H
 
@@ -89,6 +95,7 @@
 #define FFX_DOF_UAV_BUFFER_GLOBALS 0
 #define FFX_DOF_UAV_BUFFER_TILE_LIST_ARGS 1
 #define FFX_DOF_UAV_BUFFER_TILE_LISTS 2
+#define FFX_DOF_UAV_BUFFER_HIGHLIGHTS 3
 
 // Words of GLOBALS
 #define FFX_DOF_GLOBALS_MAX_RADIUS 0
@@ -98,6 +105,10 @@
 #define FFX_DOF_GLOBALS_FOCUS_COC_SCALE 4
 #define FFX_DOF_GLOBALS_FOCUS_COC_BIAS 5
 #define FFX_DOF_GLOBALS_WORD_COUNT 8
+
+// HIGHLIGHTS: highlights kept per tile, and uint words per highlight.
+#define FFX_DOF_HIGHLIGHT_SLOTS 4
+#define FFX_DOF_HIGHLIGHT_WORDS 2
 
 // The tile lists (TILE_LIST_ARGS, TILE_LISTS): which work a tile needs in the blur and in the composite,
 // decided by dilate (ffx_dof_tile_classes.h), so that each workgroup of those passes runs a pipeline

@@ -62,13 +62,13 @@ FFX_DOF_INLINE FfxBoolean ffxDofTileKeepsInput(FfxFloat32x2 tile, FfxFloat32 dil
     return max(abs(tile.x), abs(tile.y)) < FFX_DOF_IN_FOCUS_RADIUS && dilatedNear < FFX_DOF_NEAR_THRESHOLD;
 }
 
-// The composite's class of a tile: `drawsSmallSources` is ffxDofSurveyTilesAround's for the tile.
-FFX_DOF_INLINE FfxUInt32 ffxDofCompositeTileClass(FfxFloat32x2 tile, FfxFloat32 dilatedNear,
-                                                  FfxBoolean drawsSmallSources)
+// The composite's class of a tile: `drawsLights` whether it draws small sources (ffxDofSurveyTilesAround's) or
+// highlights (ffx_dof_highlights.h) at full resolution.
+FFX_DOF_INLINE FfxUInt32 ffxDofCompositeTileClass(FfxFloat32x2 tile, FfxFloat32 dilatedNear, FfxBoolean drawsLights)
 {
     if (ffxDofTileKeepsInput(tile, dilatedNear))
         return FfxUInt32(FFX_DOF_COMPOSITE_CLASS_COPY);
-    if (ffxDofTileGathersOwnSurface(tile) || drawsSmallSources)
+    if (ffxDofTileGathersOwnSurface(tile) || drawsLights)
         return FfxUInt32(FFX_DOF_COMPOSITE_CLASS_FULL_RES);
     return FfxUInt32(FFX_DOF_COMPOSITE_CLASS_LAYERS);
 }

@@ -61,7 +61,7 @@ constexpr uint32_t kInternalImageCount = sizeof(kInternalImages) / sizeof(kInter
 // Shader slots per class (ffx_dof_resources.h): sampled images, storage images, storage buffers.
 constexpr uint32_t kSampledSlotCount = FFX_DOF_SRV_COARSE_MIPS + 1;
 constexpr uint32_t kStorageImageSlotCount = FFX_DOF_UAV_OUTPUT + 1;
-constexpr uint32_t kStorageBufferSlotCount = FFX_DOF_UAV_BUFFER_TILE_LISTS + 1;
+constexpr uint32_t kStorageBufferSlotCount = FFX_DOF_UAV_BUFFER_HIGHLIGHTS + 1;
 
 // The GLOBALS storage buffer (FFX_DOF_UAV_BUFFER_GLOBALS): 32-bit words.
 constexpr uint32_t kGlobalsWordCount = FFX_DOF_GLOBALS_WORD_COUNT;
@@ -75,6 +75,11 @@ constexpr uint32_t tileListArgsOffset(uint32_t list) { return list * FFX_DOF_TIL
 // one pass (ffxDofTileListWord).
 constexpr uint32_t tileListsWordCount(uint32_t tileCountX, uint32_t tileCountY) {
     return FFX_DOF_TILE_LIST_ARRAYS * tileCountX * tileCountY;
+}
+// HIGHLIGHTS (FFX_DOF_UAV_BUFFER_HIGHLIGHTS): FFX_DOF_HIGHLIGHT_SLOTS highlights of FFX_DOF_HIGHLIGHT_WORDS
+// words per tile.
+constexpr uint32_t highlightsWordCount(uint32_t tileCountX, uint32_t tileCountY) {
+    return tileCountX * tileCountY * FFX_DOF_HIGHLIGHT_SLOTS * FFX_DOF_HIGHLIGHT_WORDS;
 }
 
 // Levels of an image of this size: the spec's, clamped to the full chain of a small image (a 4x3

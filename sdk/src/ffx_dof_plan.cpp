@@ -55,6 +55,7 @@ void mapSlots(ContextPlan* plan) {
     plan->storageBufferSlots[FFX_DOF_UAV_BUFFER_GLOBALS].resource = Resource::Globals;
     plan->storageBufferSlots[FFX_DOF_UAV_BUFFER_TILE_LIST_ARGS].resource = Resource::TileListArgs;
     plan->storageBufferSlots[FFX_DOF_UAV_BUFFER_TILE_LISTS].resource = Resource::TileLists;
+    plan->storageBufferSlots[FFX_DOF_UAV_BUFFER_HIGHLIGHTS].resource = Resource::Highlights;
     for (uint32_t i = 0; i < kInternalImageCount; ++i) {
         const InternalImageSpec& spec = kInternalImages[i];
         const PlannedImage& image = plan->images[i];
@@ -254,6 +255,7 @@ FfxDofErrorCode buildContextPlan(const ContextConfig& config, const BackendCapab
         plan->indirect |= pass.indirect;
     }
     plan->tileListsBytes = tileListsWordCount(c.tileCount.x, c.tileCount.y) * 4;
+    plan->highlightsBytes = highlightsWordCount(c.tileCount.x, c.tileCount.y) * 4;
     return FFX_DOF_OK;
 }
 

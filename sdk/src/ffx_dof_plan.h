@@ -22,7 +22,16 @@ struct ContextConfig {
 };
 
 // Every resource a pass can bind. The internal images follow kInternalImages, in its order.
-enum class Resource : uint32_t { InputColor, InputDepth, Output, Globals, TileListArgs, TileLists, FirstInternalImage };
+enum class Resource : uint32_t {
+    InputColor,
+    InputDepth,
+    Output,
+    Globals,
+    TileListArgs,
+    TileLists,
+    Highlights,
+    FirstInternalImage
+};
 constexpr uint32_t kResourceCount = uint32_t(Resource::FirstInternalImage) + kInternalImageCount;
 constexpr Resource internalImageResource(uint32_t image) {
     return Resource(uint32_t(Resource::FirstInternalImage) + image);
@@ -96,7 +105,8 @@ struct ContextPlan {
     SlotTarget sampledSlots[kSampledSlotCount];
     SlotTarget storageImageSlots[kStorageImageSlotCount];
     SlotTarget storageBufferSlots[kStorageBufferSlotCount];
-    uint32_t tileListsBytes = 0;  // TILE_LISTS (TILE_LIST_ARGS: kTileListArgsBytes)
+    uint32_t tileListsBytes = 0;   // TILE_LISTS (TILE_LIST_ARGS: kTileListArgsBytes)
+    uint32_t highlightsBytes = 0;  // HIGHLIGHTS
     // Every pass's reads | writes | indirect.
     ResourceSet touched = 0;
     // Every pass's indirect: what the backends' barriers also make visible to the indirect-argument stage.

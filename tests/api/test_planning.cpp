@@ -283,6 +283,20 @@ TEST_CASE("the slot map binds each MIP slot to its level, the missing levels of 
     CHECK(plan.storageImageSlots[FFX_DOF_UAV_OUTPUT].resource == Resource::Output);
 }
 
+TEST_CASE("the storage buffer slots map to their buffers, sized by the tile count") {
+    const ContextPlan plan = contextPlan(1920, 1080);  // tiles 120 x 68
+    CHECK(plan.storageBufferSlots[FFX_DOF_UAV_BUFFER_GLOBALS].resource == Resource::Globals);
+    CHECK(plan.storageBufferSlots[FFX_DOF_UAV_BUFFER_TILE_LIST_ARGS].resource == Resource::TileListArgs);
+    CHECK(plan.storageBufferSlots[FFX_DOF_UAV_BUFFER_TILE_LISTS].resource == Resource::TileLists);
+    CHECK(plan.storageBufferSlots[FFX_DOF_UAV_BUFFER_HIGHLIGHTS].resource == Resource::Highlights);
+    CHECK(kStorageBufferSlotCount == 4);
+    // The byte counts of docs/technique.md's table of internal resources.
+    CHECK(plan.tileListsBytes == 163200u);
+    CHECK(plan.highlightsBytes == 261120u);
+    // The smallest context still has one tile of highlights.
+    CHECK(contextPlan(1, 1).highlightsBytes == FFX_DOF_HIGHLIGHT_SLOTS * FFX_DOF_HIGHLIGHT_WORDS * 4u);
+}
+
 TEST_CASE("a backend without a pass's shaders, or without its permutation, cannot make a context") {
     ContextConfig config;
     config.resolution = {64, 64};

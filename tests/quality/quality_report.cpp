@@ -131,16 +131,38 @@ void writePointDiscs(std::ostream& md, vkrun::Device& device, const std::filesys
        << verdict(every(&quality::PointDiscCase::rimOk, 0), false) << " |\n"
        << "| rim within 1 px of a circle, ring merging on | "
        << verdict(every(&quality::PointDiscCase::rimOk, 1), false) << " |\n"
-       << "| no glow beyond R + 1.5 px above 2% of the level | "
-       << verdict(every(&quality::PointDiscCase::glowOk), true) << " |\n\n"
-       << "Why the known failures. Glow: the far layer is half-res and upsampled bilinearly, so a disc's rim "
+       << "| no glow beyond R + 1.5 px above 2% of the level, from radius 8 px | "
+       << verdict(std::all_of(cases.begin(), cases.end(),
+                              [](const quality::PointDiscCase& c) { return c.radius < 8.0 || c.glowOk(); }),
+                  false)
+       << " |\n"
+       << "| no glow beyond R + 1.5 px above 2% of the level, radii 4 to 7 px | "
+       << verdict(std::all_of(
+                      cases.begin(), cases.end(),
+                      [](const quality::PointDiscCase& c) { return c.radius <= 3.0 || c.radius >= 8.0 || c.glowOk(); }),
+                  true)
+       << " |\n\n"
+       << "Glow (passes from radius 8 px since 2026-11-30): the far layer is half-res and upsampled bilinearly, so a "
+          "disc's rim "
           "spreads over one more half-res texel (2 full-res px) than the disc: a perfectly sharp half-res disc "
-          "upsampled so keeps up to a quarter of its level 1.5 px beyond its radius. Radii up to 3 px are "
-          "gathered at full resolution by the composite and have none; from 4 px on the half-res layers take "
-          "over. A sharper fixed upsampling (weights 0.84 / 0.16 per axis instead of 0.75 / 0.25; a smoothstep of the "
-          "bilinear fraction in ffxDofComposePixel, tried on 2026-11-27 and reverted) measured a "
-          "glow of 0.07 and 0.09 dB more on far-highlights, with rims up to 0.5 px less round; not kept. The "
-          "fix is a full-resolution path for highlights (issue 17).\n\n"
+          "upsampled so keeps up to a quarter of its level 1.5 px beyond its radius, and the discs of radius 6 px "
+          "and more measured 0.086 to 0.156 of their level there. Radii up to 3 px are gathered at full "
+          "resolution by the composite and have none. A point brighter than white (every point here: its disc is "
+          "a quarter of its level spread over pi r^2) now leaves the half-res layers in the colour downsample and "
+          "the composite draws it at full resolution (far highlights, ffx_dof_highlights.h, docs/technique.md), "
+          "from a radius of 3 half-res px on, fully from 4 (8 full-res px). The known failure: at 4.5 and 6 px (2.25 "
+          "and 3 half-res px) the composite draws such a light at full resolution only in part "
+          "(ffxDofSmallSourceShare falls from 1 to 0 between 2 and 3 half-res px), the half-res layers the rest. "
+          "Letting highlights take that band too would need the composite's small-source gather to draw what "
+          "the colour downsample leaves of each pixel (counted in both, a light there added up to 1.25 times its "
+          "energy). "
+          "Tried before, not kept: a sharper fixed upsampling (weights 0.84 / 0.16 per axis instead of 0.75 / "
+          "0.25; a smoothstep of the bilinear fraction in ffxDofComposePixel, 2026-11-27), which measured a "
+          "glow of 0.07 and 0.09 dB more on far-highlights, with rims up to 0.5 px less round; and on 2026-11-30 "
+          "a contrast stretch of the far layer between its 2 x 2 taps' darkest and brightest (twice as steep "
+          "about their middle, where the brightest is 4 times the darkest): the glow fell to 0.03 to 0.13, but "
+          "far-highlights lost 0.8 dB and mid-lights 3.9 dB (where discs of several levels overlap, the taps' "
+          "extremes are not the two sides of one rim).\n\n"
           "Rim with ring merging (passes since 2026-11-27): the inner rings read the point from the coarser "
           "MIP texel that holds it, whose centre is up to 0.7 half-res px away, and give it full reach; where "
           "they met the outermost ring, read at the kernel's own MIP, the disc bulged toward that texel's "
@@ -384,12 +406,16 @@ void writeLightPairs(std::ostream& md, vkrun::Device& device) {
           "from the dim light's texels than its pixels do, beyond the bright disc's rim there, and the dim light's "
           "two texels showed the bright disc 0.77 and 0.70 as bright as it is there (the CPU test `A dim light on a "
           "bright light's rim leaves the bright disc there as it is`, tests/shaders). That walk now reads MIP 1 and "
-          "up (`ffxDofBehindMip`, docs/technique.md): 0.95 and 0.92 there, and the figures above. What is left, 2 "
-          "to 3%, is the layering: at its own texels the dim light, nearer, hides what lies behind by its coverage "
+          "up (`ffxDofBehindMip`, docs/technique.md): 0.95 and 0.92 there. What was left, 2 "
+          "to 3%, was the layering: at its own texels the dim light, nearer, hid what lies behind by its coverage "
           "(its two texels of light over its disc of pi x 3^2 texels: about 7%), the bright disc included, while in "
           "the thin lens the bright light's cone at the dim "
           "light's depth reaches |18.2 - r| px from the bright light (5.2 and 12.2 px for the two radii), short of "
-          "the 16 px to the dim light, and hides nothing of it.\n\n";
+          "the 16 px to the dim light, and hides nothing of it. Since 2026-11-30 both lights, above white, leave the "
+          "layers and the composite draws them at full resolution (far highlights, docs/technique.md), where a "
+          "surface in front of a light hides it only where the rays from a pixel to the light cross it "
+          "(`ffxDofHighlightBlockerPoint`): the figures above, each case the same beside the bright light as alone."
+          "\n\n";
 
     // Nearer placements than the gated grid: not gated, so that what the gate does not cover is on the page.
     const std::vector<quality::LightPairCase> survey = quality::runLightPairCases(
@@ -400,13 +426,9 @@ void writeLightPairs(std::ostream& md, vkrun::Device& device) {
        << std::count_if(survey.begin(), survey.end(),
                         [](const quality::LightPairCase& pair) { return !pair.energyOk(); })
        << " of " << survey.size()
-       << " lie outside 5%. The three of 2026-11-29 (10 px at 8, 13 at 12, 16 at 16) each have the bright light "
-          "inside the dim light's kernel or on its outermost ring (distance in half-res px at most the dim radius "
-          "in half-res px plus a ring). Not yet "
-          "measured which part of the gather loses the light there; the likely one is the inconsistency the walk "
-          "beyond the kernel had, inside the kernel: its own rings read the bright light at MIP 0, at its texels' "
-          "centres, while the texels around read it at MIP 1 where its light lies (MIP 0 keeps no light offset: a "
-          "third image each MIP-0 sample would fetch, docs/performance.md, \"Coarse texels in one fetch\").\n\n";
+       << " lie outside 5%. On 2026-11-29, in the half-res layers, three did (10 px at 8: 0.939, 13 at 12: 0.903, 16 "
+          "at 16: 0.880), each with the bright light inside the dim light's kernel or on its outermost ring; since "
+          "2026-11-30 both lights are far highlights, drawn at full resolution (docs/technique.md).\n\n";
     md << "| dim radius (px) |";
     for (int distance : quality::kLightPairSurveyDistances) md << " " << distance << " px |";
     md << "\n|---:|";
@@ -498,13 +520,19 @@ void writeSceneLights(std::ostream& md, vkrun::Device& device) {
           "sources) the scene gained 1.4 dB more (28.28 -> 29.70) and light 0 (at 2.8 px) passes (0.86 -> 1.02); "
           "light 6, beside an in-focus object, went from 1.27 to 0.81 of the truth's. Since the downsample "
           "weighs radii by squared light, 0.29 dB more (29.99): light 2 0.89 -> 0.93, light 8 (the faintest, "
-          "half hidden) 1.06 -> 1.42. The worst figure now is "
+          "half hidden) 1.06 -> 1.42. Since lights above white leave the half-res layers and the composite draws "
+          "them at full resolution (far highlights, docs/technique.md, 2026-11-30), 12 lights pass instead of 8 "
+          "(light 2 0.93 -> 1.00, light 5 1.07 -> 1.04 and light 8 1.37 -> 0.96 of the truth's; lights 12 and 13, "
+          "half behind the box, 2.08 and 1.29 -> 0.88 and 0.86 of the truth's), and the scene lost 0.61 dB "
+          "(30.01 -> 29.40): the disc of light 13 beside the box carries what the pinhole sees of the light, while "
+          "the thin lens sees around the box and draws it brighter there. The worst figure now is "
           "light "
        << worst->emitter << "'s (" << (worst->float32 ? "32" : "16") << "-bit: " << number(worst->energyRatio(), "%.3f")
        << "). " << ownDiscText.str()
-       << " Ring merging and the rim inset are decided per tile from the radii its kernels read (dilate's footprint), "
-          "and per texel from the radii on its outermost ring, so a dim light near a bright light changes how the "
-          "bright light's disc is drawn. For light 2 (a diagnostic run of 2026-11-29 that took it out of the scene, "
+       << " Until then, ring merging and the rim inset, decided per tile from the radii its kernels read (dilate's "
+          "footprint) and per texel from the radii on its outermost ring, let a dim light near a bright light change "
+          "how the bright light's disc was drawn. For light 2 (a diagnostic run of 2026-11-29 that took it out of the "
+          "scene, "
           "not part of this report): with ring merging off no pixel outside its own disc changes; with it on, "
           "texels of light 3's disc near light 2 stop merging while it is there, and the merged rings had drawn "
           "light 3's disc there slightly brighter than the full rings do. Tried on 2026-11-29, not kept: letting a "

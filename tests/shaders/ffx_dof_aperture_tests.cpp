@@ -197,7 +197,9 @@ ShapedDisc measureShapedPoint(const FfxDofAperture& aperture, float radius, floa
     scene.depth.assign(size_t(width) * height, radius);  // radius = -depth: far field
     for (uint32_t y = 0; y < height; ++y)
         for (uint32_t x = 0; x < width; ++x) scene.depth[size_t(y) * width + x] += radiusSlope * (float(x) - float(px));
-    scene.color[size_t(py) * width + size_t(px)] = glm::vec4(100.0f, 100.0f, 100.0f, 1.0f);
+    // At white: a point above it leaves the half-res layers this measures for the composite's full-resolution
+    // disc (ffx_dof_highlights.h; the Vulkan aperture tests measure that one, in the output).
+    scene.color[size_t(py) * width + size_t(px)] = glm::vec4(1.0f, 1.0f, 1.0f, 1.0f);
     ffxdoftest::Settings settings;
     settings.aperture = aperture;
     settings.cocLimit = 40.0f;

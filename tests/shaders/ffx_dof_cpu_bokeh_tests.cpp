@@ -16,9 +16,10 @@ TEST_CASE("A single bright far pixel spreads into a flat disc of its energy (hal
     // depending on the output texel: with them, this far layer measured flatnesses (std / mean within
     // 0.7 R) of 0.04 to 0.47 and energies 2.2 to 2.8.
     for (const float radius : {2.0f, 4.8f, 9.0f}) {
-        // Below FFX_DOF_FAR_LAYER_ONLY_RADIUS a light above white is drawn by the composite at full
-        // resolution, not in this layer (ffx_dof_small_sources.h): the small disc is one at white.
-        const float value = radius < FFX_DOF_FAR_LAYER_ONLY_RADIUS ? 1.0f : 10.0f;
+        // A light above white is drawn by the composite at full resolution, not in this layer (below
+        // FFX_DOF_FAR_LAYER_ONLY_RADIUS ffx_dof_small_sources.h, from it ffx_dof_highlights.h): the point is one
+        // at white.
+        const float value = 1.0f;
         for (int position = 0; position < 2; ++position) {
             for (uint32_t frame = 0; frame < 2; ++frame) {
                 const ffxdoftest::PointDisc disc = ffxdoftest::measurePointDisc(radius, position, frame, value);

@@ -40,6 +40,9 @@ struct Image {
 
 // TILE_LISTS words nothing has written (no packed tile: tile coordinates stay far below 0xbeef).
 constexpr uint32_t kUnwrittenListWord = 0xdeadbeefu;
+// HIGHLIGHTS words before pass 2 writes them: garbage, as on a GPU (no initial value), never an empty slot
+// of zeros that would hide a composite reading a slot pass 2 did not write.
+constexpr uint32_t kUnwrittenHighlightWord = 0xdeadbeefu;
 
 struct State {
     FfxDofConstants constants{};
@@ -56,6 +59,10 @@ struct State {
     // TILE_LIST_ARGS (garbage until pass 1 resets it, as on a GPU) and TILE_LISTS.
     std::atomic<uint32_t> tileListArgs[ffxdof::kTileListArgsWordCount];
     std::vector<uint32_t> tileLists;
+    std::vector<uint32_t> highlights;  // HIGHLIGHTS
+    // Per word of HIGHLIGHTS, whether pass 2 wrote it: any value is a valid highlight word, so only this
+    // tells a read of garbage (bytes, not bits: invocations write neighbouring words concurrently).
+    std::vector<uint8_t> highlightWritten;
     State() {
         for (std::atomic<uint32_t>& word : tileListArgs) word.store(0xdeadbeefu);
     }
@@ -246,6 +253,14 @@ FfxUInt32 ffxDofLoadTileListWord(FfxUInt32 word) {
     if (packed == kUnwrittenListWord) throw std::out_of_range("tile list read past its entries");
     return packed;
 }
+void ffxDofStoreHighlightWord(FfxUInt32 word, FfxUInt32 value) {
+    g_state->highlights.at(word) = value;
+    g_state->highlightWritten.at(word) = 1;
+}
+FfxUInt32 ffxDofLoadHighlightWord(FfxUInt32 word) {
+    if (!g_state->highlightWritten.at(word)) throw std::logic_error("highlight word read before pass 2 wrote it");
+    return g_state->highlights.at(word);
+}
 
 namespace ffxdoftest {
 
@@ -278,6 +293,8 @@ std::vector<glm::vec4> runPipeline(const Scene& scene, const Settings& settings,
     state.layerAlpha.resize(k.halfSize.x, k.halfSize.y);
     state.output.resize(scene.width, scene.height);
     state.tileLists.assign(ffxdof::tileListsWordCount(k.tileCount.x, k.tileCount.y), kUnwrittenListWord);
+    state.highlights.assign(ffxdof::highlightsWordCount(k.tileCount.x, k.tileCount.y), kUnwrittenHighlightWord);
+    state.highlightWritten.assign(state.highlights.size(), 0);
 
     // Group counts from the dispatch geometry of ffx_dof_resources.h.
     auto groups = [](uint32_t domain, uint32_t extent) { return ceilDiv(domain, extent); };

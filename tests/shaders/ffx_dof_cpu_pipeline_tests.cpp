@@ -323,10 +323,11 @@ TEST_CASE("A single bright far pixel's disc with ring merging: flat and of its e
     // flatness 0.03 to 0.35 at radii 4.8 to 9). Both sides now judge by the coarse texels.
     for (const float radius : {4.8f, 9.0f, 13.35f}) {
         for (int position = 0; position < 2; ++position) {
-            const ffxdoftest::PointDisc disc = ffxdoftest::measurePointDisc(radius, position, 0u);
+            // At white: a light above it leaves this layer for the composite (ffx_dof_highlights.h).
+            const ffxdoftest::PointDisc disc = ffxdoftest::measurePointDisc(radius, position, 0u, 1.0f);
             INFO("radius " << radius << ", position " << position << ": energy " << disc.energy << ", flatness "
                            << disc.flatness);
-            CHECK(disc.energy == Approx(2.5).epsilon(0.04));
+            CHECK(disc.energy == Approx(0.25).epsilon(0.04));
             CHECK(disc.flatness < 0.05);
         }
     }
@@ -336,33 +337,42 @@ TEST_CASE("A far light brighter than white gets a disc nearer the truth's size t
     // One half-res texel of light (2 x 2 px) on black, far field, radius 6 half-res px: the thin-lens
     // disc has a radius of 12 full-res px, so its light's mean squared distance from the centre is
     // 12^2 / 2. A dim light (disc level far below white) spreads over its full radius, rim ramp and
-    // upsample included; a light whose disc is brighter than white spreads over a disc up to
-    // FFX_DOF_HIGHLIGHT_INSET half-res px smaller (ffxDofHighlightSpreadRadius), so its outline comes nearer the
-    // truth's, and both keep their energy.
-    const auto measure = [](float value, double& energyKept, double& radius) {
+    // upsample included; a light above white is drawn at full resolution by the composite (ffx_dof_highlights.h),
+    // so its outline comes nearer the truth's, and both keep their energy.
+    // Glow: the brightest output beyond the disc's radius + 1.5 px (and the light's own half diagonal) over the
+    // disc's level.
+    const auto measure = [](float value, double& energyKept, double& radius, double& glow) {
         Scene scene = makeScene(96, 80, glm::vec4(0, 0, 0, 1), -6.0f);
         for (int y = 40; y < 42; ++y)
             for (int x = 48; x < 50; ++x)
                 scene.color[size_t(y) * scene.width + size_t(x)] = glm::vec4(value, value, value, 1);
         const std::vector<glm::vec4> out = ffxdoftest::runPipeline(scene, Settings{});
-        double energy = 0.0, moment = 0.0;
+        double energy = 0.0, moment = 0.0, beyond = 0.0;
         for (size_t i = 0; i < out.size(); ++i) {
             const double dx = double(i % scene.width) + 0.5 - 49.0, dy = double(i / scene.width) + 0.5 - 41.0;
             energy += out[i].y;
             moment += out[i].y * (dx * dx + dy * dy);
+            if (std::hypot(dx, dy) > 12.0 + 1.5 + std::sqrt(0.5)) beyond = std::max(beyond, double(out[i].y));
         }
         energyKept = energy / (4.0 * value);
         radius = std::sqrt(2.0 * moment / energy);  // a flat disc's radius
+        glow = beyond / (4.0 * value / (3.14159265358979 * 144.0));
     };
-    double dimEnergy = 0.0, dimRadius = 0.0, brightEnergy = 0.0, brightRadius = 0.0;
-    measure(0.5f, dimEnergy, dimRadius);          // disc level 0.5 * 4 / (pi 12^2): 0.004
-    measure(500.0f, brightEnergy, brightRadius);  // 4.4: the full inset
-    INFO("dim: energy " << dimEnergy << ", radius " << dimRadius << "; bright: energy " << brightEnergy << ", radius "
-                        << brightRadius << " (truth 12)");
+    double dimEnergy = 0.0, dimRadius = 0.0, dimGlow = 0.0, brightEnergy = 0.0, brightRadius = 0.0, brightGlow = 0.0;
+    measure(0.5f, dimEnergy, dimRadius, dimGlow);             // disc level 0.5 * 4 / (pi 12^2): 0.004
+    measure(500.0f, brightEnergy, brightRadius, brightGlow);  // 4.4
+    INFO("dim: energy " << dimEnergy << ", radius " << dimRadius << ", glow " << dimGlow << "; bright: energy "
+                        << brightEnergy << ", radius " << brightRadius << ", glow " << brightGlow << " (truth 12)");
+    // The half-res layers' rim spreads 2 px beyond the disc (the dim light's); the full-resolution disc's does not.
+    CHECK(dimGlow > 0.02);
+    CHECK(brightGlow < 0.02);
     CHECK(dimEnergy == Approx(1.0).epsilon(0.015));  // measured 0.990 and 1.005
     CHECK(brightEnergy == Approx(1.0).epsilon(0.015));
     CHECK(dimRadius > 12.0);
-    CHECK(dimRadius - brightRadius > 0.25);  // the inset: 0.5 full-res px, less what rounding keeps
+    // Since 2026-11-30 a light above white leaves the layers and the composite draws it at full resolution
+    // (ffx_dof_highlights.h): 12.07 (11.69 with the layers' inset, 0.5 full-res px, before).
+    CHECK(std::abs(brightRadius - 12.0) < 0.15);
+    CHECK(std::abs(brightRadius - 12.0) < std::abs(dimRadius - 12.0));
     // Both outlines within 0.35 px of the truth (measured 12.16 and 11.69). Before the rim border moved
     // in where merged rings meet the outermost ring (ffxDofWalkBorderRadius), the dim disc bulged
     // toward its coarse texel's centre and this held the bright one nearer the truth than the dim one.

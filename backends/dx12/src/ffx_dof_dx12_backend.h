@@ -20,7 +20,7 @@ using Microsoft::WRL::ComPtr;
 // Every dispatch binds one contiguous block of descriptors through one descriptor table:
 //   [0, 10)   SRVs t0..t9               (FFX_DOF_SRV_*)
 //   [10, 21)  image UAVs u0..u10        (FFX_DOF_UAV_*)
-//   [21, 24)  buffer UAVs u0..u2, space 1 (FFX_DOF_UAV_BUFFER_*)
+//   [21, 25)  buffer UAVs u0..u3, space 1 (FFX_DOF_UAV_BUFFER_*)
 // HLSL has one u# namespace for images and buffers, so the buffers take register space 1
 // (shaders_common/ffx_dof_callbacks_hlsl.h declares them there).
 constexpr uint32_t kSrvCount = kSampledSlotCount;

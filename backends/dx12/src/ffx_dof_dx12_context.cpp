@@ -252,13 +252,16 @@ FfxDofErrorCode Context::createResources() {
 
     // A committed resource in a default heap starts zeroed (no D3D12_HEAP_FLAG_CREATE_NOT_ZEROED),
     // which is the "zero before the first dispatch" that GLOBALS needs. Not aliasable: it carries the
-    // zeros the passes write back into the next dispatch. TILE_LIST_ARGS and TILE_LISTS are rewritten by
-    // every dispatch before they are read.
+    // zeros the passes write back into the next dispatch. TILE_LIST_ARGS, TILE_LISTS and HIGHLIGHTS are
+    // rewritten by every dispatch before they are read.
     bufferElements_[FFX_DOF_UAV_BUFFER_GLOBALS] = kGlobalsWordCount;
     bufferElements_[FFX_DOF_UAV_BUFFER_TILE_LIST_ARGS] = kTileListArgsWordCount;
     bufferElements_[FFX_DOF_UAV_BUFFER_TILE_LISTS] = plan_.tileListsBytes / kBufferElementBytes;
-    const char* const names[kUavBufferCount] = {"GLOBALS", "TILE_LIST_ARGS", "TILE_LISTS"};
-    static_assert(kUavBufferCount == 3, "names are listed by storage buffer slot");
+    bufferElements_[FFX_DOF_UAV_BUFFER_HIGHLIGHTS] = plan_.highlightsBytes / kBufferElementBytes;
+    const char* const names[kUavBufferCount] = {"GLOBALS", "TILE_LIST_ARGS", "TILE_LISTS", "HIGHLIGHTS"};
+    static_assert(FFX_DOF_UAV_BUFFER_GLOBALS == 0 && FFX_DOF_UAV_BUFFER_TILE_LIST_ARGS == 1 &&
+                      FFX_DOF_UAV_BUFFER_TILE_LISTS == 2 && FFX_DOF_UAV_BUFFER_HIGHLIGHTS == 3 && kUavBufferCount == 4,
+                  "elements and names are listed by storage buffer slot");
     for (uint32_t slot = 0; slot < kUavBufferCount; ++slot) {
         const D3D12_RESOURCE_DESC desc = bufferDescription(UINT64(kBufferElementBytes) * bufferElements_[slot],
                                                            D3D12_RESOURCE_FLAG_ALLOW_UNORDERED_ACCESS);

@@ -15,8 +15,8 @@ constexpr D3D12_RESOURCE_STATES kIndirectState = D3D12_RESOURCE_STATE_INDIRECT_A
 
 // Subresources whose states a dispatch follows: every level of every internal image, TILE_LIST_ARGS
 // (a UAV for the passes that write it, indirect arguments for the composite), plus color, depth and
-// output (whole resources; output shares color's entry when in place). GLOBALS and TILE_LISTS stay UAVs
-// and need only UAV barriers.
+// output (whole resources; output shares color's entry when in place). GLOBALS, TILE_LISTS and HIGHLIGHTS
+// stay UAVs and need only UAV barriers.
 constexpr uint32_t kMaxTracked = kInternalImageCount * kMipCount + 4;
 constexpr uint8_t kNoTarget = 0xff;
 
@@ -94,8 +94,8 @@ public:
             }
             if (access_[i] != Access::None) entry.unorderedWrites = false;
         }
-        // GLOBALS and TILE_LISTS stay UAVs (buffers: promoted from COMMON on first use, decay after the
-        // list), so only UAV barriers order one pass's accesses against the next's.
+        // GLOBALS, TILE_LISTS and HIGHLIGHTS stay UAVs (buffers: promoted from COMMON on first use, decay
+        // after the list), so only UAV barriers order one pass's accesses against the next's.
         for (uint32_t slot = 0; slot < kUavBufferCount; ++slot) {
             if ((pass.bufferSlots & (1u << slot)) && slots.uavBuffer[slot] == kNoTarget && bufferWritten_[slot])
                 uavBarrier(uavBuffers != nullptr ? uavBuffers[slot] : nullptr);
@@ -123,7 +123,7 @@ public:
     }
 
     // A dispatch may follow another in the same command list: its first accesses of the UAV buffers
-    // (GLOBALS atomics, TILE_LISTS) must wait for the previous dispatch's.
+    // (GLOBALS atomics, TILE_LISTS, HIGHLIGHTS) must wait for the previous dispatch's.
     void assumeBuffersWritten() {
         for (bool& written : bufferWritten_) written = true;
     }

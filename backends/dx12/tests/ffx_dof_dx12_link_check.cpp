@@ -59,9 +59,9 @@ constexpr bool formatRulesAreUnique() {
 }
 static_assert(formatRulesAreUnique());
 
-// The descriptor table covers t0..t9, u0..u10 and the three buffers (GLOBALS, TILE_LIST_ARGS, TILE_LISTS),
-// and nothing overlaps.
-static_assert(ffxdof::dx12::kDescriptorsPerDispatch == 10 + 11 + 3);
+// The descriptor table covers t0..t9, u0..u10 and the four buffers (GLOBALS, TILE_LIST_ARGS, TILE_LISTS,
+// HIGHLIGHTS), and nothing overlaps.
+static_assert(ffxdof::dx12::kDescriptorsPerDispatch == 10 + 11 + 4);
 // FfxDofConstants as root constants: 30 DWORDs of the 64 a root signature holds.
 static_assert(ffxdof::dx12::kRootConstantCount == 30);
 

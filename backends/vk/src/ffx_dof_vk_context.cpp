@@ -150,9 +150,11 @@ FfxDofErrorCode ContextVK::createBuffers() {
         {"TILE_LIST_ARGS", kTileListArgsBytes,
          VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT},
         {"TILE_LISTS", plan_.tileListsBytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT},
+        {"HIGHLIGHTS", plan_.highlightsBytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT},
     };
     static_assert(FFX_DOF_UAV_BUFFER_GLOBALS == 0 && FFX_DOF_UAV_BUFFER_TILE_LIST_ARGS == 1 &&
-                      FFX_DOF_UAV_BUFFER_TILE_LISTS == 2 && kStorageBufferSlotCount == 3,
+                      FFX_DOF_UAV_BUFFER_TILE_LISTS == 2 && FFX_DOF_UAV_BUFFER_HIGHLIGHTS == 3 &&
+                      kStorageBufferSlotCount == 4,
                   "specs are listed by storage buffer slot");
     for (uint32_t slot = 0; slot < kStorageBufferSlotCount; ++slot) {
         const BufferSpec& spec = specs[slot];
@@ -167,7 +169,8 @@ FfxDofErrorCode ContextVK::createBuffers() {
         VkMemoryRequirements requirements{};
         fn.vkGetBufferMemoryRequirements(device, buffer.buffer, &requirements);
         memoryUsage_.totalUsageInBytes += requirements.size;
-        // Every dispatch rewrites the tile lists before it reads them; GLOBALS carries values across.
+        // Every dispatch rewrites the tile lists and the highlights before it reads them; GLOBALS carries
+        // values across.
         if (slot != FFX_DOF_UAV_BUFFER_GLOBALS) memoryUsage_.aliasableUsageInBytes += requirements.size;
         auto allocation = makeInfo<VkMemoryAllocateInfo>(VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO);
         allocation.allocationSize = requirements.size;

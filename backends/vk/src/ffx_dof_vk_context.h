@@ -44,7 +44,7 @@ private:
 
     // Creation (ffx_dof_vk_context.cpp).
     FfxDofErrorCode createImages();
-    // GLOBALS, TILE_LIST_ARGS and TILE_LISTS, by storage buffer slot.
+    // GLOBALS, TILE_LIST_ARGS, TILE_LISTS and HIGHLIGHTS, by storage buffer slot.
     FfxDofErrorCode createBuffers();
     FfxDofErrorCode createReadback();
     FfxDofErrorCode createPipelines();

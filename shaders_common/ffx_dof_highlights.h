@@ -1,0 +1,271 @@
+// Far highlights drawn at full resolution: the one place that decides which light the half-res layers
+// leave out and how the composite draws it (see docs/technique.md, "Far highlights").
+//
+// The half-res layers are upsampled bilinearly, so a far disc's rim spreads over one more half-res texel
+// (2 full-res px) than the disc: a bright disc kept up to a tenth of its level 1.5 px beyond its radius,
+// and brighter than display white it looked wider than the thin lens's, with coloured fringes
+// (docs/quality.md, point discs and far-highlights). Pass 2 therefore takes the light of a quad that is far
+// brighter than the pixels around it out of the half-res colour, down to their level, and stores it per
+// tile (HIGHLIGHTS: where it lies, its radius, its energy); the composite draws each such light as a disc of
+// the aperture's shape at full resolution, its energy over the disc's area, behind whatever lies in front
+// of it. Energy leaves the layers only where a slot holds it, so nothing is lost or drawn twice.
+//
+// A tile has FFX_DOF_HIGHLIGHT_SLOTS slots, one per quadrant of 8 x 8 full-res px: a slot holds the light of
+// every quad of its quadrant that gives some, drawn as one disc about its light-weighted centre. One light
+// of a few pixels is drawn where it lies; lights a few pixels apart in one quadrant become one disc about
+// their common centre (up to 4 px off; the layers drew such lights 1 to 2 px wider than the thin lens).
+#ifndef FFX_DOF_HIGHLIGHTS_H
+#define FFX_DOF_HIGHLIGHTS_H
+
+#include "ffx_dof_common.h"
+
+#if FFX_DOF_HIGHLIGHT_SLOTS != 4
+#error "a tile's highlight slots are its four quadrants"
+#endif
+
+// A quad pixel gives light to the full-resolution path from this luminance on (display white, in the
+// input's units), fully from twice it: below white a soft rim costs little the eye sees.
+#define FFX_DOF_HIGHLIGHT_MIN_LUMINANCE 1.0f
+// ... and where it is at least this many times as bright as the dimmest pixel around its quad (fully from
+// twice it): the contrast of a light against what lies around it.
+#define FFX_DOF_HIGHLIGHT_CONTRAST 2.0f
+// ... and where its far radius (half-res px) is above this, fully from one pixel more: below it the composite
+// draws a bright pixel's light at full resolution already (ffx_dof_small_sources.h).
+#define FFX_DOF_HIGHLIGHT_MIN_RADIUS FFX_DOF_FAR_LAYER_ONLY_RADIUS
+#define FFX_DOF_SQRT2 1.41421356f
+// The widest rim a highlight's disc is drawn with (full-res px): half of it reaches beyond the radius, within the
+// margins of dilate (FFX_DOF_DILATE_MARGIN) and of the composite's window (ffxDofHighlightTileRange).
+#define FFX_DOF_HIGHLIGHT_MAX_RIM_WIDTH 6.0f
+
+// ---- Which light a quad gives --------------------------------------------------------------------
+
+// The share of its light a quad pixel of luminance `luminance` and radius `coc` gives to the full-resolution
+// path, where the dimmest of the 12 pixels around its quad has `floorLuminance` (`scale`: the colour scale of
+// the HDR range): what lies above that floor, ramped in by the three thresholds above so that a light
+// crossing one changes continuously.
+FFX_DOF_INLINE FfxFloat32 ffxDofHighlightShare(FfxFloat32 luminance, FfxFloat32 coc, FfxFloat32 floorLuminance,
+                                               FfxFloat32 scale)
+{
+    if (!(luminance > 0.0f))
+        return 0.0f;
+    FfxFloat32 white = FFX_DOF_HIGHLIGHT_MIN_LUMINANCE * scale;
+    FfxFloat32 bright = ffxDofSaturate(luminance / white - 1.0f);
+    FfxFloat32 contrast = ffxDofSaturate(luminance / max(FFX_DOF_HIGHLIGHT_CONTRAST * floorLuminance, 1e-30f) - 1.0f);
+    FfxFloat32 far = ffxDofSaturate(-coc - FFX_DOF_HIGHLIGHT_MIN_RADIUS);
+    return bright * contrast * far * ffxDofSaturate(1.0f - floorLuminance / luminance);
+}
+
+// A light of the full-resolution path: where it lies (full-res px from its tile's top-left corner), its far
+// radius (|CoC|, half-res px), how far its light spreads about where it lies (the root mean square distance,
+// full-res px) and its energy (colour summed over its pixels, in the HDR range's units).
+struct FfxDofHighlight
+{
+    FfxFloat32x2 position;
+    FfxFloat32 radius;
+    FfxFloat32 spread;
+    FfxFloat32x3 energy;
+};
+
+// A highlight as sums over the quads it gathers (a quadrant of a tile: every quad that gives light there, so
+// that a light is never split between the paths): energy (xyz) and light (w, luminance x share); the
+// light-weighted position (xy), radius (z) and squared distance from the tile's corner (w).
+struct FfxDofHighlightSums
+{
+    FfxFloat32x4 energyLight;
+    FfxFloat32x4 placeRadius;
+};
+
+// What a quad gives: the light of its pixels 0..3 (top-left, top-right, bottom-left, bottom-right) at
+// `shares` (ffxDofHighlightShare), `inTile` the quad's top-left pixel in its tile (full-res px).
+FFX_DOF_INLINE FfxDofHighlightSums ffxDofQuadHighlightSums(FfxFloat32x3 color0, FfxFloat32x3 color1,
+                                                           FfxFloat32x3 color2, FfxFloat32x3 color3, FfxFloat32x4 cocs,
+                                                           FfxFloat32x4 shares, FfxFloat32x2 inTile)
+{
+    FfxFloat32x4 light = shares * FfxFloat32x4(ffxDofLuminance32(color0), ffxDofLuminance32(color1),
+                                               ffxDofLuminance32(color2), ffxDofLuminance32(color3));
+    FfxFloat32x2 centre0 = inTile + FfxFloat32x2(0.5f, 0.5f);
+    FfxFloat32x2 centre3 = centre0 + FfxFloat32x2(1.0f, 1.0f);
+    // Squared distances of the four pixel centres from the tile's corner.
+    FfxFloat32x4 distance2 = FfxFloat32x4(dot(centre0, centre0), centre3.x * centre3.x + centre0.y * centre0.y,
+                                          centre0.x * centre0.x + centre3.y * centre3.y, dot(centre3, centre3));
+    FfxFloat32 lightSum = light.x + light.y + light.z + light.w;
+    FfxDofHighlightSums sums;
+    sums.energyLight =
+        FfxFloat32x4(color0 * shares.x + color1 * shares.y + color2 * shares.z + color3 * shares.w, lightSum);
+    sums.placeRadius = FfxFloat32x4(centre0 * lightSum + FfxFloat32x2(light.y + light.w, light.z + light.w),
+                                    dot(abs(cocs), light), dot(distance2, light));
+    return sums;
+}
+
+FFX_DOF_INLINE FfxDofHighlightSums ffxDofAddHighlightSums(FfxDofHighlightSums a, FfxDofHighlightSums b)
+{
+    FfxDofHighlightSums sums;
+    sums.energyLight = a.energyLight + b.energyLight;
+    sums.placeRadius = a.placeRadius + b.placeRadius;
+    return sums;
+}
+
+// Whether the sums hold light.
+FFX_DOF_INLINE FfxBoolean ffxDofHighlightSumsHoldLight(FfxDofHighlightSums sums) { return sums.energyLight.w > 0.0f; }
+
+// The highlight the sums describe (where they hold light).
+FFX_DOF_INLINE FfxDofHighlight ffxDofFinishHighlight(FfxDofHighlightSums sums)
+{
+    FfxDofHighlight highlight;
+    FfxFloat32 inverseLight = 1.0f / sums.energyLight.w;
+    highlight.energy = FfxFloat32x3(sums.energyLight.x, sums.energyLight.y, sums.energyLight.z);
+    highlight.position = FfxFloat32x2(sums.placeRadius.x, sums.placeRadius.y) * inverseLight;
+    highlight.radius = sums.placeRadius.z * inverseLight;
+    highlight.spread = sqrt(max(sums.placeRadius.w * inverseLight - dot(highlight.position, highlight.position), 0.0f));
+    return highlight;
+}
+
+// ---- Storage: two words a slot, zero for an empty one ---------------------------------------------
+
+// RGB9E5: three 9-bit mantissas and a shared exponent (bias 15), as VK_FORMAT_E5B9G9R9_UFLOAT_PACK32 stores it
+// (largest value 65408; the HDR range keeps a pixel at most FFX_DOF_COLOR_RANGE_LIMIT, four of them 16384).
+// Rounded to nearest, so the energy drawn is within 1/512 of what left the layers.
+#define FFX_DOF_RGB9E5_MAX 65408.0f
+FFX_DOF_INLINE FfxUInt32 ffxDofPackRgb9e5(FfxFloat32x3 color)
+{
+    FfxFloat32x3 clamped = clamp(color, FfxFloat32x3(0.0f, 0.0f, 0.0f),
+                                 FfxFloat32x3(FFX_DOF_RGB9E5_MAX, FFX_DOF_RGB9E5_MAX, FFX_DOF_RGB9E5_MAX));
+    FfxFloat32 largest = max(clamped.x, max(clamped.y, clamped.z));
+    // The exponent of the largest channel from its bits (exact, unlike log2), at least the format's smallest.
+    FfxInt32 exponent = max(FfxInt32((ffxDofAsUInt(largest) >> 23u) & 0xffu) - 127, -16) + 1;
+    FfxFloat32 step = ffxDofAsFloat(FfxUInt32(exponent - 9 + 127) << 23u);
+    // Rounding can carry the largest mantissa to 512: one exponent more.
+    if (floor(largest / step + 0.5f) >= 512.0f)
+    {
+        exponent += 1;
+        step *= 2.0f;
+    }
+    FfxUInt32x3 mantissa = FfxUInt32x3(floor(clamped / step + FfxFloat32x3(0.5f, 0.5f, 0.5f)));
+    return mantissa.x | (mantissa.y << 9u) | (mantissa.z << 18u) | (FfxUInt32(exponent + 15) << 27u);
+}
+FFX_DOF_INLINE FfxFloat32x3 ffxDofUnpackRgb9e5(FfxUInt32 bits)
+{
+    FfxFloat32 step = ffxDofAsFloat(FfxUInt32(FfxInt32(bits >> 27u) - 15 - 9 + 127) << 23u);
+    return FfxFloat32x3(FfxFloat32(bits & 0x1ffu), FfxFloat32((bits >> 9u) & 0x1ffu),
+                        FfxFloat32((bits >> 18u) & 0x1ffu)) *
+           step;
+}
+
+// Word 0: the energy in units of FFX_DOF_HIGHLIGHT_ENERGY_UNIT (RGB9E5; 0 only for an empty slot, since a stored
+// light keeps a nonzero mantissa): a quadrant's 64 pixels of at most FFX_DOF_COLOR_RANGE_LIMIT (4096, the HDR
+// range) sum to 2^18, beyond the format's 65408, which clamped a patch of 16,400 to half its energy.
+#define FFX_DOF_HIGHLIGHT_ENERGY_UNIT 16.0f
+// Word 1: the position in quarters of a pixel (6 bits each way: a tile is 16 px), the radius in 32nds of a
+// half-res px (12 bits, up to 128) and the spread in 16ths of a pixel (8 bits, up to 16).
+#define FFX_DOF_HIGHLIGHT_POSITION_STEPS 4.0f
+#define FFX_DOF_HIGHLIGHT_RADIUS_STEPS 32.0f
+#define FFX_DOF_HIGHLIGHT_SPREAD_STEPS 16.0f
+FFX_DOF_INLINE FfxUInt32x2 ffxDofPackHighlight(FfxDofHighlight highlight)
+{
+    FfxUInt32x2 position =
+        FfxUInt32x2(clamp(floor(highlight.position * FFX_DOF_HIGHLIGHT_POSITION_STEPS + FfxFloat32x2(0.5f, 0.5f)),
+                          FfxFloat32x2(0.0f, 0.0f), FfxFloat32x2(63.0f, 63.0f)));
+    FfxUInt32 radius = FfxUInt32(clamp(floor(highlight.radius * FFX_DOF_HIGHLIGHT_RADIUS_STEPS + 0.5f), 0.0f, 4095.0f));
+    FfxUInt32 spread = FfxUInt32(clamp(floor(highlight.spread * FFX_DOF_HIGHLIGHT_SPREAD_STEPS + 0.5f), 0.0f, 255.0f));
+    FfxUInt32 energy = ffxDofPackRgb9e5(highlight.energy * (1.0f / FFX_DOF_HIGHLIGHT_ENERGY_UNIT));
+    // A light too faint for the format's smallest step still left the layers: keep the slot marked.
+    if ((energy & 0x7ffffffu) == 0u)
+        energy = energy | 1u;
+    return FfxUInt32x2(energy, position.x | (position.y << 6u) | (radius << 12u) | (spread << 24u));
+}
+FFX_DOF_INLINE FfxDofHighlight ffxDofUnpackHighlight(FfxUInt32x2 words)
+{
+    FfxDofHighlight highlight;
+    highlight.energy = ffxDofUnpackRgb9e5(words.x) * FFX_DOF_HIGHLIGHT_ENERGY_UNIT;
+    highlight.position = FfxFloat32x2(FfxFloat32(words.y & 0x3fu), FfxFloat32((words.y >> 6u) & 0x3fu)) *
+                         (1.0f / FFX_DOF_HIGHLIGHT_POSITION_STEPS);
+    highlight.radius = FfxFloat32((words.y >> 12u) & 0xfffu) * (1.0f / FFX_DOF_HIGHLIGHT_RADIUS_STEPS);
+    highlight.spread = FfxFloat32(words.y >> 24u) * (1.0f / FFX_DOF_HIGHLIGHT_SPREAD_STEPS);
+    return highlight;
+}
+
+// The first word of slot `slot` of `tile` in HIGHLIGHTS.
+FFX_DOF_INLINE FfxUInt32 ffxDofHighlightWord(FfxUInt32x2 tile, FfxUInt32 slot, FfxUInt32x2 tileCount)
+{
+    return ((tile.y * tileCount.x + tile.x) * FfxUInt32(FFX_DOF_HIGHLIGHT_SLOTS) + slot) *
+           FfxUInt32(FFX_DOF_HIGHLIGHT_WORDS);
+}
+
+// ---- Where they are drawn ---------------------------------------------------------------------------
+
+// Whether a tile of (min, max) signed radius and colour peak `rangeAndPeak` (TILES) may hold highlights: a
+// channel above white and far pixels of radius from FFX_DOF_HIGHLIGHT_MIN_RADIUS (conservative: dilate lists
+// the tiles such a tile's discs reach for the composite's full-resolution work).
+FFX_DOF_INLINE FfxBoolean ffxDofTileMayHoldHighlights(FfxFloat32x3 rangeAndPeak)
+{
+    return rangeAndPeak.z > FFX_DOF_HIGHLIGHT_MIN_LUMINANCE && rangeAndPeak.x < -FFX_DOF_HIGHLIGHT_MIN_RADIUS;
+}
+
+// Tiles of the composite's window whose highlights it draws, a bit each in group-shared memory: up to 32 words,
+// a window of 1024 tiles (ffxDofHighlightTileRange up to 15: radii up to 118 half-res px; farther highlights
+// are not drawn).
+#define FFX_DOF_HIGHLIGHT_WINDOW_WORDS 32
+#define FFX_DOF_HIGHLIGHT_MAX_TILE_RANGE 15
+
+// Tiles each way within which a highlight's disc may reach a pixel of the central tile: the largest radius
+// (cocLimit, half-res px) stretched by the aperture (`extent`, ffxDofApertureExtent), and half its widest rim.
+FFX_DOF_INLINE FfxInt32 ffxDofHighlightTileRange(FfxFloat32 cocLimit, FfxFloat32 extent)
+{
+    return min(
+        FfxInt32(ceil((cocLimit * extent + 0.25f * FFX_DOF_HIGHLIGHT_MAX_RIM_WIDTH) / FfxFloat32(FFX_DOF_TILE_SIZE))),
+        FfxInt32(FFX_DOF_HIGHLIGHT_MAX_TILE_RANGE));
+}
+
+// How far from a pixel a highlight of |radius| `radius` (half-res px) may add to it (full-res px): its disc
+// stretched by the aperture and half its widest rim.
+FFX_DOF_INLINE FfxFloat32 ffxDofHighlightReach(FfxFloat32 radius, FfxFloat32 extent)
+{
+    return 2.0f * radius * extent + 0.5f * FFX_DOF_HIGHLIGHT_MAX_RIM_WIDTH;
+}
+
+// What a highlight adds to a pixel whose centre lies at `offset` from it (full-res px, pixel minus light): its
+// energy spread over its disc of the aperture's shape, `radius` |CoC| in half-res px, over the disc's area (the
+// shape's: its circle's over areaScale).
+FFX_DOF_INLINE FfxFloat32x3 ffxDofHighlightAt(FfxDofHighlight highlight, FfxFloat32x2 offset,
+                                              FfxDofPixelAperture aperture)
+{
+    FfxFloat32 radius = 2.0f * highlight.radius;
+    // The gauge takes the offset from the pixel to the sample: the light lies at -offset.
+    FfxFloat32 gauge = ffxDofApertureDistance(aperture, -offset, false);
+    // A light of a few pixels draws the union of its pixels' discs: a rim as wide as the light (a disc of
+    // radius a has a root mean square spread of a / sqrt(2)), at least the one pixel of anti-aliasing.
+    FfxFloat32 rimWidth = clamp(2.0f * FFX_DOF_SQRT2 * highlight.spread, 1.0f, FFX_DOF_HIGHLIGHT_MAX_RIM_WIDTH);
+    FfxFloat32 reach = ffxDofSaturate((radius - gauge) / rimWidth + 0.5f);
+    // A rim ramping linearly over w about r covers pi (r^2 + w^2 / 12).
+    FfxFloat32 area = FFX_DOF_PI * (max(radius * radius, 0.25f) + rimWidth * rimWidth * (1.0f / 12.0f));
+    return highlight.energy * (reach * aperture.areaScale / area);
+}
+
+// What may hide a highlight from a pixel whose own far surface lies in front of the light. A point light is
+// seen through the whole lens; a surface of radius c in front of it (|c| < the light's r) blocks the rays
+// that reach pixel p where it covers the point light + (p - light) (1 - |c| / r) of the pinhole image
+// (the rays from p to the light cross the surface's depth there). So a small surface beside a light hides
+// none of its disc, and a large one in front of it cuts the disc where the thin lens cuts it. Returns
+// whether the pixel's own surface lies in front (else nothing the pixel sees hides the light: a surface
+// nearer than the pixel's own in front of the light would, which the pinhole image does not show there),
+// and in `blocker` the point to look at (full-res px; `pixelCoc` and `highlightRadius` in half-res px).
+FFX_DOF_INLINE FfxBoolean ffxDofHighlightBlockerPoint(FfxFloat32x2 pixelCentre, FfxFloat32x2 lightCentre,
+                                                      FfxFloat32 pixelCoc, FfxFloat32 highlightRadius,
+                                                      FFX_DOF_OUT(FfxFloat32x2) blocker)
+{
+    FfxFloat32 along = 1.0f + pixelCoc / max(highlightRadius, 1e-6f);
+    blocker = lightCentre + (pixelCentre - lightCentre) * along;
+    return pixelCoc <= -FFX_DOF_IN_FOCUS_RADIUS && -pixelCoc < highlightRadius - 0.5f;
+}
+
+// How much of a highlight of |radius| `highlightRadius` the surface of signed radius `blockerCoc` at the
+// blocker point lets through (half-res px): all where it lies as far as the light, none where it lies a pixel
+// or more nearer, in focus or near.
+FFX_DOF_INLINE FfxFloat32 ffxDofHighlightVisibility(FfxFloat32 blockerCoc, FfxFloat32 highlightRadius)
+{
+    if (blockerCoc > -FFX_DOF_IN_FOCUS_RADIUS)
+        return 0.0f;
+    return ffxDofSaturate(-blockerCoc - highlightRadius + 1.5f);
+}
+
+#endif  // FFX_DOF_HIGHLIGHTS_H

@@ -1,0 +1,187 @@
+// Unit tests of ffx_dof_highlights.h (far highlights drawn at full resolution) through the C++ mapping. Every
+// expectation is computed independently of the function under test (formula, brute force over a pixel grid).
+#include <catch2/catch.hpp>
+
+#include "ffx_dof_highlights.h"
+
+#include <cmath>
+#include <random>
+
+namespace {
+constexpr float kPi = 3.14159265358979f;
+
+FfxDofHighlight makeHighlight(glm::vec2 position, float radius, float spread, glm::vec3 energy) {
+    FfxDofHighlight highlight;
+    highlight.position = position;
+    highlight.radius = radius;
+    highlight.spread = spread;
+    highlight.energy = energy;
+    return highlight;
+}
+}  // namespace
+
+TEST_CASE("RGB9E5 keeps a colour within half a step of its largest channel", "[highlights]") {
+    std::mt19937 rng(17);
+    std::uniform_real_distribution<float> exponent(-12.0f, 15.9f);
+    std::uniform_real_distribution<float> share(0.0f, 1.0f);
+    for (int i = 0; i < 2000; ++i) {
+        const float largest = std::exp2(exponent(rng));
+        const glm::vec3 color(largest, largest * share(rng), largest * share(rng));
+        const glm::vec3 back = ffxDofUnpackRgb9e5(ffxDofPackRgb9e5(color));
+        // 9 mantissa bits below the largest channel's exponent + 1: a step of at most largest / 256.
+        for (int c = 0; c < 3; ++c) REQUIRE(std::fabs(back[c] - color[c]) <= largest / 512.0f * 1.0001f);
+    }
+    CHECK(ffxDofPackRgb9e5(glm::vec3(0.0f)) == (15u - 15u) << 27u);  // zero mantissas, the smallest exponent
+    CHECK(ffxDofUnpackRgb9e5(ffxDofPackRgb9e5(glm::vec3(1e9f, -1.0f, 2.0f))).x == FFX_DOF_RGB9E5_MAX);
+    CHECK(ffxDofUnpackRgb9e5(ffxDofPackRgb9e5(glm::vec3(1e9f, -1.0f, 2.0f))).y == 0.0f);
+    // A value that rounds up to the next power of two keeps it exactly.
+    CHECK(ffxDofUnpackRgb9e5(ffxDofPackRgb9e5(glm::vec3(511.9f, 0.0f, 0.0f))).x == 512.0f);
+}
+
+TEST_CASE("A packed highlight keeps its place, radius, spread and energy within their steps; an empty slot is zero",
+          "[highlights]") {
+    std::mt19937 rng(5);
+    std::uniform_real_distribution<float> place(0.0f, 15.75f), radius(3.0f, 120.0f), spread(0.0f, 15.0f),
+        energy(0.01f, 262144.0f);  // up to a quadrant of 64 px at the HDR range's 4096
+    for (int i = 0; i < 1000; ++i) {
+        const FfxDofHighlight highlight = makeHighlight(glm::vec2(place(rng), place(rng)), radius(rng), spread(rng),
+                                                        glm::vec3(energy(rng), energy(rng), energy(rng)));
+        const glm::uvec2 words = ffxDofPackHighlight(highlight);
+        REQUIRE(words.x != 0u);
+        const FfxDofHighlight back = ffxDofUnpackHighlight(words);
+        CHECK(std::fabs(back.position.x - highlight.position.x) <= 0.125f + 1e-6f);
+        CHECK(std::fabs(back.position.y - highlight.position.y) <= 0.125f + 1e-6f);
+        CHECK(std::fabs(back.radius - highlight.radius) <= 1.0f / 64.0f + 1e-5f);
+        CHECK(std::fabs(back.spread - highlight.spread) <= 1.0f / 32.0f + 1e-5f);
+        const float largest = std::max(highlight.energy.x, std::max(highlight.energy.y, highlight.energy.z));
+        for (int c = 0; c < 3; ++c)
+            CHECK(std::fabs(back.energy[c] - highlight.energy[c]) <= largest / 512.0f * 1.0001f);
+    }
+    // A light below the format's smallest step still marks its slot as used.
+    CHECK(ffxDofPackHighlight(makeHighlight(glm::vec2(1.0f), 4.0f, 0.0f, glm::vec3(1e-12f))).x != 0u);
+}
+
+TEST_CASE("A pixel gives light above its floor, only where it is bright, far brighter than the floor and far enough",
+          "[highlights]") {
+    const float scale = 1.0f, floor = 0.05f, far = -(FFX_DOF_HIGHLIGHT_MIN_RADIUS + 1.0f);
+    // Fully past every threshold: what lies above the floor.
+    CHECK(ffxDofHighlightShare(50.0f, far, floor, scale) == Approx(1.0f - floor / 50.0f));
+    // Not above white, not brighter than the floor by the contrast, not beyond the radius: nothing.
+    CHECK(ffxDofHighlightShare(FFX_DOF_HIGHLIGHT_MIN_LUMINANCE, far, 0.0f, scale) == 0.0f);
+    CHECK(ffxDofHighlightShare(FFX_DOF_HIGHLIGHT_CONTRAST * 10.0f, far, 10.0f, scale) == 0.0f);
+    CHECK(ffxDofHighlightShare(50.0f, -FFX_DOF_HIGHLIGHT_MIN_RADIUS, floor, scale) == 0.0f);
+    CHECK(ffxDofHighlightShare(50.0f, 5.0f, floor, scale) == 0.0f);  // near field
+    CHECK(ffxDofHighlightShare(0.0f, far, 0.0f, scale) == 0.0f);
+    // White is in the input's units: the HDR range's scale moves it with the colour.
+    CHECK(ffxDofHighlightShare(1.5f * 0.25f, far, 0.0f, 0.25f) == Approx(0.5f));
+    // Each ramp is continuous and rises with what it ramps.
+    float previous = 0.0f;
+    for (float luminance = 0.5f; luminance < 8.0f; luminance += 0.01f) {
+        const float share = ffxDofHighlightShare(luminance, far, 0.5f, scale);
+        REQUIRE(share >= previous - 1e-6f);
+        REQUIRE(share - previous <= 0.02f);
+        previous = share;
+    }
+}
+
+TEST_CASE("Highlight sums give the light-weighted place, radius and spread of what they gather", "[highlights]") {
+    // One lit pixel (the bottom-right of the quad at (4, 6)): its centre, its radius, no spread, its light.
+    const glm::vec3 dark(0.0f), light(10.0f, 20.0f, 30.0f);
+    const FfxDofHighlightSums one =
+        ffxDofQuadHighlightSums(dark, dark, dark, light, glm::vec4(-5.0f, -5.0f, -5.0f, -7.0f),
+                                glm::vec4(0.0f, 0.0f, 0.0f, 0.5f), glm::vec2(4.0f, 6.0f));
+    REQUIRE(ffxDofHighlightSumsHoldLight(one));
+    const FfxDofHighlight single = ffxDofFinishHighlight(one);
+    CHECK(single.position.x == Approx(5.5f));
+    CHECK(single.position.y == Approx(7.5f));
+    CHECK(single.radius == Approx(7.0f));
+    CHECK(single.spread == Approx(0.0f).margin(1e-3));
+    CHECK(single.energy.z == Approx(15.0f));
+    // Two equal lights 6 px apart in two quads: their middle, each one's radius weighed by its light, a spread of 3.
+    const FfxDofHighlightSums left = ffxDofQuadHighlightSums(light, dark, dark, dark, glm::vec4(-4.0f),
+                                                             glm::vec4(1.0f, 0.0f, 0.0f, 0.0f), glm::vec2(0.0f, 2.0f));
+    const FfxDofHighlightSums right = ffxDofQuadHighlightSums(light, dark, dark, dark, glm::vec4(-8.0f),
+                                                              glm::vec4(1.0f, 0.0f, 0.0f, 0.0f), glm::vec2(6.0f, 2.0f));
+    const FfxDofHighlight pair = ffxDofFinishHighlight(ffxDofAddHighlightSums(left, right));
+    CHECK(pair.position.x == Approx(3.5f));
+    CHECK(pair.position.y == Approx(2.5f));
+    CHECK(pair.radius == Approx(6.0f));
+    CHECK(pair.spread == Approx(3.0f).margin(1e-3));
+    CHECK(pair.energy.x == Approx(20.0f));
+    // A quad that gives nothing holds no light.
+    CHECK_FALSE(ffxDofHighlightSumsHoldLight(
+        ffxDofQuadHighlightSums(light, light, light, light, glm::vec4(-9.0f), glm::vec4(0.0f), glm::vec2(0.0f))));
+}
+
+TEST_CASE("A highlight's disc on the pixel grid holds its energy and ends at its radius", "[highlights]") {
+    const FfxDofPixelAperture round = ffxDofRoundAperture();
+    for (float radius : {3.0f, 4.5f, 9.1f, 13.0f, 27.0f}) {  // half-res px
+        for (float spread : {0.0f, 0.7f, 2.0f}) {            // full-res px
+            for (glm::vec2 place : {glm::vec2(0.5f), glm::vec2(0.3f, 0.85f)}) {
+                const FfxDofHighlight highlight = makeHighlight(place, radius, spread, glm::vec3(1.0f, 2.0f, 3.0f));
+                const float rim =
+                    std::min(std::max(1.0f, 2.0f * std::sqrt(2.0f) * spread), FFX_DOF_HIGHLIGHT_MAX_RIM_WIDTH);
+                const int extent = int(std::ceil(2.0f * radius + rim)) + 2;
+                double sum = 0.0, beyond = 0.0;
+                for (int y = -extent; y <= extent; ++y)
+                    for (int x = -extent; x <= extent; ++x) {
+                        const glm::vec2 offset = glm::vec2(float(x) + 0.5f, float(y) + 0.5f) - place;
+                        const float added = ffxDofHighlightAt(highlight, offset, round).y;
+                        sum += added;
+                        if (glm::length(offset) > 2.0f * radius + 0.5f * rim + 1e-3f) beyond += added;
+                    }
+                INFO("radius " << radius << ", spread " << spread);
+                // The disc on the grid holds pi r^2 up to its rim's lattice error.
+                CHECK(sum == Approx(2.0).epsilon(0.03));
+                CHECK(beyond == 0.0);
+            }
+        }
+    }
+    // A shaped aperture: its own area (areaScale), the same energy.
+    FfxDofPixelAperture wide = round;
+    wide.anamorphicRatio = 0.5f;  // twice as wide: half the gauge across, twice the area
+    wide.areaScale = 0.5f;
+    const FfxDofHighlight highlight = makeHighlight(glm::vec2(0.5f), 10.0f, 0.0f, glm::vec3(1.0f));
+    double sum = 0.0;
+    for (int y = -25; y <= 25; ++y)
+        for (int x = -45; x <= 45; ++x)
+            sum += ffxDofHighlightAt(highlight, glm::vec2(float(x) + 0.5f, float(y) + 0.5f) - glm::vec2(0.5f), wide).x;
+    CHECK(sum == Approx(1.0).epsilon(0.03));
+    (void)kPi;
+}
+
+TEST_CASE("What hides a highlight: a surface in front of the light where the rays to it cross, not beside it",
+          "[highlights]") {
+    // The light at radius 9.1 half-res px (18.2 full-res), at the origin.
+    const glm::vec2 light(0.0f);
+    const float lightRadius = 9.1f;
+    glm::vec2 blocker;
+    // A pixel of a farther surface, or in focus, or near: nothing it sees hides the light.
+    CHECK_FALSE(ffxDofHighlightBlockerPoint(glm::vec2(10.0f, 0.0f), light, -16.0f, lightRadius, blocker));
+    CHECK_FALSE(ffxDofHighlightBlockerPoint(glm::vec2(10.0f, 0.0f), light, 0.2f, lightRadius, blocker));
+    CHECK_FALSE(ffxDofHighlightBlockerPoint(glm::vec2(10.0f, 0.0f), light, -9.0f, lightRadius, blocker));
+    // A pixel 16 px away on a surface of radius 3 (the light pair of docs/quality.md): the rays from it to the light
+    // cross that depth 16 (1 - 3 / 9.1) px from the light, where the pinhole image shows what lies there.
+    REQUIRE(ffxDofHighlightBlockerPoint(glm::vec2(-16.0f, 0.0f), light, -3.0f, lightRadius, blocker));
+    CHECK(blocker.x == Approx(-16.0f * (1.0f - 3.0f / 9.1f)));
+    CHECK(blocker.y == Approx(0.0f).margin(1e-6));
+    // What lies there decides: the background (farther than the light) lets it through, a surface in front of it,
+    // an in-focus one or a near one does not.
+    CHECK(ffxDofHighlightVisibility(-16.0f, lightRadius) == 1.0f);
+    CHECK(ffxDofHighlightVisibility(-lightRadius, lightRadius) == 1.0f);
+    CHECK(ffxDofHighlightVisibility(-3.0f, lightRadius) == 0.0f);
+    CHECK(ffxDofHighlightVisibility(0.0f, lightRadius) == 0.0f);
+    CHECK(ffxDofHighlightVisibility(4.0f, lightRadius) == 0.0f);
+    CHECK(ffxDofHighlightVisibility(-(lightRadius - 1.0f), lightRadius) == Approx(0.5f));
+}
+
+TEST_CASE("The composite's window of tiles covers every highlight whose disc can reach its tile", "[highlights]") {
+    for (float cocLimit : {2.0f, 8.0f, 27.0f, 54.0f})
+        for (float extent : {1.0f, 1.5f}) {
+            const int range = ffxDofHighlightTileRange(cocLimit, extent);
+            // A light in a tile `range + 1` tiles away lies at least range * 16 full-res px from any pixel of the
+            // central tile; its disc reaches 2 cocLimit extent plus half its widest rim.
+            CHECK(float(range) * 2.0f * FFX_DOF_TILE_SIZE >=
+                  2.0f * cocLimit * extent + 0.5f * FFX_DOF_HIGHLIGHT_MAX_RIM_WIDTH);
+        }
+}
