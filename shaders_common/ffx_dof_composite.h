@@ -705,11 +705,11 @@ FFX_DOF_INLINE FfxDofQuadHighlights ffxDofHighlightsAtQuad(FfxUInt32x2 tile, Ffx
             FFX_DOF_LOOP
             for (FfxUInt32 slot = 0u; slot < FfxUInt32(FFX_DOF_HIGHLIGHT_SLOTS); ++slot)
             {
-                FfxUInt32x2 words2 = FfxUInt32x2(ffxDofLoadHighlightWord(word), ffxDofLoadHighlightWord(word + 1u));
+                FfxUInt32x2 slotWords = FfxUInt32x2(ffxDofLoadHighlightWord(word), ffxDofLoadHighlightWord(word + 1u));
                 word += FfxUInt32(FFX_DOF_HIGHLIGHT_WORDS);
-                if (words2.x == 0u)
+                if (slotWords.x == 0u)
                     continue;
-                FfxDofHighlight highlight = ffxDofUnpackHighlight(words2);
+                FfxDofHighlight highlight = ffxDofUnpackHighlight(slotWords);
                 FfxFloat32x2 centre = origin + highlight.position;
                 // The quad's pixels lie within 0.71 px of its centre.
                 if (length(quadCentre - centre) > ffxDofHighlightReach(highlight.radius, extent) + 0.71f)

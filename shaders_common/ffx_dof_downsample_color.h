@@ -400,8 +400,10 @@ FFX_DOF_INLINE FfxDofHighlightSums ffxDofQuadrantHighlightSums(FfxUInt32 quadran
     for (FfxUInt32 k = 0u; k < 16u; ++k)
     {
         FfxUInt32 index = first + (k >> 2u) * FfxUInt32(FFX_DOF_GROUP_SIDE) + (k & 3u);
-        sums.energyLight += ffxDofSharedHighlightEnergyLight[index];
-        sums.placeRadius += ffxDofSharedHighlightPlaceRadius[index];
+        FfxDofHighlightSums quad;
+        quad.energyLight = ffxDofSharedHighlightEnergyLight[index];
+        quad.placeRadius = ffxDofSharedHighlightPlaceRadius[index];
+        sums = ffxDofAddHighlightSums(sums, quad);
     }
     return sums;
 }
