@@ -24,8 +24,9 @@
 //      group loads once (a quad at a time: ffxDofGatherOwnSurfaceQuad), the far layer showing where it does not
 //      cover the disc (near pixels too: their far layer is the background the blur extrapolates
 //      behind them), and handing over to the layers over the last half-res px. Only the FULL_RES class
-//      gathers at full resolution (own surface and small sources); the LAYERS class's pipeline has
-//      neither gather.
+//      gathers at full resolution (own surface and small sources) and draws the far highlights pass 2 took
+//      out of the layers (ffxDofHighlightsAtQuad, ffx_dof_highlights.h), on the far layer; the LAYERS class's
+//      pipeline has none of these.
 // HDR range: the input color is multiplied by the frame's ffxDofColorRangeScale (from GLOBALS, written
 // by pass 2) as it is read, in 32-bit, so all the work happens in the range of the half-res layers;
 // a composed pixel is divided by the scale when stored (exact for the power-of-two scale unless the

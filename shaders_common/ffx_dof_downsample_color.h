@@ -9,7 +9,9 @@
 // reduces them in group-shared memory to 4 x 4, 2 x 2 and 1 x 1 (MIPs 1..3), so no global
 // synchronisation is needed. Every level uses ffxDofBilateralReduceLight, which also tells where in
 // each texel of MIPs 1..3 its light lies. MIP 0 goes to HALF_COLOR and HALF_COC; MIPs 1..3 go to
-// COARSE_MIPS, colour, radius and light offset packed in one texel (ffxDofPackCoarseTexel).
+// COARSE_MIPS, colour, radius and light offset packed in one texel (ffxDofPackCoarseTexel). Before MIP 0, far
+// pixels above white and far brighter than the tile's dimmest far pixel give that light to HIGHLIGHTS, one
+// highlight per quadrant of the tile, for the composite to draw at full resolution (ffx_dof_highlights.h).
 #ifndef FFX_DOF_DOWNSAMPLE_COLOR_H
 #define FFX_DOF_DOWNSAMPLE_COLOR_H
 

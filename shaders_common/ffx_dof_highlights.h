@@ -2,18 +2,18 @@
 // leave out and how the composite draws it (see docs/technique.md, "Far highlights").
 //
 // The half-res layers are upsampled bilinearly, so a far disc's rim spreads over one more half-res texel
-// (2 full-res px) than the disc: a bright disc kept up to a tenth of its level 1.5 px beyond its radius,
+// (2 full-res px) than the disc: a point's disc kept 0.09 to 0.16 of its level 1.5 px beyond its radius,
 // and brighter than display white it looked wider than the thin lens's, with coloured fringes
-// (docs/quality.md, point discs and far-highlights). Pass 2 therefore takes the light of a quad that is far
-// brighter than the pixels around it out of the half-res colour, down to their level, and stores it per
-// tile (HIGHLIGHTS: where it lies, its radius, its energy); the composite draws each such light as a disc of
-// the aperture's shape at full resolution, its energy over the disc's area, behind whatever lies in front
-// of it. Energy leaves the layers only where a slot holds it, so nothing is lost or drawn twice.
+// (docs/quality.md, point discs and far-highlights). Pass 2 therefore takes the light of pixels far brighter
+// than the dimmest far pixel of their tile out of the half-res colour, down to that level, and stores it per
+// tile (HIGHLIGHTS: where it lies, its radius, its spread, its energy); the composite draws each such light as a disc
+// of the aperture's shape at full resolution, its energy over the disc's area, behind whatever lies in front of it.
+// Energy leaves the layers only where a slot holds it, so nothing is lost or drawn twice.
 //
 // A tile has FFX_DOF_HIGHLIGHT_SLOTS slots, one per quadrant of 8 x 8 full-res px: a slot holds the light of
-// every quad of its quadrant that gives some, drawn as one disc about its light-weighted centre. One light
-// of a few pixels is drawn where it lies; lights a few pixels apart in one quadrant become one disc about
-// their common centre (up to 4 px off; the layers drew such lights 1 to 2 px wider than the thin lens).
+// every quad of its quadrant that gives some, drawn as one disc about its light-weighted centre with a rim as
+// wide as its light's spread. One light of a few pixels is drawn where it lies; lights a few pixels apart in
+// one quadrant become one disc about their common centre.
 #ifndef FFX_DOF_HIGHLIGHTS_H
 #define FFX_DOF_HIGHLIGHTS_H
 
@@ -26,8 +26,8 @@
 // A quad pixel gives light to the full-resolution path from this luminance on (display white, in the
 // input's units), fully from twice it: below white a soft rim costs little the eye sees.
 #define FFX_DOF_HIGHLIGHT_MIN_LUMINANCE 1.0f
-// ... and where it is at least this many times as bright as the dimmest pixel around its quad (fully from
-// twice it): the contrast of a light against what lies around it.
+// ... and where it is at least this many times as bright as its floor, the dimmest far pixel of its tile and
+// the tile's border (fully from twice it): the contrast of a light against what lies around it.
 #define FFX_DOF_HIGHLIGHT_CONTRAST 2.0f
 // ... and where its far radius (half-res px) is above this, fully from one pixel more: below it the composite
 // draws a bright pixel's light at full resolution already (ffx_dof_small_sources.h).
@@ -40,9 +40,8 @@
 // ---- Which light a quad gives --------------------------------------------------------------------
 
 // The share of its light a quad pixel of luminance `luminance` and radius `coc` gives to the full-resolution
-// path, where the dimmest of the 12 pixels around its quad has `floorLuminance` (`scale`: the colour scale of
-// the HDR range): what lies above that floor, ramped in by the three thresholds above so that a light
-// crossing one changes continuously.
+// path over a floor of `floorLuminance` (`scale`: the colour scale of the HDR range): what lies above that floor,
+// ramped in by the three thresholds above so that a light crossing one changes continuously.
 FFX_DOF_INLINE FfxFloat32 ffxDofHighlightShare(FfxFloat32 luminance, FfxFloat32 coc, FfxFloat32 floorLuminance,
                                                FfxFloat32 scale)
 {
