@@ -144,6 +144,16 @@ FFX_DOF_INLINE FfxFloat32 ffxDofCocFromDepth(FfxFloat32 depth, FfxFloat32 cocSca
     return clamp(depth * cocScale + cocBias, -cocLimit, cocLimit);
 }
 
+// ---- Tiles ------------------------------------------------------------------------------------------
+
+// The tiles within `range` tiles of `center` each way, clipped to the image: first..last inclusive.
+FFX_DOF_INLINE void ffxDofTileWindow(FfxInt32x2 center, FfxInt32 range, FfxUInt32x2 tileCount,
+                                     FFX_DOF_OUT(FfxInt32x2) first, FFX_DOF_OUT(FfxInt32x2) last)
+{
+    first = max(center - FfxInt32x2(range, range), FfxInt32x2(0, 0));
+    last = min(center + FfxInt32x2(range, range), FfxInt32x2(tileCount) - FfxInt32x2(1, 1));
+}
+
 // ---- Colour -----------------------------------------------------------------------------------------
 
 // Rec. 709 luminance: the brightness that weighs a quad pixel's radius in the bilateral reduction

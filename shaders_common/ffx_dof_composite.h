@@ -660,9 +660,8 @@ FFX_DOF_INLINE FfxBoolean ffxDofTileHoldsHighlights(FfxUInt32x2 tile, FfxUInt32x
 FFX_DOF_INLINE void ffxDofHighlightWindow(FfxUInt32x2 tile, FfxDofConstants constants, FFX_DOF_OUT(FfxInt32x2) first,
                                           FFX_DOF_OUT(FfxInt32x2) last)
 {
-    FfxInt32 range = ffxDofHighlightTileRange(constants.cocLimit, ffxDofApertureExtent(constants));
-    first = max(FfxInt32x2(tile) - FfxInt32x2(range, range), FfxInt32x2(0, 0));
-    last = min(FfxInt32x2(tile) + FfxInt32x2(range, range), FfxInt32x2(constants.tileCount) - FfxInt32x2(1, 1));
+    ffxDofTileWindow(FfxInt32x2(tile), ffxDofHighlightTileRange(constants.cocLimit, ffxDofApertureExtent(constants)),
+                     constants.tileCount, first, last);
 }
 
 // What the highlights of the tiles in the window add to the far layers of a quad's four pixels (0: top-left

@@ -72,14 +72,6 @@ FFX_DOF_INLINE FfxFloat32 ffxDofKernelFootprintRadius(FfxFloat32 kernelRadius, F
     return kernelRadius + FFX_DOF_DILATE_MARGIN + FFX_DOF_FOOTPRINT_SPACINGS * max(kernelRadius / rings, 1.0f);
 }
 
-// The tiles within `range` tiles of `center` each way, clipped to the image: first..last inclusive.
-FFX_DOF_INLINE void ffxDofTileWindow(FfxInt32x2 center, FfxInt32 range, FfxUInt32x2 tileCount,
-                                     FFX_DOF_OUT(FfxInt32x2) first, FFX_DOF_OUT(FfxInt32x2) last)
-{
-    first = max(center - FfxInt32x2(range, range), FfxInt32x2(0, 0));
-    last = min(center + FfxInt32x2(range, range), FfxInt32x2(tileCount) - FfxInt32x2(1, 1));
-}
-
 // The dilated (far, near) range of `centerTile` given the radius every tile spreads.
 // `extent` (ffxDofApertureExtent): how far a disc reaches over its radius. `reachedByHighlights`: whether the
 // far discs of a tile that may hold highlights (ffxDofTileMayHoldHighlights) reach it.

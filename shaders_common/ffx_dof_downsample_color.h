@@ -529,8 +529,8 @@ FFX_DOF_INLINE void ffxDofDownsampleColor(FfxUInt32x2 groupId, FfxUInt32 localIn
     FfxFloat32 coc2 = ffxDofLightRimCocInQuad(around, 2u);
     FfxFloat32 coc3 = ffxDofLightRimCocInQuad(around, 3u);
 
-    // Far highlights: the light of a quad far brighter than the pixels around it leaves the half-res colour
-    // for the composite's full-resolution discs (ffx_dof_highlights.h), one per quadrant of the tile.
+    // Far highlights: the light of pixels far brighter than the tile's floor leaves the half-res colour for the
+    // composite's full-resolution discs (ffx_dof_highlights.h), one per quadrant of the tile.
     // The floor: the dimmest far pixel of the tile and its border (the waves' minima above), so that every pixel
     // of a light within it gives its light (a light split between both paths drew its rest from the layers 1.05
     // to 1.10 times too bright, docs/technique.md).

@@ -205,21 +205,25 @@ FFX_DOF_INLINE FfxBoolean ffxDofTileMayHoldHighlights(FfxFloat32x3 rangeAndPeak)
 // are not drawn).
 #define FFX_DOF_HIGHLIGHT_WINDOW_WORDS 32
 #define FFX_DOF_HIGHLIGHT_MAX_TILE_RANGE 15
-
-// Tiles each way within which a highlight's disc may reach a pixel of the central tile: the largest radius
-// (cocLimit, half-res px) stretched by the aperture (`extent`, ffxDofApertureExtent), and half its widest rim.
-FFX_DOF_INLINE FfxInt32 ffxDofHighlightTileRange(FfxFloat32 cocLimit, FfxFloat32 extent)
-{
-    return min(
-        FfxInt32(ceil((cocLimit * extent + 0.25f * FFX_DOF_HIGHLIGHT_MAX_RIM_WIDTH) / FfxFloat32(FFX_DOF_TILE_SIZE))),
-        FfxInt32(FFX_DOF_HIGHLIGHT_MAX_TILE_RANGE));
-}
+#if (2 * FFX_DOF_HIGHLIGHT_MAX_TILE_RANGE + 1) * (2 * FFX_DOF_HIGHLIGHT_MAX_TILE_RANGE + 1) > \
+    32 * FFX_DOF_HIGHLIGHT_WINDOW_WORDS
+#error "the composite's window of highlight tiles must fit its bit mask"
+#endif
 
 // How far from a pixel a highlight of |radius| `radius` (half-res px) may add to it (full-res px): its disc
 // stretched by the aperture and half its widest rim.
 FFX_DOF_INLINE FfxFloat32 ffxDofHighlightReach(FfxFloat32 radius, FfxFloat32 extent)
 {
     return 2.0f * radius * extent + 0.5f * FFX_DOF_HIGHLIGHT_MAX_RIM_WIDTH;
+}
+
+// Tiles each way within which a highlight's disc may reach a pixel of the central tile (tiles of 2
+// FFX_DOF_TILE_SIZE full-res px), for the largest radius (cocLimit, half-res px) and the aperture's `extent`
+// (ffxDofApertureExtent); at most FFX_DOF_HIGHLIGHT_MAX_TILE_RANGE.
+FFX_DOF_INLINE FfxInt32 ffxDofHighlightTileRange(FfxFloat32 cocLimit, FfxFloat32 extent)
+{
+    return min(FfxInt32(ceil(ffxDofHighlightReach(cocLimit, extent) / (2.0f * FfxFloat32(FFX_DOF_TILE_SIZE)))),
+               FfxInt32(FFX_DOF_HIGHLIGHT_MAX_TILE_RANGE));
 }
 
 // What a highlight adds to a pixel whose centre lies at `offset` from it (full-res px, pixel minus light): its

@@ -8,8 +8,6 @@
 #include <random>
 
 namespace {
-constexpr float kPi = 3.14159265358979f;
-
 FfxDofHighlight makeHighlight(glm::vec2 position, float radius, float spread, glm::vec3 energy) {
     FfxDofHighlight highlight;
     highlight.position = position;
@@ -147,7 +145,6 @@ TEST_CASE("A highlight's disc on the pixel grid holds its energy and ends at its
         for (int x = -45; x <= 45; ++x)
             sum += ffxDofHighlightAt(highlight, glm::vec2(float(x) + 0.5f, float(y) + 0.5f) - glm::vec2(0.5f), wide).x;
     CHECK(sum == Approx(1.0).epsilon(0.03));
-    (void)kPi;
 }
 
 TEST_CASE("What hides a highlight: a surface in front of the light where the rays to it cross, not beside it",
