@@ -196,9 +196,11 @@ FFX_DOF_GROUPSHARED FfxDofFloat3 ffxDofSharedNear[FFX_DOF_FILTERED_SIDE * FFX_DO
 FFX_DOF_GROUPSHARED FfxDofFloat3 ffxDofSharedFar[FFX_DOF_FILTERED_SIDE * FFX_DOF_FILTERED_SIDE];
 FFX_DOF_GROUPSHARED FfxFloat32x2 ffxDofSharedAlpha[FFX_DOF_FILTERED_SIDE * FFX_DOF_FILTERED_SIDE];
 FFX_DOF_GROUPSHARED FfxFloat32 ffxDofSharedCoc[FFX_DOF_FILTERED_SIDE * FFX_DOF_FILTERED_SIDE];
-// Whether each of the 9 tiles around the group's may hold bright small sources (ffxDofSurveyTilesAround
-// with one load per invocation instead of nine per invocation).
-FFX_DOF_GROUPSHARED FfxUInt32 ffxDofSharedSmallSourceTiles[9];
+// Per tile of the 9 around the group's (ffxDofTileAround): its highlights' floor (a float's bits, 0 for a floor
+// at or below 0, which gives the same shares) and, in bit 31, whether it may hold bright small sources
+// (ffxDofSurveyTilesAround with one load per invocation instead of nine per invocation).
+FFX_DOF_GROUPSHARED FfxUInt32 ffxDofSharedTilesAround[9];
+#define FFX_DOF_TILE_AROUND_SMALL_SOURCES_BIT 0x80000000u
 // Which tiles of the highlights' window hold one (ffxDofTileHoldsHighlights), a bit each in window order, and
 // whether any does.
 FFX_DOF_GROUPSHARED FfxUInt32 ffxDofSharedHighlightTiles[FFX_DOF_HIGHLIGHT_WINDOW_WORDS];
@@ -324,8 +326,16 @@ FFX_DOF_INLINE FfxFloat32x4 ffxDofCompositeInput(FfxUInt32x2 pixel, FfxUInt32x2 
     FfxDofFloat3 color = ffxDofLoadHalfColor(FfxInt32x2(pixel / 2u));
     return FfxFloat32x4(FfxFloat32(color.x), FfxFloat32(color.y), FfxFloat32(color.z), 1.0f);
 }
+// Whether ffxDofCompositeInput reads the input itself (not MIP 0 of the half-res colour, from which pass 2 took
+// the highlights already).
+FFX_DOF_INLINE FfxBoolean ffxDofCompositeInputIsFullRes(FfxUInt32x2 pixel, FfxUInt32x2 ownPixel)
+{
+    FfxUInt32 extent = FfxUInt32(FFX_DOF_COMPOSITE_GROUP_EXTENT);
+    return pixel / extent == ownPixel / extent;
+}
 #else
 #define ffxDofCompositeInput(pixel, ownPixel, scale) ffxDofScaleColor(ffxDofLoadInputColor(pixel), scale)
+#define ffxDofCompositeInputIsFullRes(pixel, ownPixel) true
 #endif
 
 // The input colors of the 4 x 4 full-res pixels around an invocation's 2 x 2 quad (row by row,
@@ -750,7 +760,7 @@ struct FfxDofUpsampleTaps
 // (ffxDofTileGathersOwnSurface, ffxDofTileMayHoldBrightSmallSources); `ownGather` and `smallSources`: the
 // pixel's gathers (ffxDofGatherOwnSurfaceQuad, ffxDofGatherSmallSourcesQuad), used where
 // ffxDofPixelGathersOwnSurface and ffxDofPixelGathersSmallSources say; `highlights` what the far highlights
-// add to its far layer (ffxDofHighlightsAtQuad). Returns false (and leaves `color` alone) when the pixel keeps
+// add to it (ffxDofHighlightsAtQuad). Returns false (and leaves `color` alone) when the pixel keeps
 // its input value.
 FFX_DOF_INLINE FfxBoolean ffxDofComposePixel(FfxDofUpsampleTaps taps, FfxFloat32x2 fraction, FfxFloat32 coc,
                                              FfxFloat32x3 fixedBlur, FfxBoolean ownSurfaceTile, FfxFloat32x4 ownGather,
@@ -826,9 +836,14 @@ FFX_DOF_INLINE FfxBoolean ffxDofComposePixel(FfxDofUpsampleTaps taps, FfxFloat32
         if (ffxDofPixelGathersSmallSources(smallSourceTile, coc))
             farColor =
                 ffxDofLerp(farColor, FfxFloat32x3(smallSources.x, smallSources.y, smallSources.z), smallSources.w);
-        // Far highlights the layers left out (ffxDofHighlightsAtQuad), on top of what lies behind them.
-        farColor += highlights;
+        // Far highlights the layers left out (ffxDofHighlightsAtQuad), on top of what lies behind them: in full
+        // over a far pixel, whose own-surface gather left them out too (ffxDofPixelHighlightShare); over a near
+        // pixel, in the far layer its own blur and near layer cover.
+        if (ownNear)
+            farColor += highlights;
         result = ffxDofLerp(result, farColor, ownNear ? farValidity : farShare);
+        if (!ownNear)
+            result += highlights * farValidity;
     }
     result = ffxDofLerp(result, nearColor, ffxDofNearLayerWeight(nearOpacity));
     if (ownNear)
@@ -881,10 +896,15 @@ FFX_DOF_INLINE void ffxDofComposite(FfxUInt32 compositeClass, FfxUInt32 listInde
     if (localIndex < FfxUInt32(FFX_DOF_HIGHLIGHT_WINDOW_WORDS))
         ffxDofSharedHighlightTiles[localIndex] = 0u;
     if (fullResTile && localIndex < 9u)
-        ffxDofSharedSmallSourceTiles[localIndex] = ffxDofTileMayHoldBrightSmallSources(ffxDofLoadTileRangeAndPeak(
-                                                       ffxDofTileAround(groupId, localIndex, constants.tileCount)))
-                                                       ? 1u
-                                                       : 0u;
+    {
+        FfxUInt32x2 around = ffxDofTileAround(groupId, localIndex, constants.tileCount);
+        FfxFloat32 tileFloor =
+            ffxDofAsFloat(ffxDofLoadHighlightWord(ffxDofHighlightFloorWord(around, constants.tileCount)));
+        ffxDofSharedTilesAround[localIndex] = (tileFloor > 0.0f ? ffxDofAsUInt(tileFloor) : 0u) |
+                                              (ffxDofTileMayHoldBrightSmallSources(ffxDofLoadTileRangeAndPeak(around))
+                                                   ? FFX_DOF_TILE_AROUND_SMALL_SOURCES_BIT
+                                                   : 0u);
+    }
     FfxInt32x2 tileOrigin = FfxInt32x2(groupId * FfxUInt32(FFX_DOF_TILE_SIZE));
     for (FfxUInt32 index = localIndex; index < FfxUInt32(FFX_DOF_RAW_SIDE * FFX_DOF_RAW_SIDE);
          index += FfxUInt32(FFX_DOF_GROUP_THREADS))
@@ -910,9 +930,9 @@ FFX_DOF_INLINE void ffxDofComposite(FfxUInt32 compositeClass, FfxUInt32 listInde
     {
         FFX_DOF_UNROLL
         for (FfxUInt32 k = 0u; k < 9u; ++k)
-            smallSourceTiles |= ffxDofSharedSmallSourceTiles[k];
+            smallSourceTiles |= ffxDofSharedTilesAround[k];
     }
-    FfxBoolean smallSourceTile = smallSourceTiles != 0u;
+    FfxBoolean smallSourceTile = (smallSourceTiles & FFX_DOF_TILE_AROUND_SMALL_SOURCES_BIT) != 0u;
     // Which tiles in the highlights' window hold one, a tile an invocation (known after the next barrier).
     if (fullResTile)
     {
@@ -944,9 +964,19 @@ FFX_DOF_INLINE void ffxDofComposite(FfxUInt32 compositeClass, FfxUInt32 listInde
                                                     FfxInt32(index / FfxUInt32(FFX_DOF_OWN_SURFACE_SIDE))),
                       FfxInt32x2(0, 0), FfxInt32x2(constants.fullSize) - FfxInt32x2(1, 1));
             FfxFloat32x4 inputColor = ffxDofCompositeInput(FfxUInt32x2(pixel), quad, scale);
-            ffxDofStoreOwnSample(index, FfxFloat32x3(inputColor.x, inputColor.y, inputColor.z),
-                                 2.0f * ffxDofCocFromDepth(ffxDofLoadInputDepth(FfxUInt32x2(pixel)), constants.cocScale,
-                                                           constants.cocBias, constants.cocLimit));
+            FfxFloat32x3 sampleColor = FfxFloat32x3(inputColor.x, inputColor.y, inputColor.z);
+            FfxFloat32 sampleCoc = ffxDofCocFromDepth(ffxDofLoadInputDepth(FfxUInt32x2(pixel)), constants.cocScale,
+                                                      constants.cocBias, constants.cocLimit);
+            // The gathers draw what pass 2 left of the pixel's light; the highlights draw the rest.
+            if (ffxDofCompositeInputIsFullRes(FfxUInt32x2(pixel), quad))
+            {
+                FfxInt32x2 tileAround = pixel / FfxInt32(extent) - FfxInt32x2(groupId) + FfxInt32x2(1, 1);
+                FfxFloat32 tileFloor = ffxDofAsFloat(ffxDofSharedTilesAround[tileAround.y * 3 + tileAround.x] &
+                                                     ~FFX_DOF_TILE_AROUND_SMALL_SOURCES_BIT);
+                sampleColor *= 1.0f - ffxDofPixelHighlightShare(FfxUInt32x2(pixel), sampleColor, sampleCoc, tileFloor,
+                                                                scale, constants.fullSize);
+            }
+            ffxDofStoreOwnSample(index, sampleColor, 2.0f * sampleCoc);
         }
     }
     FfxInt32x2 filteredOrigin = tileOrigin - FfxInt32x2(1, 1);

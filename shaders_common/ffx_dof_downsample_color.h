@@ -619,6 +619,9 @@ FFX_DOF_INLINE void ffxDofDownsampleColor(FfxUInt32x2 groupId, FfxUInt32 localIn
         ffxDofStoreHighlightWord(word, packed.x);
         ffxDofStoreHighlightWord(word + 1u, packed.y);
     }
+    // The floor, from which the composite knows what the tile's pixels gave (ffxDofPixelHighlightShare).
+    if (localIndex == FfxUInt32(FFX_DOF_HIGHLIGHT_SLOTS))
+        ffxDofStoreHighlightWord(ffxDofHighlightFloorWord(groupId, constants.tileCount), ffxDofAsUInt(tileFloor));
 }
 
 #endif  // FFX_DOF_DOWNSAMPLE_COLOR_H

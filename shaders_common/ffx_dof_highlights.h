@@ -29,9 +29,16 @@
 // ... and where it is at least this many times as bright as its floor, the dimmest far pixel of its tile and
 // the tile's border (fully from twice it): the contrast of a light against what lies around it.
 #define FFX_DOF_HIGHLIGHT_CONTRAST 2.0f
-// ... and where its far radius (half-res px) is above this, fully from one pixel more: below it the composite
-// draws a bright pixel's light at full resolution already (ffx_dof_small_sources.h).
-#define FFX_DOF_HIGHLIGHT_MIN_RADIUS FFX_DOF_FAR_LAYER_ONLY_RADIUS
+// ... and where its far radius (half-res px) is above FFX_DOF_HIGHLIGHT_MIN_RADIUS, fully from
+// FFX_DOF_HIGHLIGHT_FULL_RADIUS. Below that the composite draws a pixel's light at full resolution alone (its
+// own-surface and small-source gathers, ffx_dof_small_sources.h), so the two full-resolution paths may share
+// a light there; from it on the half-res layers take part of what those gathers leave (ffxDofOwnGatherShare
+// falls from 1 at 2 to 0 at FFX_DOF_FAR_LAYER_ONLY_RADIUS), and so the highlights take all of a bright
+// pixel's light above its floor from there. Ramped in from 3 to 4 instead, a point at 2.25 and 3 half-res px
+// drew a quarter and all of its light through the layers, whose bilinear upsample left a glow of 0.04 and
+// 0.12 of the disc's level beyond its rim (docs/quality.md, point discs).
+#define FFX_DOF_HIGHLIGHT_MIN_RADIUS 1.5f
+#define FFX_DOF_HIGHLIGHT_FULL_RADIUS 2.0f
 #define FFX_DOF_SQRT2 1.41421356f
 // The widest rim a highlight's disc is drawn with (full-res px): half of it reaches beyond the radius, within the
 // margins of dilate (FFX_DOF_DILATE_MARGIN) and of the composite's window (ffxDofHighlightTileRange).
@@ -50,8 +57,23 @@ FFX_DOF_INLINE FfxFloat32 ffxDofHighlightShare(FfxFloat32 luminance, FfxFloat32 
     FfxFloat32 white = FFX_DOF_HIGHLIGHT_MIN_LUMINANCE * scale;
     FfxFloat32 bright = ffxDofSaturate(luminance / white - 1.0f);
     FfxFloat32 contrast = ffxDofSaturate(luminance / max(FFX_DOF_HIGHLIGHT_CONTRAST * floorLuminance, 1e-30f) - 1.0f);
-    FfxFloat32 far = ffxDofSaturate(-coc - FFX_DOF_HIGHLIGHT_MIN_RADIUS);
+    FfxFloat32 far = ffxDofSaturate((-coc - FFX_DOF_HIGHLIGHT_MIN_RADIUS) *
+                                    (1.0f / (FFX_DOF_HIGHLIGHT_FULL_RADIUS - FFX_DOF_HIGHLIGHT_MIN_RADIUS)));
     return bright * contrast * far * ffxDofSaturate(1.0f - floorLuminance / luminance);
+}
+
+// ffxDofHighlightShare of full-res pixel `pixel` of scaled colour `color` and radius `coc` (half-res px) in a
+// tile of floor `floorLuminance`, as pass 2 takes it (but for the radius: pass 2 gives a light's anti-aliased
+// rim pixels the light's radius, ffxDofLightRimCocInQuad, which needs their neighbours; the two differ only
+// where one of the radii lies below FFX_DOF_HIGHLIGHT_FULL_RADIUS): none where the image's edge cuts the
+// pixel's quad (its edge pixels repeated stay in the layers). What the composite's full-resolution gathers
+// leave of a pixel's light, the rest being drawn as a highlight.
+FFX_DOF_INLINE FfxFloat32 ffxDofPixelHighlightShare(FfxUInt32x2 pixel, FfxFloat32x3 color, FfxFloat32 coc,
+                                                    FfxFloat32 floorLuminance, FfxFloat32 scale, FfxUInt32x2 fullSize)
+{
+    if ((pixel.x | 1u) >= fullSize.x || (pixel.y | 1u) >= fullSize.y)
+        return 0.0f;
+    return ffxDofHighlightShare(ffxDofLuminance32(color), coc, floorLuminance, scale);
 }
 
 // A light of the full-resolution path: where it lies (full-res px from its tile's top-left corner), its far
@@ -186,8 +208,16 @@ FFX_DOF_INLINE FfxDofHighlight ffxDofUnpackHighlight(FfxUInt32x2 words)
 // The first word of slot `slot` of `tile` in HIGHLIGHTS.
 FFX_DOF_INLINE FfxUInt32 ffxDofHighlightWord(FfxUInt32x2 tile, FfxUInt32 slot, FfxUInt32x2 tileCount)
 {
-    return ((tile.y * tileCount.x + tile.x) * FfxUInt32(FFX_DOF_HIGHLIGHT_SLOTS) + slot) *
-           FfxUInt32(FFX_DOF_HIGHLIGHT_WORDS);
+    return (tile.y * tileCount.x + tile.x) * FfxUInt32(FFX_DOF_HIGHLIGHT_TILE_WORDS) +
+           slot * FfxUInt32(FFX_DOF_HIGHLIGHT_WORDS);
+}
+
+// The word of `tile`'s floor in HIGHLIGHTS (the float's bits; FFX_DOF_FLOAT32_MAX where the tile and its border
+// hold no far pixel).
+FFX_DOF_INLINE FfxUInt32 ffxDofHighlightFloorWord(FfxUInt32x2 tile, FfxUInt32x2 tileCount)
+{
+    return (tile.y * tileCount.x + tile.x) * FfxUInt32(FFX_DOF_HIGHLIGHT_TILE_WORDS) +
+           FfxUInt32(FFX_DOF_HIGHLIGHT_FLOOR_WORD);
 }
 
 // ---- Where they are drawn ---------------------------------------------------------------------------

@@ -51,12 +51,14 @@
 //                  each list (x | y << 16), in no order; lists 2a and 2a + 1 share array a, one from each
 //                  end (ffxDofTileListWord). The blur's or composite's workgroup i of a list works on the
 //                  list's tile i.
-//   HIGHLIGHTS     storage buffer, tiles x FFX_DOF_HIGHLIGHT_SLOTS x FFX_DOF_HIGHLIGHT_WORDS uint words: per
-//                  tile the far highlights pass 2 took out of the half-res colour, for the composite to draw
-//                  at full resolution (ffx_dof_highlights.h); a slot of zeros is empty. Pass 2 writes every
-//                  slot of every tile each dispatch, so it needs no initial value. Slot s of tile (x, y)
-//                  starts at word ((y * tileCount.x + x) * FFX_DOF_HIGHLIGHT_SLOTS + s) *
-//                  FFX_DOF_HIGHLIGHT_WORDS.
+//   HIGHLIGHTS     storage buffer, tiles x FFX_DOF_HIGHLIGHT_TILE_WORDS uint words: per tile the far
+//                  highlights pass 2 took out of the half-res colour, for the composite to draw at full
+//                  resolution (ffx_dof_highlights.h), FFX_DOF_HIGHLIGHT_SLOTS slots of FFX_DOF_HIGHLIGHT_WORDS
+//                  words (a slot of zeros is empty), then the tile's floor (a float's bits), from which the
+//                  composite knows what pass 2 took of each pixel. Pass 2 writes every word of every tile
+//                  each dispatch, so it needs no initial value. Tile (x, y) starts at word
+//                  (y * tileCount.x + x) * FFX_DOF_HIGHLIGHT_TILE_WORDS; slot s at s * FFX_DOF_HIGHLIGHT_WORDS
+//                  from there, the floor at FFX_DOF_HIGHLIGHT_FLOOR_WORD.
 #ifndef FFX_DOF_RESOURCES_H
 #define FFX_DOF_RESOURCES_H
 
@@ -106,9 +108,12 @@
 #define FFX_DOF_GLOBALS_FOCUS_COC_BIAS 5
 #define FFX_DOF_GLOBALS_WORD_COUNT 8
 
-// HIGHLIGHTS: highlights kept per tile, and uint words per highlight.
+// HIGHLIGHTS: highlights kept per tile, uint words per highlight, the word of the tile's floor after its slots
+// and uint words per tile.
 #define FFX_DOF_HIGHLIGHT_SLOTS 4
 #define FFX_DOF_HIGHLIGHT_WORDS 2
+#define FFX_DOF_HIGHLIGHT_FLOOR_WORD (FFX_DOF_HIGHLIGHT_SLOTS * FFX_DOF_HIGHLIGHT_WORDS)
+#define FFX_DOF_HIGHLIGHT_TILE_WORDS (FFX_DOF_HIGHLIGHT_FLOOR_WORD + 1)
 
 // The tile lists (TILE_LIST_ARGS, TILE_LISTS): which work a tile needs in the blur and in the composite,
 // decided by dilate (ffx_dof_tile_classes.h), so that each workgroup of those passes runs a pipeline

@@ -77,9 +77,9 @@ constexpr uint32_t tileListsWordCount(uint32_t tileCountX, uint32_t tileCountY) 
     return FFX_DOF_TILE_LIST_ARRAYS * tileCountX * tileCountY;
 }
 // HIGHLIGHTS (FFX_DOF_UAV_BUFFER_HIGHLIGHTS): FFX_DOF_HIGHLIGHT_SLOTS highlights of FFX_DOF_HIGHLIGHT_WORDS
-// words per tile.
+// words and the floor per tile.
 constexpr uint32_t highlightsWordCount(uint32_t tileCountX, uint32_t tileCountY) {
-    return tileCountX * tileCountY * FFX_DOF_HIGHLIGHT_SLOTS * FFX_DOF_HIGHLIGHT_WORDS;
+    return tileCountX * tileCountY * FFX_DOF_HIGHLIGHT_TILE_WORDS;
 }
 
 // Levels of an image of this size: the spec's, clamped to the full chain of a small image (a 4x3

@@ -53,30 +53,13 @@ TEST_CASE("point discs: the rim within 1 px of a circle at 64 angles, ring mergi
     }
 }
 
-// Where far highlights are drawn at full resolution (ffx_dof_highlights.h): from a radius of
-// FFX_DOF_HIGHLIGHT_MIN_RADIUS + 1 half-res px (8 full-res px) on. Until 2026-11-30 every radius from 6 px on
-// measured 0.08 to 0.16 of the disc's level there: the far layer is half-res and upsampled bilinearly, so its rim
-// spread over one more half-res texel (2 full-res px) beyond the disc.
-constexpr double kFullResHighlightRadius = 8.0;
-
-TEST_CASE("point discs: no glow beyond the radius + 1.5 px above 2% of the disc's level, from radius 8 px",
-          "[quality][vulkan][discs]") {
+// Until 2026-11-30 every radius from 6 px on measured 0.08 to 0.16 of the disc's level there: the far layer is
+// half-res and upsampled bilinearly, so its rim spread over one more half-res texel (2 full-res px) beyond the
+// disc. Far highlights drawn at full resolution (ffx_dof_highlights.h) took it to 0 from 8 px on, and since they
+// start where the layers would draw part of a pixel's own light (FFX_DOF_HIGHLIGHT_FULL_RADIUS), at 4.5 and 6 px
+// too (0.036 and 0.115 until then).
+TEST_CASE("point discs: no glow beyond the radius + 1.5 px above 2% of the disc's level", "[quality][vulkan][discs]") {
     for (const quality::PointDiscCase& c : allDiscCases()) {
-        if (c.radius < kFullResHighlightRadius) continue;
-        INFO(c.describe());
-        CHECK(c.glowOk());
-    }
-}
-
-TEST_CASE(
-    "point discs: no glow beyond the radius + 1.5 px above 2% of the disc's level, radii 4 to 7 px - known "
-    "failure",
-    "[quality][vulkan][discs][!shouldfail]") {
-    // 0.036 at 4.5 px and 0.115 at 6 px (2.25 and 3 half-res px): there the composite draws a light above white at
-    // full resolution only in part (ffxDofSmallSourceShare, falling from 1 to 0 between 2 and 3 half-res px) and
-    // the half-res layers draw the rest; radii up to 3 px are gathered at full resolution and pass.
-    for (const quality::PointDiscCase& c : allDiscCases()) {
-        if (c.radius >= kFullResHighlightRadius || c.radius <= 3.0) continue;
         INFO(c.describe());
         CHECK(c.glowOk());
     }

@@ -61,7 +61,7 @@ TEST_CASE("A packed highlight keeps its place, radius, spread and energy within 
 
 TEST_CASE("A pixel gives light above its floor, only where it is bright, far brighter than the floor and far enough",
           "[highlights]") {
-    const float scale = 1.0f, floor = 0.05f, far = -(FFX_DOF_HIGHLIGHT_MIN_RADIUS + 1.0f);
+    const float scale = 1.0f, floor = 0.05f, far = -FFX_DOF_HIGHLIGHT_FULL_RADIUS;
     // Fully past every threshold: what lies above the floor.
     CHECK(ffxDofHighlightShare(50.0f, far, floor, scale) == Approx(1.0f - floor / 50.0f));
     // Not above white, not brighter than the floor by the contrast, not beyond the radius: nothing.
@@ -80,6 +80,35 @@ TEST_CASE("A pixel gives light above its floor, only where it is bright, far bri
         REQUIRE(share - previous <= 0.02f);
         previous = share;
     }
+    previous = 0.0f;
+    for (float radius = 0.0f; radius < 4.0f; radius += 0.01f) {
+        const float share = ffxDofHighlightShare(50.0f, -radius, floor, scale);
+        REQUIRE(share >= previous - 1e-6f);
+        REQUIRE(share - previous <= 0.03f);
+        previous = share;
+    }
+}
+
+TEST_CASE("The highlights take all of a bright far pixel's light above its floor where the layers would draw any",
+          "[highlights]") {
+    // From FFX_DOF_HIGHLIGHT_FULL_RADIUS on the half-res layers take part of a pixel's own light (the rest is
+    // gathered at full resolution): a bright point on black must leave them entirely there.
+    CHECK(ffxDofOwnGatherShare(-FFX_DOF_HIGHLIGHT_FULL_RADIUS) == Approx(1.0f));
+    CHECK(ffxDofOwnGatherShare(-(FFX_DOF_HIGHLIGHT_FULL_RADIUS + 0.25f)) < 1.0f);
+    CHECK(ffxDofHighlightShare(50.0f, -FFX_DOF_HIGHLIGHT_FULL_RADIUS, 0.0f, 1.0f) == Approx(1.0f));
+    CHECK(ffxDofHighlightShare(50.0f, -FFX_DOF_HIGHLIGHT_MIN_RADIUS, 0.0f, 1.0f) == 0.0f);
+}
+
+TEST_CASE("The composite knows what pass 2 took of a pixel, but for a quad the image's edge cuts", "[highlights]") {
+    const glm::uvec2 size(33u, 20u);
+    const glm::vec3 light(40.0f, 60.0f, 20.0f);
+    const float coc = -2.5f, floor = 0.1f, scale = 0.5f;
+    const float taken = ffxDofHighlightShare(ffxDofLuminance32(light), coc, floor, scale);
+    REQUIRE(taken > 0.5f);
+    CHECK(ffxDofPixelHighlightShare(glm::uvec2(31u, 19u), light, coc, floor, scale, size) == taken);
+    // Column 32 is the last, alone in its quad; rows 18 and 19 make the last quad row.
+    CHECK(ffxDofPixelHighlightShare(glm::uvec2(32u, 4u), light, coc, floor, scale, size) == 0.0f);
+    CHECK(ffxDofPixelHighlightShare(glm::uvec2(10u, 19u), light, coc, floor, scale, size) == taken);
 }
 
 TEST_CASE("Highlight sums give the light-weighted place, radius and spread of what they gather", "[highlights]") {
