@@ -197,8 +197,9 @@ FFX_DOF_GROUPSHARED FfxDofFloat3 ffxDofSharedFar[FFX_DOF_FILTERED_SIDE * FFX_DOF
 FFX_DOF_GROUPSHARED FfxFloat32x2 ffxDofSharedAlpha[FFX_DOF_FILTERED_SIDE * FFX_DOF_FILTERED_SIDE];
 FFX_DOF_GROUPSHARED FfxFloat32 ffxDofSharedCoc[FFX_DOF_FILTERED_SIDE * FFX_DOF_FILTERED_SIDE];
 // Per tile of the 9 around the group's (ffxDofTileAround): its highlights' floor (a float's bits, 0 for a floor
-// at or below 0, which gives the same shares) and, in bit 31, whether it may hold bright small sources
-// (ffxDofSurveyTilesAround with one load per invocation instead of nine per invocation).
+// at or below 0, which gives the same shares; FFX_DOF_FLOAT32_MAX, over which nothing gives light, for a tile
+// that cannot hold highlights: ffxDofTileMayHoldHighlights) and, in bit 31, whether it may hold bright small
+// sources (ffxDofSurveyTilesAround with one load per invocation instead of nine per invocation).
 FFX_DOF_GROUPSHARED FfxUInt32 ffxDofSharedTilesAround[9];
 #define FFX_DOF_TILE_AROUND_SMALL_SOURCES_BIT 0x80000000u
 // Which tiles of the highlights' window hold one (ffxDofTileHoldsHighlights), a bit each in window order, and
@@ -898,12 +899,14 @@ FFX_DOF_INLINE void ffxDofComposite(FfxUInt32 compositeClass, FfxUInt32 listInde
     if (fullResTile && localIndex < 9u)
     {
         FfxUInt32x2 around = ffxDofTileAround(groupId, localIndex, constants.tileCount);
+        FfxFloat32x3 rangeAndPeak = ffxDofLoadTileRangeAndPeak(around);
         FfxFloat32 tileFloor =
-            ffxDofAsFloat(ffxDofLoadHighlightWord(ffxDofHighlightFloorWord(around, constants.tileCount)));
-        ffxDofSharedTilesAround[localIndex] = (tileFloor > 0.0f ? ffxDofAsUInt(tileFloor) : 0u) |
-                                              (ffxDofTileMayHoldBrightSmallSources(ffxDofLoadTileRangeAndPeak(around))
-                                                   ? FFX_DOF_TILE_AROUND_SMALL_SOURCES_BIT
-                                                   : 0u);
+            ffxDofTileMayHoldHighlights(rangeAndPeak)
+                ? ffxDofAsFloat(ffxDofLoadHighlightWord(ffxDofHighlightFloorWord(around, constants.tileCount)))
+                : FFX_DOF_FLOAT32_MAX;
+        ffxDofSharedTilesAround[localIndex] =
+            (tileFloor > 0.0f ? ffxDofAsUInt(tileFloor) : 0u) |
+            (ffxDofTileMayHoldBrightSmallSources(rangeAndPeak) ? FFX_DOF_TILE_AROUND_SMALL_SOURCES_BIT : 0u);
     }
     FfxInt32x2 tileOrigin = FfxInt32x2(groupId * FfxUInt32(FFX_DOF_TILE_SIZE));
     for (FfxUInt32 index = localIndex; index < FfxUInt32(FFX_DOF_RAW_SIDE * FFX_DOF_RAW_SIDE);
@@ -926,11 +929,19 @@ FFX_DOF_INLINE void ffxDofComposite(FfxUInt32 compositeClass, FfxUInt32 listInde
     // input of the group's own tile is read from group-shared memory (ffxDofCompositeInput).
     FfxBoolean ownSurfaceTile = fullResTile && ffxDofTileGathersOwnSurface(tile);
     FfxUInt32 smallSourceTiles = 0u;
+    // Whether a pixel of the full-res neighbourhood may have given light to the highlights (the same for the
+    // whole group: its pixels skip the share where none does).
+    FfxBoolean highlightsAround = false;
     if (fullResTile)
     {
         FFX_DOF_UNROLL
         for (FfxUInt32 k = 0u; k < 9u; ++k)
-            smallSourceTiles |= ffxDofSharedTilesAround[k];
+        {
+            FfxUInt32 tileAround = ffxDofSharedTilesAround[k];
+            smallSourceTiles |= tileAround;
+            highlightsAround = highlightsAround || (tileAround & ~FFX_DOF_TILE_AROUND_SMALL_SOURCES_BIT) !=
+                                                       ffxDofAsUInt(FFX_DOF_FLOAT32_MAX);
+        }
     }
     FfxBoolean smallSourceTile = (smallSourceTiles & FFX_DOF_TILE_AROUND_SMALL_SOURCES_BIT) != 0u;
     // Which tiles in the highlights' window hold one, a tile an invocation (known after the next barrier).
@@ -968,7 +979,7 @@ FFX_DOF_INLINE void ffxDofComposite(FfxUInt32 compositeClass, FfxUInt32 listInde
             FfxFloat32 sampleCoc = ffxDofCocFromDepth(ffxDofLoadInputDepth(FfxUInt32x2(pixel)), constants.cocScale,
                                                       constants.cocBias, constants.cocLimit);
             // The gathers draw what pass 2 left of the pixel's light; the highlights draw the rest.
-            if (ffxDofCompositeInputIsFullRes(FfxUInt32x2(pixel), quad))
+            if (highlightsAround && ffxDofCompositeInputIsFullRes(FfxUInt32x2(pixel), quad))
             {
                 FfxInt32x2 tileAround = pixel / FfxInt32(extent) - FfxInt32x2(groupId) + FfxInt32x2(1, 1);
                 FfxFloat32 tileFloor = ffxDofAsFloat(ffxDofSharedTilesAround[tileAround.y * 3 + tileAround.x] &
