@@ -331,8 +331,9 @@ FFX_DOF_INLINE FfxFloat32x4 ffxDofCompositeInput(FfxUInt32x2 pixel, FfxUInt32x2 
 // the highlights already).
 FFX_DOF_INLINE FfxBoolean ffxDofCompositeInputIsFullRes(FfxUInt32x2 pixel, FfxUInt32x2 ownPixel)
 {
-    FfxUInt32 extent = FfxUInt32(FFX_DOF_COMPOSITE_GROUP_EXTENT);
-    return pixel / extent == ownPixel / extent;
+    FfxUInt32x2 tile = pixel / FfxUInt32(FFX_DOF_COMPOSITE_GROUP_EXTENT);
+    FfxUInt32x2 ownTile = ownPixel / FfxUInt32(FFX_DOF_COMPOSITE_GROUP_EXTENT);
+    return tile.x == ownTile.x && tile.y == ownTile.y;
 }
 #else
 #define ffxDofCompositeInput(pixel, ownPixel, scale) ffxDofScaleColor(ffxDofLoadInputColor(pixel), scale)
