@@ -6,6 +6,8 @@
 #include <cmath>
 #include <memory>
 #include <sstream>
+#include <stdexcept>
+#include <string>
 #include <utility>
 
 namespace ffxdof::quality {
@@ -737,6 +739,55 @@ std::string LightPairCase::describe() const {
          << (ringMerge ? "on" : "off") << ": adds " << aloneRatio << " of its input alone, " << besideRatio
          << " beside the bright light";
     return text.str();
+}
+
+LightProfile measureLightProfile(vkrun::Device& device, const std::string& scene, size_t emitter, int reach) {
+    if (reach < 0) throw std::invalid_argument("a light profile's reach must not be negative");
+    const SceneRender full = renderScene(scene);
+    ref::RenderSettings renderSettings;
+    renderSettings.lensSamples = kLensSamples;
+    size_t index = 0;
+    for (size_t i = 0; i < full.setup.scene.primitives.size(); ++i) {
+        const ref::Primitive& light = full.setup.scene.primitives[i];
+        if (!light.emitter || index++ != emitter) continue;
+        ref::Scene without = full.setup.scene;
+        without.primitives.erase(without.primitives.begin() + std::ptrdiff_t(i));
+        const ref::PinholeImages pinhole = ref::renderPinhole(without, full.setup.camera, renderSettings);
+        const io::ImageRGBA truthWithout = ref::renderThinLens(without, full.setup.camera, renderSettings).color;
+        const LightFootprint footprint = lightFootprint(full.pinhole.color, pinhole.color);
+        vkrun::RunSettings settings = sceneRunSettings(full);
+        settings.forceFloat32 = true;
+        const std::vector<float> oursWith = runOnPinhole(device, full.pinhole, settings);
+        const std::vector<float> oursWithout = runOnPinhole(device, pinhole, settings);
+
+        LightProfile profile;
+        profile.scene = scene;
+        profile.emitter = emitter;
+        profile.radius = full.setup.camera.cocRadiusPixels(light.center.z);
+        profile.centreX = footprint.centreX;
+        profile.centreY = footprint.centreY;
+        const int w = int(full.pinhole.color.width), h = int(full.pinhole.color.height);
+        profile.x0 = std::clamp(int(footprint.centreX) - reach, 0, w - 1);
+        profile.y0 = std::clamp(int(footprint.centreY) - reach, 0, h - 1);
+        profile.width = std::min(int(footprint.centreX) + reach + 1, w) - profile.x0;
+        profile.height = std::min(int(footprint.centreY) + reach + 1, h) - profile.y0;
+        const auto added = [&](const std::vector<float>& a, const std::vector<float>& b, size_t pixel) {
+            return double(a[4 * pixel]) + a[4 * pixel + 1] + a[4 * pixel + 2] -
+                   (double(b[4 * pixel]) + b[4 * pixel + 1] + b[4 * pixel + 2]);
+        };
+        for (int y = profile.y0; y < profile.y0 + profile.height; ++y) {
+            for (int x = profile.x0; x < profile.x0 + profile.width; ++x) {
+                const size_t pixel = size_t(y) * size_t(w) + size_t(x);
+                profile.inputAdded.push_back(added(full.pinhole.color.pixels, pinhole.color.pixels, pixel));
+                profile.oursAdded.push_back(added(oursWith, oursWithout, pixel));
+                profile.truthAdded.push_back(added(full.truth.pixels, truthWithout.pixels, pixel));
+                profile.pixelRadius.push_back(full.setup.camera.cocRadiusPixels(full.pinhole.depth.pixels[pixel]));
+            }
+        }
+        return profile;
+    }
+    throw std::invalid_argument("scene " + scene + " has " + std::to_string(index) + " emitters, no emitter " +
+                                std::to_string(emitter));
 }
 
 }  // namespace ffxdof::quality

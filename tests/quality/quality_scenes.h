@@ -252,4 +252,19 @@ struct SceneLightCase {
 // Every emitter of the scene, 16- and 32-bit.
 std::vector<SceneLightCase> runSceneLightCases(vkrun::Device& device, const std::string& scene);
 
+// Where one emitter of a scene adds its light, pixel by pixel within `reach` px of where the input changes with
+// it: what it adds to the input, to ffx-dof's output (32-bit) and to the truth (each the image with it less the
+// image without it, RGB summed), and each pixel's radius (the pinhole depth's CoC, full-res px). The diagnostic
+// behind docs/quality.md's partly hidden lights (`ffx_dof_quality_report_tool --light-profile SCENE:EMITTER`).
+struct LightProfile {
+    std::string scene;
+    size_t emitter = 0;
+    double radius = 0.0;                        // signed CoC radius at its depth, full-res px
+    double centreX = 0.0, centreY = 0.0;        // where the input changes, weighted by the change
+    int x0 = 0, y0 = 0, width = 0, height = 0;  // the window, clipped to the frame
+    std::vector<double> inputAdded, oursAdded, truthAdded, pixelRadius;  // over the window, row by row
+};
+// Throws std::invalid_argument for an unknown scene, an emitter the scene does not have or a negative reach.
+LightProfile measureLightProfile(vkrun::Device& device, const std::string& scene, size_t emitter, int reach);
+
 }  // namespace ffxdof::quality

@@ -8,6 +8,7 @@
 
 #include <array>
 #include <iterator>
+#include <stdexcept>
 #include <vector>
 
 using namespace ffxdof;
@@ -107,4 +108,39 @@ TEST_CASE("small lights: a dim light beside a bright one adds its energy within 
         CHECK(pair.energyOk());
     }
     CHECK(quality::validatedDevice().validationMessages().empty());
+}
+
+// The diagnostic behind docs/quality.md's partly hidden lights (ffx_dof_quality_report_tool --light-profile).
+TEST_CASE("mid-lights: a light's profile holds what it adds around it, clipped to the frame",
+          "[quality][vulkan][lights]") {
+    vkrun::Device& device = quality::validatedDevice();
+    device.clearValidationMessages();
+    const auto sum = [](const std::vector<double>& values) {
+        double total = 0.0;
+        for (double value : values) total += value;
+        return total;
+    };
+    // Light 3 (radius 18.2 px, not hidden) over the whole frame: ffx-dof adds what the input does, within 5%.
+    const quality::LightProfile whole = quality::measureLightProfile(device, "mid-lights", 3, 400);
+    CHECK(whole.x0 == 0);
+    CHECK(whole.y0 == 0);
+    CHECK(whole.width == int(quality::kWidth));
+    CHECK(whole.height == int(quality::kHeight));
+    CHECK(whole.radius == Approx(-18.2).margin(0.1));
+    REQUIRE(sum(whole.inputAdded) > 0.0);
+    CHECK(sum(whole.oursAdded) / sum(whole.inputAdded) == Approx(1.0).margin(0.05));
+    // Light 6 (radius 2.8 px): a window of 5 px each way holds all of its input's share, and the pixels of its
+    // disc, all far.
+    const quality::LightProfile near = quality::measureLightProfile(device, "mid-lights", 6, 5);
+    const quality::LightProfile wide = quality::measureLightProfile(device, "mid-lights", 6, 30);
+    CHECK(near.width == 11);
+    CHECK(near.height == 11);
+    REQUIRE(near.inputAdded.size() == 121u);
+    CHECK(near.radius == Approx(-2.76).margin(0.05));
+    CHECK(sum(near.inputAdded) == Approx(sum(wide.inputAdded)).epsilon(1e-6));
+    CHECK(sum(near.oursAdded) == Approx(sum(wide.oursAdded)).epsilon(0.01));
+    CHECK(near.pixelRadius[60] < -1.0);  // the window's centre
+    CHECK_THROWS_AS(quality::measureLightProfile(device, "mid-lights", 14, 5), std::invalid_argument);
+    CHECK_THROWS_AS(quality::measureLightProfile(device, "mid-lights", 6, -1), std::invalid_argument);
+    CHECK(device.validationMessages().empty());
 }
