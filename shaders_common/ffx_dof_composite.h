@@ -717,28 +717,38 @@ FFX_DOF_INLINE FfxDofQuadHighlights ffxDofHighlightsAtQuad(FfxUInt32x2 tile, Ffx
             FFX_DOF_LOOP
             for (FfxUInt32 slot = 0u; slot < FfxUInt32(FFX_DOF_HIGHLIGHT_SLOTS); ++slot)
             {
-                FfxUInt32x2 slotWords = FfxUInt32x2(ffxDofLoadHighlightWord(word), ffxDofLoadHighlightWord(word + 1u));
+                FfxUInt32 slotEnergy = ffxDofLoadHighlightWord(word);
                 word += FfxUInt32(FFX_DOF_HIGHLIGHT_WORDS);
-                if (slotWords.x == 0u)
+                if (slotEnergy == 0u)
                     continue;
-                FfxDofHighlight highlight = ffxDofUnpackHighlight(slotWords);
-                FfxFloat32x2 centre = origin + highlight.position;
-                // The quad's pixels lie within 0.71 px of its centre.
-                if (length(quadCentre - centre) > ffxDofHighlightReach(highlight.radius, extent) + 0.71f)
+                FfxDofHighlight highlight = ffxDofUnpackHighlight(
+                    FfxUInt32x3(slotEnergy, ffxDofLoadHighlightWord(word - 2u), ffxDofLoadHighlightWord(word - 1u)));
+                // The quad's pixels lie within 0.71 px of its centre, and each disc within the axis's length of
+                // the highlight's place.
+                if (length(quadCentre - origin - highlight.position) >
+                    ffxDofHighlightReach(highlight.radius, extent) + 0.71f + length(highlight.axis))
                     continue;
-                FFX_DOF_UNROLL
-                for (FfxUInt32 k = 0u; k < 4u; ++k)
+                FfxUInt32 discs = ffxDofHighlightDiscCount(highlight);
+                highlight.energy *= 1.0f / FfxFloat32(discs);
+                FFX_DOF_LOOP
+                for (FfxUInt32 disc = 0u; disc < discs; ++disc)
                 {
-                    FfxFloat32x2 pixelCentre =
-                        FfxFloat32x2(quad + FfxUInt32x2(k & 1u, k >> 1u)) + FfxFloat32x2(0.5f, 0.5f);
-                    FfxFloat32x3 added = ffxDofHighlightAt(highlight, pixelCentre - centre, aperture);
-                    FfxFloat32x2 blocker;
-                    if (ffxDofHighlightBlockerPoint(pixelCentre, centre, cocs[k], highlight.radius, blocker))
+                    FfxFloat32x2 centre = origin + ffxDofHighlightDiscCentre(highlight, disc);
+                    FFX_DOF_UNROLL
+                    for (FfxUInt32 k = 0u; k < 4u; ++k)
                     {
-                        FfxInt32x2 texel = ffxDofClampHalfTexel(FfxInt32x2(floor(blocker * 0.5f)), constants.halfSize);
-                        added *= ffxDofHighlightVisibility(ffxDofLoadHalfCoc(texel), highlight.radius);
+                        FfxFloat32x2 pixelCentre =
+                            FfxFloat32x2(quad + FfxUInt32x2(k & 1u, k >> 1u)) + FfxFloat32x2(0.5f, 0.5f);
+                        FfxFloat32x3 added = ffxDofHighlightAt(highlight, pixelCentre - centre, aperture);
+                        FfxFloat32x2 blocker;
+                        if (ffxDofHighlightBlockerPoint(pixelCentre, centre, cocs[k], highlight.radius, blocker))
+                        {
+                            FfxInt32x2 texel =
+                                ffxDofClampHalfTexel(FfxInt32x2(floor(blocker * 0.5f)), constants.halfSize);
+                            added *= ffxDofHighlightVisibility(ffxDofLoadHalfCoc(texel), highlight.radius);
+                        }
+                        result.added[k] += added;
                     }
-                    result.added[k] += added;
                 }
             }
         }

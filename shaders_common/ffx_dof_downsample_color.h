@@ -389,6 +389,7 @@ FFX_DOF_GROUPSHARED FfxFloat32x2 ffxDofSharedRimSample[FFX_DOF_RIM_SIDE * FFX_DO
 // quad gives light (so that a group without any skips the quadrants' sums).
 FFX_DOF_GROUPSHARED FfxFloat32x4 ffxDofSharedHighlightEnergyLight[FFX_DOF_GROUP_THREADS];
 FFX_DOF_GROUPSHARED FfxFloat32x4 ffxDofSharedHighlightPlaceRadius[FFX_DOF_GROUP_THREADS];
+FFX_DOF_GROUPSHARED FfxFloat32x2 ffxDofSharedHighlightAnisotropy[FFX_DOF_GROUP_THREADS];
 FFX_DOF_GROUPSHARED FfxUInt32 ffxDofSharedHighlightAny;
 
 // The sums of quadrant `quadrant` (0: top-left .. 3: bottom-right) of the group's 8 x 8 quads.
@@ -398,6 +399,7 @@ FFX_DOF_INLINE FfxDofHighlightSums ffxDofQuadrantHighlightSums(FfxUInt32 quadran
     FfxDofHighlightSums sums;
     sums.energyLight = FfxFloat32x4(0.0f, 0.0f, 0.0f, 0.0f);
     sums.placeRadius = FfxFloat32x4(0.0f, 0.0f, 0.0f, 0.0f);
+    sums.anisotropy = FfxFloat32x2(0.0f, 0.0f);
     FFX_DOF_UNROLL
     for (FfxUInt32 k = 0u; k < 16u; ++k)
     {
@@ -405,6 +407,7 @@ FFX_DOF_INLINE FfxDofHighlightSums ffxDofQuadrantHighlightSums(FfxUInt32 quadran
         FfxDofHighlightSums quad;
         quad.energyLight = ffxDofSharedHighlightEnergyLight[index];
         quad.placeRadius = ffxDofSharedHighlightPlaceRadius[index];
+        quad.anisotropy = ffxDofSharedHighlightAnisotropy[index];
         sums = ffxDofAddHighlightSums(sums, quad);
     }
     return sums;
@@ -551,6 +554,7 @@ FFX_DOF_INLINE void ffxDofDownsampleColor(FfxUInt32x2 groupId, FfxUInt32 localIn
                                 FfxFloat32x4(coc0, coc1, coc2, coc3), shares, FfxFloat32x2(local * 2u));
     ffxDofSharedHighlightEnergyLight[localIndex] = highlightSums.energyLight;
     ffxDofSharedHighlightPlaceRadius[localIndex] = highlightSums.placeRadius;
+    ffxDofSharedHighlightAnisotropy[localIndex] = highlightSums.anisotropy;
     if (ffxDofHighlightSumsHoldLight(highlightSums))
     {
         ffxDofGroupAtomicOr(ffxDofSharedHighlightAny, 1u);
@@ -608,7 +612,7 @@ FFX_DOF_INLINE void ffxDofDownsampleColor(FfxUInt32x2 groupId, FfxUInt32 localIn
 #endif
     if (localIndex < FfxUInt32(FFX_DOF_HIGHLIGHT_SLOTS))
     {
-        FfxUInt32x2 packed = FfxUInt32x2(0u, 0u);
+        FfxUInt32x3 packed = FfxUInt32x3(0u, 0u, 0u);
         if (ffxDofSharedHighlightAny != 0u)
         {
             FfxDofHighlightSums quadrant = ffxDofQuadrantHighlightSums(localIndex);
@@ -618,6 +622,7 @@ FFX_DOF_INLINE void ffxDofDownsampleColor(FfxUInt32x2 groupId, FfxUInt32 localIn
         FfxUInt32 word = ffxDofHighlightWord(groupId, localIndex, constants.tileCount);
         ffxDofStoreHighlightWord(word, packed.x);
         ffxDofStoreHighlightWord(word + 1u, packed.y);
+        ffxDofStoreHighlightWord(word + 2u, packed.z);
     }
     // The floor, from which the composite knows what the tile's pixels gave (ffxDofPixelHighlightShare).
     if (localIndex == FfxUInt32(FFX_DOF_HIGHLIGHT_SLOTS))

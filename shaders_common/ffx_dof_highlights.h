@@ -11,9 +11,11 @@
 // Energy leaves the layers only where a slot holds it, so nothing is lost or drawn twice.
 //
 // A tile has FFX_DOF_HIGHLIGHT_SLOTS slots, one per quadrant of 8 x 8 full-res px: a slot holds the light of
-// every quad of its quadrant that gives some, drawn as one disc about its light-weighted centre with a rim as
-// wide as its light's spread. One light of a few pixels is drawn where it lies; lights a few pixels apart in
-// one quadrant become one disc about their common centre.
+// every quad of its quadrant that gives some, as its light-weighted centre, the axis along which its light
+// spreads most and its spread across it. It is drawn as two discs, half its light each, at the ends of that
+// axis (one disc where the light spreads alike every way), each with a rim as wide as the spread across. One
+// light of a few pixels is drawn where it lies, and so are two lights a few pixels apart in one quadrant; three
+// or more there are drawn as two.
 #ifndef FFX_DOF_HIGHLIGHTS_H
 #define FFX_DOF_HIGHLIGHTS_H
 
@@ -77,23 +79,29 @@ FFX_DOF_INLINE FfxFloat32 ffxDofPixelHighlightShare(FfxUInt32x2 pixel, FfxFloat3
 }
 
 // A light of the full-resolution path: where it lies (full-res px from its tile's top-left corner), its far
-// radius (|CoC|, half-res px), how far its light spreads about where it lies (the root mean square distance,
-// full-res px) and its energy (colour summed over its pixels, in the HDR range's units).
+// radius (|CoC|, half-res px), its axis (from where it lies to each of its two discs: the square root of its
+// light's variance along its principal axis less that across, full-res px), how far its light spreads about
+// that axis (the root mean square distance of what is left, full-res px) and its energy (colour summed over its
+// pixels, in the HDR range's units). Two equal points g px apart have an axis of g / 2 and no spread; a round
+// light of radius a no axis and a spread of a / sqrt(2).
 struct FfxDofHighlight
 {
     FfxFloat32x2 position;
     FfxFloat32 radius;
+    FfxFloat32x2 axis;
     FfxFloat32 spread;
     FfxFloat32x3 energy;
 };
 
 // A highlight as sums over the quads it gathers (a quadrant of a tile: every quad that gives light there, so
 // that a light is never split between the paths): energy (xyz) and light (w, luminance x share); the
-// light-weighted position (xy), radius (z) and squared distance from the tile's corner (w).
+// light-weighted position (xy), radius (z) and squared distance from the tile's corner (w); and the
+// light-weighted x^2 - y^2 and 2 x y of the position (its second moments' part that has a direction).
 struct FfxDofHighlightSums
 {
     FfxFloat32x4 energyLight;
     FfxFloat32x4 placeRadius;
+    FfxFloat32x2 anisotropy;
 };
 
 // What a quad gives: the light of its pixels 0..3 (top-left, top-right, bottom-left, bottom-right) at
@@ -106,15 +114,21 @@ FFX_DOF_INLINE FfxDofHighlightSums ffxDofQuadHighlightSums(FfxFloat32x3 color0, 
                                                ffxDofLuminance32(color2), ffxDofLuminance32(color3));
     FfxFloat32x2 centre0 = inTile + FfxFloat32x2(0.5f, 0.5f);
     FfxFloat32x2 centre3 = centre0 + FfxFloat32x2(1.0f, 1.0f);
-    // Squared distances of the four pixel centres from the tile's corner.
+    // Squared distances of the four pixel centres from the tile's corner, and x^2 - y^2 and 2 x y of each.
     FfxFloat32x4 distance2 = FfxFloat32x4(dot(centre0, centre0), centre3.x * centre3.x + centre0.y * centre0.y,
                                           centre0.x * centre0.x + centre3.y * centre3.y, dot(centre3, centre3));
+    FfxFloat32x4 squareDifference =
+        FfxFloat32x4(centre0.x * centre0.x - centre0.y * centre0.y, centre3.x * centre3.x - centre0.y * centre0.y,
+                     centre0.x * centre0.x - centre3.y * centre3.y, centre3.x * centre3.x - centre3.y * centre3.y);
+    FfxFloat32x4 twiceProduct =
+        2.0f * FfxFloat32x4(centre0.x * centre0.y, centre3.x * centre0.y, centre0.x * centre3.y, centre3.x * centre3.y);
     FfxFloat32 lightSum = light.x + light.y + light.z + light.w;
     FfxDofHighlightSums sums;
     sums.energyLight =
         FfxFloat32x4(color0 * shares.x + color1 * shares.y + color2 * shares.z + color3 * shares.w, lightSum);
     sums.placeRadius = FfxFloat32x4(centre0 * lightSum + FfxFloat32x2(light.y + light.w, light.z + light.w),
                                     dot(abs(cocs), light), dot(distance2, light));
+    sums.anisotropy = FfxFloat32x2(dot(squareDifference, light), dot(twiceProduct, light));
     return sums;
 }
 
@@ -123,6 +137,7 @@ FFX_DOF_INLINE FfxDofHighlightSums ffxDofAddHighlightSums(FfxDofHighlightSums a,
     FfxDofHighlightSums sums;
     sums.energyLight = a.energyLight + b.energyLight;
     sums.placeRadius = a.placeRadius + b.placeRadius;
+    sums.anisotropy = a.anisotropy + b.anisotropy;
     return sums;
 }
 
@@ -137,8 +152,38 @@ FFX_DOF_INLINE FfxDofHighlight ffxDofFinishHighlight(FfxDofHighlightSums sums)
     highlight.energy = FfxFloat32x3(sums.energyLight.x, sums.energyLight.y, sums.energyLight.z);
     highlight.position = FfxFloat32x2(sums.placeRadius.x, sums.placeRadius.y) * inverseLight;
     highlight.radius = sums.placeRadius.z * inverseLight;
-    highlight.spread = sqrt(max(sums.placeRadius.w * inverseLight - dot(highlight.position, highlight.position), 0.0f));
+    FfxFloat32x2 centre = highlight.position;
+    // The covariance's trace (the variance summed over both axes) and its part with a direction, (c_xx - c_yy,
+    // 2 c_xy), whose length is the variance along the principal axis less that across it.
+    FfxFloat32 variance = max(sums.placeRadius.w * inverseLight - dot(centre, centre), 0.0f);
+    FfxFloat32x2 anisotropy = sums.anisotropy * inverseLight -
+                              FfxFloat32x2(centre.x * centre.x - centre.y * centre.y, 2.0f * centre.x * centre.y);
+    FfxFloat32 excess = min(length(anisotropy), variance);
+    // A light that spreads alike every way but for rounding is one disc (its axis would be a few hundredths of
+    // its spread).
+    excess = excess > 1e-3f * variance ? excess : 0.0f;
+    // The principal axis halves the angle of (c_xx - c_yy, 2 c_xy).
+    FfxFloat32x2 bisector = anisotropy + FfxFloat32x2(length(anisotropy), 0.0f);
+    FfxFloat32x2 direction =
+        dot(bisector, bisector) > 1e-12f ? bisector * (1.0f / length(bisector)) : FfxFloat32x2(0.0f, 1.0f);
+    highlight.axis = direction * sqrt(excess);
+    highlight.spread = sqrt(variance - excess);
     return highlight;
+}
+
+// Where disc `disc` (0 or 1) of a highlight lies (full-res px from its tile's corner): the ends of its axis,
+// kept within the tile (whose light it holds: so that dilate's margin and the composite's window cover its reach).
+FFX_DOF_INLINE FfxFloat32x2 ffxDofHighlightDiscCentre(FfxDofHighlight highlight, FfxUInt32 disc)
+{
+    FfxFloat32 tileSide = 2.0f * FfxFloat32(FFX_DOF_TILE_SIZE);
+    return clamp(highlight.position + (disc == 0u ? highlight.axis : -highlight.axis), FfxFloat32x2(0.0f, 0.0f),
+                 FfxFloat32x2(tileSide, tileSide));
+}
+
+// How many discs a highlight is drawn as: one where its light spreads alike every way (its two would coincide).
+FFX_DOF_INLINE FfxUInt32 ffxDofHighlightDiscCount(FfxDofHighlight highlight)
+{
+    return highlight.axis.x != 0.0f || highlight.axis.y != 0.0f ? 2u : 1u;
 }
 
 // ---- Storage: two words a slot, zero for an empty one ---------------------------------------------
@@ -177,11 +222,15 @@ FFX_DOF_INLINE FfxFloat32x3 ffxDofUnpackRgb9e5(FfxUInt32 bits)
 // range) sum to 2^18, beyond the format's 65408, which clamped a patch of 16,400 to half its energy.
 #define FFX_DOF_HIGHLIGHT_ENERGY_UNIT 16.0f
 // Word 1: the position in quarters of a pixel (6 bits each way: a tile is 16 px), the radius in 32nds of a
-// half-res px (12 bits, up to 128) and the spread in 16ths of a pixel (8 bits, up to 16).
+// half-res px (12 bits, up to 128) and the spread in 16ths of a pixel (8 bits, up to 16). Word 2: the axis in
+// quarters of a pixel, two signed bytes (up to 31.75 px each way; its discs stay within the tile).
 #define FFX_DOF_HIGHLIGHT_POSITION_STEPS 4.0f
 #define FFX_DOF_HIGHLIGHT_RADIUS_STEPS 32.0f
 #define FFX_DOF_HIGHLIGHT_SPREAD_STEPS 16.0f
-FFX_DOF_INLINE FfxUInt32x2 ffxDofPackHighlight(FfxDofHighlight highlight)
+#if FFX_DOF_HIGHLIGHT_WORDS != 3
+#error "a highlight is three words: its energy, its place, radius and spread, and its axis"
+#endif
+FFX_DOF_INLINE FfxUInt32x3 ffxDofPackHighlight(FfxDofHighlight highlight)
 {
     FfxUInt32x2 position =
         FfxUInt32x2(clamp(floor(highlight.position * FFX_DOF_HIGHLIGHT_POSITION_STEPS + FfxFloat32x2(0.5f, 0.5f)),
@@ -192,9 +241,13 @@ FFX_DOF_INLINE FfxUInt32x2 ffxDofPackHighlight(FfxDofHighlight highlight)
     // A light too faint for the format's smallest step still left the layers: keep the slot marked.
     if ((energy & 0x7ffffffu) == 0u)
         energy = energy | 1u;
-    return FfxUInt32x2(energy, position.x | (position.y << 6u) | (radius << 12u) | (spread << 24u));
+    FfxInt32x2 axis =
+        FfxInt32x2(clamp(floor(highlight.axis * FFX_DOF_HIGHLIGHT_POSITION_STEPS + FfxFloat32x2(0.5f, 0.5f)),
+                         FfxFloat32x2(-127.0f, -127.0f), FfxFloat32x2(127.0f, 127.0f)));
+    return FfxUInt32x3(energy, position.x | (position.y << 6u) | (radius << 12u) | (spread << 24u),
+                       (FfxUInt32(axis.x) & 0xffu) | ((FfxUInt32(axis.y) & 0xffu) << 8u));
 }
-FFX_DOF_INLINE FfxDofHighlight ffxDofUnpackHighlight(FfxUInt32x2 words)
+FFX_DOF_INLINE FfxDofHighlight ffxDofUnpackHighlight(FfxUInt32x3 words)
 {
     FfxDofHighlight highlight;
     highlight.energy = ffxDofUnpackRgb9e5(words.x) * FFX_DOF_HIGHLIGHT_ENERGY_UNIT;
@@ -202,6 +255,9 @@ FFX_DOF_INLINE FfxDofHighlight ffxDofUnpackHighlight(FfxUInt32x2 words)
                          (1.0f / FFX_DOF_HIGHLIGHT_POSITION_STEPS);
     highlight.radius = FfxFloat32((words.y >> 12u) & 0xfffu) * (1.0f / FFX_DOF_HIGHLIGHT_RADIUS_STEPS);
     highlight.spread = FfxFloat32(words.y >> 24u) * (1.0f / FFX_DOF_HIGHLIGHT_SPREAD_STEPS);
+    // Sign-extended from each byte.
+    FfxInt32x2 axis = FfxInt32x2(FfxInt32(words.z << 24u) >> 24, FfxInt32((words.z << 16u) & 0xff000000u) >> 24);
+    highlight.axis = FfxFloat32x2(axis) * (1.0f / FFX_DOF_HIGHLIGHT_POSITION_STEPS);
     return highlight;
 }
 

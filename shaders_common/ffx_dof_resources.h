@@ -111,7 +111,7 @@
 // HIGHLIGHTS: highlights kept per tile, uint words per highlight, the word of the tile's floor after its slots
 // and uint words per tile.
 #define FFX_DOF_HIGHLIGHT_SLOTS 4
-#define FFX_DOF_HIGHLIGHT_WORDS 2
+#define FFX_DOF_HIGHLIGHT_WORDS 3
 #define FFX_DOF_HIGHLIGHT_FLOOR_WORD (FFX_DOF_HIGHLIGHT_SLOTS * FFX_DOF_HIGHLIGHT_WORDS)
 #define FFX_DOF_HIGHLIGHT_TILE_WORDS (FFX_DOF_HIGHLIGHT_FLOOR_WORD + 1)
 

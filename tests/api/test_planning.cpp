@@ -292,9 +292,9 @@ TEST_CASE("the storage buffer slots map to their buffers, sized by the tile coun
     CHECK(kStorageBufferSlotCount == 4);
     // The byte counts of docs/technique.md's table of internal resources.
     CHECK(plan.tileListsBytes == 163200u);
-    CHECK(plan.highlightsBytes == 293760u);
-    // The smallest context still has one tile of highlights: four slots of two words, and the floor.
-    CHECK(contextPlan(1, 1).highlightsBytes == 36u);
+    CHECK(plan.highlightsBytes == 424320u);
+    // The smallest context still has one tile of highlights: four slots of three words, and the floor.
+    CHECK(contextPlan(1, 1).highlightsBytes == 52u);
 }
 
 TEST_CASE("a backend without a pass's shaders, or without its permutation, cannot make a context") {

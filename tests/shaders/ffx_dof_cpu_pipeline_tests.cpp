@@ -736,16 +736,13 @@ TEST_CASE("A dim light on a bright light's rim leaves the bright disc there as i
     CHECK(dimBeside / dimInput == Approx(1.0).margin(0.05));
 }
 
-TEST_CASE("Two lights a few pixels apart in one quadrant are drawn as each alone - known failure",
-          "[pipeline][!shouldfail]") {
-    // Far highlights keep one light per quadrant of 8 x 8 px of a tile (ffx_dof_highlights.h): two 1 px lights of
-    // 100 there become one disc about their middle, with a rim as wide as their spread (at most 6 px), where the
-    // thin lens draws two discs. Measured 2026-11-30 (the L1 difference from the two drawn alone, over theirs):
-    // 0.24 and 0.39 at radius 4.5 px for lights 3 and 5 px apart, 0.17 and 0.29 at 6 px, 0.13 and 0.22 at 8 px,
-    // 0.08 and 0.14 at 12 px. Lights 7 px apart lie in two quadrants here and are drawn apart (0.000). Below 4.5
-    // px (2.25 half-res px) the composite draws them at full resolution from the input, apart; at 4.5 and 6 px
-    // it did so until the highlights began at 1.5 half-res px instead of 3, where the half-res layers drew part
-    // of each light with a glow beyond the disc (docs/quality.md, point discs).
+TEST_CASE("Two lights a few pixels apart in one quadrant are drawn as each alone", "[pipeline]") {
+    // Far highlights keep one slot per quadrant of 8 x 8 px of a tile (ffx_dof_highlights.h): two 1 px lights of
+    // 100 there are drawn as two discs at the ends of the light's principal axis, which are the two lights. Until
+    // 2026-11-30 a slot was one disc about their middle with a rim as wide as their spread (at most 6 px), and the
+    // L1 difference from the two drawn alone, over theirs, was 0.24 and 0.39 at radius 4.5 px for lights 3 and 5
+    // px apart, 0.17 and 0.29 at 6 px, 0.13 and 0.22 at 8 px, 0.08 and 0.14 at 12 px; now 0.000 in every case.
+    // Lights 7 px apart lie in two quadrants here.
     const uint32_t w = 64, h = 64;
     Scene none;
     none.width = w;
@@ -777,7 +774,7 @@ TEST_CASE("Two lights a few pixels apart in one quadrant are drawn as each alone
             std::printf("two lights %d px apart at radius %.1f px: L1 difference from each alone %.3f\n", gap,
                         -2.0 * coc, difference / alone);
             INFO("radius " << -2.0f * coc << " px, " << gap << " px apart: " << difference / alone);
-            CHECK(difference / alone <= 0.1);
+            CHECK(difference / alone <= 0.01);
         }
     }
 }

@@ -12,6 +12,7 @@ FfxDofHighlight makeHighlight(glm::vec2 position, float radius, float spread, gl
     FfxDofHighlight highlight;
     highlight.position = position;
     highlight.radius = radius;
+    highlight.axis = glm::vec2(0.0f);
     highlight.spread = spread;
     highlight.energy = energy;
     return highlight;
@@ -36,19 +37,23 @@ TEST_CASE("RGB9E5 keeps a colour within half a step of its largest channel", "[h
     CHECK(ffxDofUnpackRgb9e5(ffxDofPackRgb9e5(glm::vec3(511.9f, 0.0f, 0.0f))).x == 512.0f);
 }
 
-TEST_CASE("A packed highlight keeps its place, radius, spread and energy within their steps; an empty slot is zero",
+TEST_CASE("A packed highlight keeps its place, radius, axis, spread and energy within their steps; an empty slot is "
+          "zero",
           "[highlights]") {
     std::mt19937 rng(5);
     std::uniform_real_distribution<float> place(0.0f, 15.75f), radius(3.0f, 120.0f), spread(0.0f, 15.0f),
-        energy(0.01f, 262144.0f);  // up to a quadrant of 64 px at the HDR range's 4096
+        axis(-31.0f, 31.0f), energy(0.01f, 262144.0f);  // up to a quadrant of 64 px at the HDR range's 4096
     for (int i = 0; i < 1000; ++i) {
-        const FfxDofHighlight highlight = makeHighlight(glm::vec2(place(rng), place(rng)), radius(rng), spread(rng),
-                                                        glm::vec3(energy(rng), energy(rng), energy(rng)));
-        const glm::uvec2 words = ffxDofPackHighlight(highlight);
+        FfxDofHighlight highlight = makeHighlight(glm::vec2(place(rng), place(rng)), radius(rng), spread(rng),
+                                                  glm::vec3(energy(rng), energy(rng), energy(rng)));
+        highlight.axis = glm::vec2(axis(rng), axis(rng));
+        const glm::uvec3 words = ffxDofPackHighlight(highlight);
         REQUIRE(words.x != 0u);
         const FfxDofHighlight back = ffxDofUnpackHighlight(words);
         CHECK(std::fabs(back.position.x - highlight.position.x) <= 0.125f + 1e-6f);
         CHECK(std::fabs(back.position.y - highlight.position.y) <= 0.125f + 1e-6f);
+        CHECK(std::fabs(back.axis.x - highlight.axis.x) <= 0.125f + 1e-6f);
+        CHECK(std::fabs(back.axis.y - highlight.axis.y) <= 0.125f + 1e-6f);
         CHECK(std::fabs(back.radius - highlight.radius) <= 1.0f / 64.0f + 1e-5f);
         CHECK(std::fabs(back.spread - highlight.spread) <= 1.0f / 32.0f + 1e-5f);
         const float largest = std::max(highlight.energy.x, std::max(highlight.energy.y, highlight.energy.z));
@@ -111,7 +116,8 @@ TEST_CASE("The composite knows what pass 2 took of a pixel, but for a quad the i
     CHECK(ffxDofPixelHighlightShare(glm::uvec2(10u, 19u), light, coc, floor, scale, size) == taken);
 }
 
-TEST_CASE("Highlight sums give the light-weighted place, radius and spread of what they gather", "[highlights]") {
+TEST_CASE("Highlight sums give the light-weighted place, radius, axis and spread of what they gather",
+          "[highlights]") {
     // One lit pixel (the bottom-right of the quad at (4, 6)): its centre, its radius, no spread, its light.
     const glm::vec3 dark(0.0f), light(10.0f, 20.0f, 30.0f);
     const FfxDofHighlightSums one =
@@ -123,8 +129,12 @@ TEST_CASE("Highlight sums give the light-weighted place, radius and spread of wh
     CHECK(single.position.y == Approx(7.5f));
     CHECK(single.radius == Approx(7.0f));
     CHECK(single.spread == Approx(0.0f).margin(1e-3));
+    CHECK(single.axis.x == 0.0f);
+    CHECK(single.axis.y == 0.0f);
+    CHECK(ffxDofHighlightDiscCount(single) == 1u);
     CHECK(single.energy.z == Approx(15.0f));
-    // Two equal lights 6 px apart in two quads: their middle, each one's radius weighed by its light, a spread of 3.
+    // Two equal lights 6 px apart in two quads: their middle, each one's radius weighed by its light, an axis of 3
+    // px toward either and no spread across it: its discs lie on the two lights.
     const FfxDofHighlightSums left = ffxDofQuadHighlightSums(light, dark, dark, dark, glm::vec4(-4.0f),
                                                              glm::vec4(1.0f, 0.0f, 0.0f, 0.0f), glm::vec2(0.0f, 2.0f));
     const FfxDofHighlightSums right = ffxDofQuadHighlightSums(light, dark, dark, dark, glm::vec4(-8.0f),
@@ -133,8 +143,34 @@ TEST_CASE("Highlight sums give the light-weighted place, radius and spread of wh
     CHECK(pair.position.x == Approx(3.5f));
     CHECK(pair.position.y == Approx(2.5f));
     CHECK(pair.radius == Approx(6.0f));
-    CHECK(pair.spread == Approx(3.0f).margin(1e-3));
+    CHECK(std::fabs(pair.axis.x) == Approx(3.0f).margin(1e-3));
+    CHECK(pair.axis.y == Approx(0.0f).margin(1e-3));
+    CHECK(pair.spread == Approx(0.0f).margin(2e-3));
     CHECK(pair.energy.x == Approx(20.0f));
+    REQUIRE(ffxDofHighlightDiscCount(pair) == 2u);
+    const glm::vec2 first = ffxDofHighlightDiscCentre(pair, 0u), second = ffxDofHighlightDiscCentre(pair, 1u);
+    CHECK(std::min(first.x, second.x) == Approx(0.5f).margin(1e-3));
+    CHECK(std::max(first.x, second.x) == Approx(6.5f).margin(1e-3));
+    CHECK(first.y == Approx(2.5f));
+    CHECK(second.y == Approx(2.5f));
+    // The same pair on a diagonal: the axis along it, of half their distance.
+    const FfxDofHighlightSums lower = ffxDofQuadHighlightSums(dark, dark, dark, light, glm::vec4(-4.0f),
+                                                              glm::vec4(0.0f, 0.0f, 0.0f, 1.0f), glm::vec2(4.0f, 4.0f));
+    const FfxDofHighlight diagonal = ffxDofFinishHighlight(ffxDofAddHighlightSums(left, lower));
+    CHECK(glm::length(diagonal.axis) == Approx(0.5f * glm::length(glm::vec2(5.5f, 5.5f) - glm::vec2(0.5f, 2.5f))));
+    CHECK(std::fabs(glm::dot(glm::normalize(diagonal.axis), glm::normalize(glm::vec2(5.0f, 3.0f)))) ==
+          Approx(1.0f).margin(1e-4));
+    CHECK(diagonal.spread == Approx(0.0f).margin(2e-3));
+    // A square of four equal lights spreads alike every way: one disc, a spread of the corners' distance.
+    const FfxDofHighlight square = ffxDofFinishHighlight(ffxDofQuadHighlightSums(
+        light, light, light, light, glm::vec4(-4.0f), glm::vec4(1.0f), glm::vec2(2.0f, 2.0f)));
+    CHECK(ffxDofHighlightDiscCount(square) == 1u);
+    CHECK(square.spread == Approx(std::sqrt(0.5f)).margin(1e-3));
+    // Discs stay within the tile.
+    FfxDofHighlight edge = pair;
+    edge.axis = glm::vec2(20.0f, -20.0f);
+    CHECK(ffxDofHighlightDiscCentre(edge, 0u).x == 16.0f);
+    CHECK(ffxDofHighlightDiscCentre(edge, 0u).y == 0.0f);
     // A quad that gives nothing holds no light.
     CHECK_FALSE(ffxDofHighlightSumsHoldLight(
         ffxDofQuadHighlightSums(light, light, light, light, glm::vec4(-9.0f), glm::vec4(0.0f), glm::vec2(0.0f))));
