@@ -37,9 +37,10 @@ TEST_CASE("RGB9E5 keeps a colour within half a step of its largest channel", "[h
     CHECK(ffxDofUnpackRgb9e5(ffxDofPackRgb9e5(glm::vec3(511.9f, 0.0f, 0.0f))).x == 512.0f);
 }
 
-TEST_CASE("A packed highlight keeps its place, radius, axis, spread and energy within their steps; an empty slot is "
-          "zero",
-          "[highlights]") {
+TEST_CASE(
+    "A packed highlight keeps its place, radius, axis, spread and energy within their steps; an empty slot is "
+    "zero",
+    "[highlights]") {
     std::mt19937 rng(5);
     std::uniform_real_distribution<float> place(0.0f, 15.75f), radius(3.0f, 120.0f), spread(0.0f, 15.0f),
         axis(-31.0f, 31.0f), energy(0.01f, 262144.0f);  // up to a quadrant of 64 px at the HDR range's 4096
@@ -116,8 +117,7 @@ TEST_CASE("The composite knows what pass 2 took of a pixel, but for a quad the i
     CHECK(ffxDofPixelHighlightShare(glm::uvec2(10u, 19u), light, coc, floor, scale, size) == taken);
 }
 
-TEST_CASE("Highlight sums give the light-weighted place, radius, axis and spread of what they gather",
-          "[highlights]") {
+TEST_CASE("Highlight sums give the light-weighted place, radius, axis and spread of what they gather", "[highlights]") {
     // One lit pixel (the bottom-right of the quad at (4, 6)): its centre, its radius, no spread, its light.
     const glm::vec3 dark(0.0f), light(10.0f, 20.0f, 30.0f);
     const FfxDofHighlightSums one =
@@ -162,8 +162,8 @@ TEST_CASE("Highlight sums give the light-weighted place, radius, axis and spread
           Approx(1.0f).margin(1e-4));
     CHECK(diagonal.spread == Approx(0.0f).margin(2e-3));
     // A square of four equal lights spreads alike every way: one disc, a spread of the corners' distance.
-    const FfxDofHighlight square = ffxDofFinishHighlight(ffxDofQuadHighlightSums(
-        light, light, light, light, glm::vec4(-4.0f), glm::vec4(1.0f), glm::vec2(2.0f, 2.0f)));
+    const FfxDofHighlight square = ffxDofFinishHighlight(
+        ffxDofQuadHighlightSums(light, light, light, light, glm::vec4(-4.0f), glm::vec4(1.0f), glm::vec2(2.0f, 2.0f)));
     CHECK(ffxDofHighlightDiscCount(square) == 1u);
     CHECK(square.spread == Approx(std::sqrt(0.5f)).margin(1e-3));
     // Discs stay within the tile.
