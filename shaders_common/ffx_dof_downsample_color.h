@@ -545,8 +545,7 @@ FFX_DOF_INLINE void ffxDofDownsampleColor(FfxUInt32x2 groupId, FfxUInt32 localIn
                                        ffxDofHighlightShare(around[6].x, coc1, tileFloor, scale),
                                        ffxDofHighlightShare(around[9].x, coc2, tileFloor, scale),
                                        ffxDofHighlightShare(around[10].x, coc3, tileFloor, scale));
-    // A quad the image's edge cuts repeats its edge pixels: it keeps them in the layers.
-    if (quad.x + 1u >= constants.fullSize.x || quad.y + 1u >= constants.fullSize.y)
+    if (ffxDofQuadCutByEdge(quad, constants.fullSize))
         shares = FfxFloat32x4(0.0f, 0.0f, 0.0f, 0.0f);
     FfxDofHighlightSums highlightSums =
         ffxDofQuadHighlightSums(FfxFloat32x3(input0.x, input0.y, input0.z), FfxFloat32x3(input1.x, input1.y, input1.z),

@@ -64,6 +64,13 @@ FFX_DOF_INLINE FfxFloat32 ffxDofHighlightShare(FfxFloat32 luminance, FfxFloat32 
     return bright * contrast * far * ffxDofSaturate(1.0f - floorLuminance / luminance);
 }
 
+// Whether the image's edge cuts the quad of full-res pixel `pixel`: such a quad repeats its edge pixels, which
+// stay in the layers (pass 2 gives no light of it, and the composite takes none).
+FFX_DOF_INLINE FfxBoolean ffxDofQuadCutByEdge(FfxUInt32x2 pixel, FfxUInt32x2 fullSize)
+{
+    return (pixel.x | 1u) >= fullSize.x || (pixel.y | 1u) >= fullSize.y;
+}
+
 // ffxDofHighlightShare of full-res pixel `pixel` of scaled colour `color` and radius `coc` (half-res px) in a
 // tile of floor `floorLuminance`, as pass 2 takes it (but for the radius: pass 2 gives a light's anti-aliased
 // rim pixels the light's radius, ffxDofLightRimCocInQuad, which needs their neighbours; the two differ only
@@ -73,7 +80,7 @@ FFX_DOF_INLINE FfxFloat32 ffxDofHighlightShare(FfxFloat32 luminance, FfxFloat32 
 FFX_DOF_INLINE FfxFloat32 ffxDofPixelHighlightShare(FfxUInt32x2 pixel, FfxFloat32x3 color, FfxFloat32 coc,
                                                     FfxFloat32 floorLuminance, FfxFloat32 scale, FfxUInt32x2 fullSize)
 {
-    if ((pixel.x | 1u) >= fullSize.x || (pixel.y | 1u) >= fullSize.y)
+    if (ffxDofQuadCutByEdge(pixel, fullSize))
         return 0.0f;
     return ffxDofHighlightShare(ffxDofLuminance32(color), coc, floorLuminance, scale);
 }
