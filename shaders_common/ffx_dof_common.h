@@ -178,11 +178,14 @@ FFX_DOF_INLINE FfxFloat32 ffxDofRoundMantissa(FfxFloat32 value, FfxUInt32 mantis
     FfxUInt32 bits = ffxDofAsUInt(max(value, 0.0f)) + (1u << (dropped - 1u));
     return ffxDofAsFloat(bits & ~((1u << dropped) - 1u));
 }
+FFX_DOF_INLINE FfxFloat32x3 ffxDofRoundForPackedColor32(FfxFloat32x3 color)
+{
+    return FfxFloat32x3(ffxDofRoundMantissa(color.x, 6u), ffxDofRoundMantissa(color.y, 6u),
+                        ffxDofRoundMantissa(color.z, 5u));
+}
 FFX_DOF_INLINE FfxDofFloat3 ffxDofRoundForPackedColor(FfxDofFloat3 color)
 {
-    return FfxDofFloat3(FfxDofFloat(ffxDofRoundMantissa(FfxFloat32(color.x), 6u)),
-                        FfxDofFloat(ffxDofRoundMantissa(FfxFloat32(color.y), 6u)),
-                        FfxDofFloat(ffxDofRoundMantissa(FfxFloat32(color.z), 5u)));
+    return ffxDofToDofFloat3(ffxDofRoundForPackedColor32(ffxDofToFloat32x3(color)));
 }
 
 // A texel of COARSE_MIPS (MIPs 1 to 3 of the half-res colour and radius): everything the blur reads of

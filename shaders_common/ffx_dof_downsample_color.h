@@ -67,16 +67,16 @@ FFX_DOF_INLINE FfxFloat32 ffxDofQuadWeight(FfxFloat32 referenceCoc, FfxFloat32 c
 
 // Luminance of the quad's reference pixel (the first whose radius is the reference).
 FFX_DOF_INLINE FfxFloat32 ffxDofQuadReferenceLuminance(FfxFloat32 reference, FfxFloat32 coc0, FfxFloat32 coc1,
-                                                       FfxFloat32 coc2, FfxDofFloat3 color0, FfxDofFloat3 color1,
-                                                       FfxDofFloat3 color2, FfxDofFloat3 color3)
+                                                       FfxFloat32 coc2, FfxFloat32x3 color0, FfxFloat32x3 color1,
+                                                       FfxFloat32x3 color2, FfxFloat32x3 color3)
 {
     if (coc0 == reference)
-        return ffxDofLuminance(color0);
+        return ffxDofLuminance32(color0);
     if (coc1 == reference)
-        return ffxDofLuminance(color1);
+        return ffxDofLuminance32(color1);
     if (coc2 == reference)
-        return ffxDofLuminance(color2);
-    return ffxDofLuminance(color3);
+        return ffxDofLuminance32(color2);
+    return ffxDofLuminance32(color3);
 }
 
 // Keeps the energy of small lights through the bilateral reduction, which would drop the pixels of
@@ -88,14 +88,14 @@ FFX_DOF_INLINE FfxFloat32 ffxDofQuadReferenceLuminance(FfxFloat32 reference, Ffx
 // - where the reference is itself such a light in the far field, the far darker pixels behind it are
 //   kept as well (same ratios): dropped, the light's color would fill the whole texel, and a light of
 //   a few texels would gain up to a third of its energy at every MIP level.
-FFX_DOF_INLINE FfxFloat32 ffxDofLightKeep(FfxDofFloat3 color, FfxFloat32 coc, FfxFloat32 referenceCoc,
+FFX_DOF_INLINE FfxFloat32 ffxDofLightKeep(FfxFloat32x3 color, FfxFloat32 coc, FfxFloat32 referenceCoc,
                                           FfxFloat32 referenceLuminance)
 {
     // Only within the far field: a near-field pixel in a far texel, or the reverse,
     // would move the texel's radius across the layers.
     if (coc >= FFX_DOF_NEAR_THRESHOLD || referenceCoc >= FFX_DOF_NEAR_THRESHOLD)
         return 0.0f;
-    FfxFloat32 luminance = ffxDofLuminance(color);
+    FfxFloat32 luminance = ffxDofLuminance32(color);
     // An in-focus pixel is drawn from the full-resolution input: kept in a blurred texel, it would
     // only spread its color into the background.
     FfxFloat32 brighter = ffxDofSaturate(luminance / (2.0f * referenceLuminance + 1e-4f) - 1.0f) *
@@ -124,72 +124,16 @@ FFX_DOF_INLINE FfxFloat32x2 ffxDofReduceLightOffset(FfxFloat32 light0, FfxFloat3
     return sum / (light0 + light1 + light2 + light3);
 }
 
-// Reduces a 2x2 quad (0: top-left, 1: top-right, 2: bottom-left, 3: bottom-right) with the light
-// offsets of its sources (ffxDofReduceLightOffset). The same kernel makes every MIP level. The radius
-// is averaged with the square of each pixel's light (weight x luminance) as its weight: the texel's light
-// spreads with the radius of the pixels it comes from, and a bright point keeps its own radius among
-// darker pixels of another one through every level. Weighted by the light itself, a 1 px light of radius
-// 2 among pixels of radius 16 and a thousandth of its luminance came out at 2.04 in MIP 0 and 4.9 in
-// MIP 3 (now 2.00 and 2.17), so the blur judged it by a larger radius than the composite does
-// (ffx_dof_small_sources.h).
-FFX_DOF_INLINE void ffxDofBilateralReduceLight(FfxDofFloat3 color0, FfxDofFloat3 color1, FfxDofFloat3 color2,
-                                               FfxDofFloat3 color3, FfxFloat32 coc0, FfxFloat32 coc1, FfxFloat32 coc2,
-                                               FfxFloat32 coc3, FfxFloat32x2 offset0, FfxFloat32x2 offset1,
-                                               FfxFloat32x2 offset2, FfxFloat32x2 offset3,
-                                               FFX_DOF_OUT(FfxDofFloat3) color, FFX_DOF_OUT(FfxFloat32) coc,
-                                               FFX_DOF_OUT(FfxFloat32x2) offset)
-{
-    FfxFloat32 reference = ffxDofQuadReferenceCoc(coc0, coc1, coc2, coc3);
-    FfxFloat32 range = max(max(coc0, coc1), max(coc2, coc3)) - min(min(coc0, coc1), min(coc2, coc3));
-    FfxFloat32 referenceLight =
-        ffxDofQuadReferenceLuminance(reference, coc0, coc1, coc2, color0, color1, color2, color3);
-    FfxFloat32 weight0 =
-        max(ffxDofQuadWeight(reference, range, coc0), ffxDofLightKeep(color0, coc0, reference, referenceLight));
-    FfxFloat32 weight1 =
-        max(ffxDofQuadWeight(reference, range, coc1), ffxDofLightKeep(color1, coc1, reference, referenceLight));
-    FfxFloat32 weight2 =
-        max(ffxDofQuadWeight(reference, range, coc2), ffxDofLightKeep(color2, coc2, reference, referenceLight));
-    FfxFloat32 weight3 =
-        max(ffxDofQuadWeight(reference, range, coc3), ffxDofLightKeep(color3, coc3, reference, referenceLight));
-    FfxFloat32 normalization = 1.0f / (weight0 + weight1 + weight2 + weight3);  // the reference weighs 1
-    color = (color0 * FfxDofFloat(weight0) + color1 * FfxDofFloat(weight1) + color2 * FfxDofFloat(weight2) +
-             color3 * FfxDofFloat(weight3)) *
-            FfxDofFloat(normalization);
-    // A small floor keeps black quads at the plain weighted mean.
-    FfxFloat32 light0 = weight0 * (ffxDofLuminance(color0) + 1e-3f);
-    FfxFloat32 light1 = weight1 * (ffxDofLuminance(color1) + 1e-3f);
-    FfxFloat32 light2 = weight2 * (ffxDofLuminance(color2) + 1e-3f);
-    FfxFloat32 light3 = weight3 * (ffxDofLuminance(color3) + 1e-3f);
-    FfxFloat32 cocWeight0 = light0 * light0;
-    FfxFloat32 cocWeight1 = light1 * light1;
-    FfxFloat32 cocWeight2 = light2 * light2;
-    FfxFloat32 cocWeight3 = light3 * light3;
-    coc = (coc0 * cocWeight0 + coc1 * cocWeight1 + coc2 * cocWeight2 + coc3 * cocWeight3) /
-          (cocWeight0 + cocWeight1 + cocWeight2 + cocWeight3);
-    offset = ffxDofReduceLightOffset(light0, light1, light2, light3, offset0, offset1, offset2, offset3);
-}
-
-// ffxDofBilateralReduceLight of four full-resolution pixels (no offsets of their own), the offset dropped.
-FFX_DOF_INLINE void ffxDofBilateralReduce(FfxDofFloat3 color0, FfxDofFloat3 color1, FfxDofFloat3 color2,
-                                          FfxDofFloat3 color3, FfxFloat32 coc0, FfxFloat32 coc1, FfxFloat32 coc2,
-                                          FfxFloat32 coc3, FFX_DOF_OUT(FfxDofFloat3) color, FFX_DOF_OUT(FfxFloat32) coc)
-{
-    FfxFloat32x2 none = FfxFloat32x2(0.0f, 0.0f);
-    FfxFloat32x2 offset;
-    ffxDofBilateralReduceLight(color0, color1, color2, color3, coc0, coc1, coc2, coc3, none, none, none, none, color,
-                               coc, offset);
-}
-
 // A texel of the MIP chain as the levels above reduce it: colour, radius, the share of it its near sources cover
 // (1 where it is not partly near) and where its light lies (a full-resolution pixel: coverage 1, offset 0).
 struct FfxDofMipTexel
 {
-    FfxDofFloat3 color;
+    FfxFloat32x3 color;
     FfxFloat32 coc;
     FfxFloat32 coverage;
     FfxFloat32x2 lightOffset;
 };
-FFX_DOF_INLINE FfxDofMipTexel ffxDofMakeMipTexel(FfxDofFloat3 color, FfxFloat32 coc, FfxFloat32 coverage,
+FFX_DOF_INLINE FfxDofMipTexel ffxDofMakeMipTexel(FfxFloat32x3 color, FfxFloat32 coc, FfxFloat32 coverage,
                                                  FfxFloat32x2 lightOffset)
 {
     FfxDofMipTexel texel;
@@ -199,23 +143,35 @@ FFX_DOF_INLINE FfxDofMipTexel ffxDofMakeMipTexel(FfxDofFloat3 color, FfxFloat32 
     texel.lightOffset = lightOffset;
     return texel;
 }
-FFX_DOF_INLINE FfxDofMipTexel ffxDofPixelTexel(FfxDofFloat3 color, FfxFloat32 coc)
+FFX_DOF_INLINE FfxDofMipTexel ffxDofPixelTexel(FfxFloat32x3 color, FfxFloat32 coc)
 {
     return ffxDofMakeMipTexel(color, coc, 1.0f, FfxFloat32x2(0.0f, 0.0f));
 }
 
-// The texel of a quad whose nearest source is near and which also holds sources behind the near field, or
-// near sources that cover their own texel in part (Near coverage, ffx_dof_common.h): its near sources alone,
-// weighted by their coverage and their radius's closeness to the nearest (ffxDofBilateralWeight, at least a
-// trace so that every near source counts), with the sum of their coverages over 4, their radius less `inset`,
-// and where they lie (ffxDofReduceLightOffset). The same kernel makes every level: MIP 0 from full-resolution
-// pixels, MIPs 1..3 from the level below. `partial` false: the quad is all near and covered, or holds no near
-// source, or its nearest radius lies below `minRadius`.
-struct FfxDofNearQuad
+// The weights of a quad's four sources in the bilateral reduction: ffxDofQuadWeight about the quad's reference
+// radius, or more where ffxDofLightKeep keeps a source's light.
+FFX_DOF_INLINE FfxFloat32x4 ffxDofBilateralWeights(FfxDofMipTexel source0, FfxDofMipTexel source1,
+                                                   FfxDofMipTexel source2, FfxDofMipTexel source3)
 {
-    FfxBoolean partial;
-    FfxDofMipTexel texel;
-};
+    FfxFloat32 reference = ffxDofQuadReferenceCoc(source0.coc, source1.coc, source2.coc, source3.coc);
+    FfxFloat32 range = max(max(source0.coc, source1.coc), max(source2.coc, source3.coc)) -
+                       min(min(source0.coc, source1.coc), min(source2.coc, source3.coc));
+    FfxFloat32 referenceLight =
+        ffxDofQuadReferenceLuminance(reference, source0.coc, source1.coc, source2.coc, source0.color, source1.color,
+                                     source2.color, source3.color);
+    return FfxFloat32x4(
+        max(ffxDofQuadWeight(reference, range, source0.coc),
+            ffxDofLightKeep(source0.color, source0.coc, reference, referenceLight)),
+        max(ffxDofQuadWeight(reference, range, source1.coc),
+            ffxDofLightKeep(source1.color, source1.coc, reference, referenceLight)),
+        max(ffxDofQuadWeight(reference, range, source2.coc),
+            ffxDofLightKeep(source2.color, source2.coc, reference, referenceLight)),
+        max(ffxDofQuadWeight(reference, range, source3.coc),
+            ffxDofLightKeep(source3.color, source3.coc, reference, referenceLight)));
+}
+
+// The weight of a source among a quad's near sources: its coverage times its radius's closeness to the nearest
+// (ffxDofBilateralWeight, at least a trace so that every near source counts); 0 for a source behind the near field.
 FFX_DOF_INLINE FfxFloat32 ffxDofNearQuadWeight(FfxFloat32 nearest, FfxDofMipTexel source)
 {
     return source.coc >= FFX_DOF_NEAR_THRESHOLD
@@ -226,68 +182,113 @@ FFX_DOF_INLINE FfxFloat32 ffxDofNearShare(FfxDofMipTexel source)
 {
     return source.coc >= FFX_DOF_NEAR_THRESHOLD ? source.coverage : 0.0f;
 }
-FFX_DOF_INLINE FfxDofNearQuad ffxDofReduceNearSources(FfxDofMipTexel source0, FfxDofMipTexel source1,
-                                                      FfxDofMipTexel source2, FfxDofMipTexel source3,
-                                                      FfxFloat32 minRadius, FfxFloat32 inset)
+
+// Reduces a 2x2 quad of sources (0: top-left, 1: top-right, 2: bottom-left, 3: bottom-right) to one texel; the
+// same kernel makes every level, MIP 0 from full-resolution pixels and MIPs 1..3 from the level below.
+// - `partial` true: the quad's nearest source is near, at least `minRadius`, and the quad also holds sources
+//   behind the near field or near sources that cover their own texel in part (Near coverage, ffx_dof_common.h).
+//   The texel is its near sources alone (ffxDofNearQuadWeight), with the sum of their coverages over 4, their
+//   radius less `inset`.
+// - Otherwise the bilateral reduction (ffxDofBilateralWeights), coverage 1. Its radius is averaged with the square
+//   of each source's light (weight x luminance) as its weight: the texel's light spreads with the radius of the
+//   sources it comes from, and a bright point keeps its own radius among darker pixels of another one through
+//   every level. Weighted by the light itself, a 1 px light of radius 2 among pixels of radius 16 and a thousandth
+//   of its luminance came out at 2.04 in MIP 0 and 4.9 in MIP 3 (now 2.00 and 2.17), so the blur judged it by a
+//   larger radius than the composite does (ffx_dof_small_sources.h).
+// Both take where the light lies from the same weights (ffxDofReduceLightOffset). One tail serves both: every
+// level of the chain runs this kernel, and on lavapipe, which runs both sides of a branch, two tails cost the
+// pass about a tenth (docs/performance.md, "The colour downsample's arithmetic").
+struct FfxDofNearQuad
+{
+    FfxBoolean partial;
+    FfxDofMipTexel texel;
+};
+FFX_DOF_INLINE FfxDofNearQuad ffxDofReduceSources(FfxDofMipTexel source0, FfxDofMipTexel source1,
+                                                  FfxDofMipTexel source2, FfxDofMipTexel source3, FfxFloat32 minRadius,
+                                                  FfxFloat32 inset)
 {
     FfxDofNearQuad quad;
     FfxFloat32 nearest = max(max(source0.coc, source1.coc), max(source2.coc, source3.coc));
-    FfxFloat32 weight0 = ffxDofNearQuadWeight(nearest, source0);
-    FfxFloat32 weight1 = ffxDofNearQuadWeight(nearest, source1);
-    FfxFloat32 weight2 = ffxDofNearQuadWeight(nearest, source2);
-    FfxFloat32 weight3 = ffxDofNearQuadWeight(nearest, source3);
-    quad.texel.coverage =
+    FfxFloat32 nearCoverage =
         (ffxDofNearShare(source0) + ffxDofNearShare(source1) + ffxDofNearShare(source2) + ffxDofNearShare(source3)) *
         0.25f;
-    quad.partial = nearest >= minRadius && quad.texel.coverage < 1.0f;
-    FfxFloat32 normalization = 1.0f / max(weight0 + weight1 + weight2 + weight3, 1e-6f);
-    quad.texel.color = (source0.color * FfxDofFloat(weight0) + source1.color * FfxDofFloat(weight1) +
-                        source2.color * FfxDofFloat(weight2) + source3.color * FfxDofFloat(weight3)) *
-                       FfxDofFloat(normalization);
-    quad.texel.coc =
-        max((source0.coc * weight0 + source1.coc * weight1 + source2.coc * weight2 + source3.coc * weight3) *
-                    normalization -
-                inset,
-            FFX_DOF_NEAR_THRESHOLD);
-    quad.texel.lightOffset =
-        ffxDofReduceLightOffset(weight0 + 1e-6f, weight1 + 1e-6f, weight2 + 1e-6f, weight3 + 1e-6f, source0.lightOffset,
-                                source1.lightOffset, source2.lightOffset, source3.lightOffset);
+    quad.partial = nearest >= minRadius && nearCoverage < 1.0f;
+    FfxFloat32x4 weight;
+    FfxFloat32x4 light;
+    FfxFloat32x4 cocWeight;
+    if (quad.partial)
+    {
+        weight = FfxFloat32x4(ffxDofNearQuadWeight(nearest, source0), ffxDofNearQuadWeight(nearest, source1),
+                              ffxDofNearQuadWeight(nearest, source2), ffxDofNearQuadWeight(nearest, source3));
+        light = weight + FfxFloat32x4(1e-6f, 1e-6f, 1e-6f, 1e-6f);
+        cocWeight = weight;
+    }
+    else
+    {
+        weight = ffxDofBilateralWeights(source0, source1, source2, source3);
+        // A small floor keeps black quads at the plain weighted mean.
+        light = weight * (FfxFloat32x4(ffxDofLuminance32(source0.color), ffxDofLuminance32(source1.color),
+                                       ffxDofLuminance32(source2.color), ffxDofLuminance32(source3.color)) +
+                          FfxFloat32x4(1e-3f, 1e-3f, 1e-3f, 1e-3f));
+        cocWeight = light * light;
+    }
+    // The bilateral weights sum to at least 1 (the reference's own).
+    FfxFloat32 normalization = 1.0f / max(weight.x + weight.y + weight.z + weight.w, 1e-6f);
+    quad.texel.color = (source0.color * weight.x + source1.color * weight.y + source2.color * weight.z +
+                        source3.color * weight.w) *
+                       normalization;
+    FfxFloat32 cocSum =
+        source0.coc * cocWeight.x + source1.coc * cocWeight.y + source2.coc * cocWeight.z + source3.coc * cocWeight.w;
+    quad.texel.coc = quad.partial ? max(cocSum * normalization - inset, FFX_DOF_NEAR_THRESHOLD)
+                                  : cocSum / (cocWeight.x + cocWeight.y + cocWeight.z + cocWeight.w);
+    quad.texel.coverage = quad.partial ? nearCoverage : 1.0f;
+    quad.texel.lightOffset = ffxDofReduceLightOffset(light.x, light.y, light.z, light.w, source0.lightOffset,
+                                                     source1.lightOffset, source2.lightOffset, source3.lightOffset);
     return quad;
 }
-// MIP 0: a quad of full-resolution pixels.
-FFX_DOF_INLINE FfxDofNearQuad ffxDofReduceNearQuad(FfxDofFloat3 color0, FfxDofFloat3 color1, FfxDofFloat3 color2,
-                                                   FfxDofFloat3 color3, FfxFloat32 coc0, FfxFloat32 coc1,
+
+// The bilateral reduction alone (a `minRadius` no radius reaches), of four sources with light offsets.
+FFX_DOF_INLINE void ffxDofBilateralReduceLight(FfxFloat32x3 color0, FfxFloat32x3 color1, FfxFloat32x3 color2,
+                                               FfxFloat32x3 color3, FfxFloat32 coc0, FfxFloat32 coc1, FfxFloat32 coc2,
+                                               FfxFloat32 coc3, FfxFloat32x2 offset0, FfxFloat32x2 offset1,
+                                               FfxFloat32x2 offset2, FfxFloat32x2 offset3,
+                                               FFX_DOF_OUT(FfxFloat32x3) color, FFX_DOF_OUT(FfxFloat32) coc,
+                                               FFX_DOF_OUT(FfxFloat32x2) offset)
+{
+    FfxDofNearQuad quad = ffxDofReduceSources(
+        ffxDofMakeMipTexel(color0, coc0, 1.0f, offset0), ffxDofMakeMipTexel(color1, coc1, 1.0f, offset1),
+        ffxDofMakeMipTexel(color2, coc2, 1.0f, offset2), ffxDofMakeMipTexel(color3, coc3, 1.0f, offset3),
+        FFX_DOF_FLOAT32_MAX, 0.0f);
+    color = quad.texel.color;
+    coc = quad.texel.coc;
+    offset = quad.texel.lightOffset;
+}
+
+// ffxDofBilateralReduceLight of four full-resolution pixels (no offsets of their own), the offset dropped.
+FFX_DOF_INLINE void ffxDofBilateralReduce(FfxFloat32x3 color0, FfxFloat32x3 color1, FfxFloat32x3 color2,
+                                          FfxFloat32x3 color3, FfxFloat32 coc0, FfxFloat32 coc1, FfxFloat32 coc2,
+                                          FfxFloat32 coc3, FFX_DOF_OUT(FfxFloat32x3) color, FFX_DOF_OUT(FfxFloat32) coc)
+{
+    FfxFloat32x2 none = FfxFloat32x2(0.0f, 0.0f);
+    FfxFloat32x2 offset;
+    ffxDofBilateralReduceLight(color0, color1, color2, color3, coc0, coc1, coc2, coc3, none, none, none, none, color,
+                               coc, offset);
+}
+
+// MIP 0 of a quad of full-resolution pixels (each a point of coverage 1): ffxDofReduceSources.
+FFX_DOF_INLINE FfxDofNearQuad ffxDofReduceNearQuad(FfxFloat32x3 color0, FfxFloat32x3 color1, FfxFloat32x3 color2,
+                                                   FfxFloat32x3 color3, FfxFloat32 coc0, FfxFloat32 coc1,
                                                    FfxFloat32 coc2, FfxFloat32 coc3)
 {
-    return ffxDofReduceNearSources(ffxDofPixelTexel(color0, coc0), ffxDofPixelTexel(color1, coc1),
-                                   ffxDofPixelTexel(color2, coc2), ffxDofPixelTexel(color3, coc3),
-                                   FFX_DOF_NEAR_COVERAGE_MIN_RADIUS, FFX_DOF_NEAR_COVERAGE_INSET);
+    return ffxDofReduceSources(ffxDofPixelTexel(color0, coc0), ffxDofPixelTexel(color1, coc1),
+                               ffxDofPixelTexel(color2, coc2), ffxDofPixelTexel(color3, coc3),
+                               FFX_DOF_NEAR_COVERAGE_MIN_RADIUS, FFX_DOF_NEAR_COVERAGE_INSET);
 }
-
-// A texel from four sources of the level below: their near sources where they cover it in part
-// (ffxDofReduceNearSources), else the bilateral reduction.
-FFX_DOF_INLINE FfxDofMipTexel ffxDofReduceTexel(FfxDofMipTexel source0, FfxDofMipTexel source1, FfxDofMipTexel source2,
-                                                FfxDofMipTexel source3, FfxFloat32 minRadius, FfxFloat32 inset)
-{
-    FfxDofNearQuad nearSources = ffxDofReduceNearSources(source0, source1, source2, source3, minRadius, inset);
-    if (nearSources.partial)
-        return nearSources.texel;
-    FfxDofMipTexel texel;
-    ffxDofBilateralReduceLight(source0.color, source1.color, source2.color, source3.color, source0.coc, source1.coc,
-                               source2.coc, source3.coc, source0.lightOffset, source1.lightOffset, source2.lightOffset,
-                               source3.lightOffset, texel.color, texel.coc, texel.lightOffset);
-    texel.coverage = 1.0f;
-    return texel;
-}
-
-// MIP 0 from a quad of full-resolution pixels (each a point of coverage 1).
-FFX_DOF_INLINE FfxDofMipTexel ffxDofReduceQuadTexel(FfxDofFloat3 color0, FfxDofFloat3 color1, FfxDofFloat3 color2,
-                                                    FfxDofFloat3 color3, FfxFloat32 coc0, FfxFloat32 coc1,
+FFX_DOF_INLINE FfxDofMipTexel ffxDofReduceQuadTexel(FfxFloat32x3 color0, FfxFloat32x3 color1, FfxFloat32x3 color2,
+                                                    FfxFloat32x3 color3, FfxFloat32 coc0, FfxFloat32 coc1,
                                                     FfxFloat32 coc2, FfxFloat32 coc3)
 {
-    return ffxDofReduceTexel(ffxDofPixelTexel(color0, coc0), ffxDofPixelTexel(color1, coc1),
-                             ffxDofPixelTexel(color2, coc2), ffxDofPixelTexel(color3, coc3),
-                             FFX_DOF_NEAR_COVERAGE_MIN_RADIUS, FFX_DOF_NEAR_COVERAGE_INSET);
+    return ffxDofReduceNearQuad(color0, color1, color2, color3, coc0, coc1, coc2, coc3).texel;
 }
 
 // A texel of MIP 1..3 from four of the level below. A partly covered child's radius is at least
@@ -296,8 +297,9 @@ FFX_DOF_INLINE FfxDofMipTexel ffxDofReduceQuadTexel(FfxDofFloat3 color0, FfxDofF
 FFX_DOF_INLINE FfxDofMipTexel ffxDofReduceMipTexel(FfxDofMipTexel texel0, FfxDofMipTexel texel1, FfxDofMipTexel texel2,
                                                    FfxDofMipTexel texel3)
 {
-    return ffxDofReduceTexel(texel0, texel1, texel2, texel3,
-                             FFX_DOF_NEAR_COVERAGE_MIN_RADIUS - FFX_DOF_NEAR_COVERAGE_INSET, 0.0f);
+    return ffxDofReduceSources(texel0, texel1, texel2, texel3,
+                               FFX_DOF_NEAR_COVERAGE_MIN_RADIUS - FFX_DOF_NEAR_COVERAGE_INSET, 0.0f)
+        .texel;
 }
 
 // ---- Light rims -------------------------------------------------------------------------------------
@@ -357,7 +359,7 @@ FFX_DOF_INLINE FfxFloat32 ffxDofColorRangeScale(FfxFloat32 peak)
     return ffxDofAsFloat(FfxUInt32(127 - k) << 23u);
 }
 
-FFX_DOF_GROUPSHARED FfxDofFloat3 ffxDofSharedMipColor[FFX_DOF_GROUP_THREADS];
+FFX_DOF_GROUPSHARED FfxFloat32x3 ffxDofSharedMipColor[FFX_DOF_GROUP_THREADS];
 FFX_DOF_GROUPSHARED FfxFloat32 ffxDofSharedMipCoc[FFX_DOF_GROUP_THREADS];
 FFX_DOF_GROUPSHARED FfxFloat32x2 ffxDofSharedMipLightOffset[FFX_DOF_GROUP_THREADS];
 
@@ -468,7 +470,7 @@ FFX_DOF_INLINE FfxFloat32 ffxDofLightRimCocInQuad(FfxFloat32x2 around[16], FfxUI
     return ffxDofLightRimCoc(rim, around[centre].x, around[centre].y);
 }
 
-FFX_DOF_INLINE FfxDofFloat3 ffxDofRgb(FfxFloat32x4 color) { return FfxDofFloat3(color.x, color.y, color.z); }
+FFX_DOF_INLINE FfxFloat32x3 ffxDofRgb(FfxFloat32x4 color) { return FfxFloat32x3(color.x, color.y, color.z); }
 
 FFX_DOF_INLINE void ffxDofDownsampleColor(FfxUInt32x2 groupId, FfxUInt32 localIndex)
 {
@@ -526,7 +528,15 @@ FFX_DOF_INLINE void ffxDofDownsampleColor(FfxUInt32x2 groupId, FfxUInt32 localIn
     FfxFloat32x2 around[16];
     FFX_DOF_UNROLL
     for (FfxUInt32 k = 0u; k < 16u; ++k)
+    {
+        if (k == 5u || k == 6u || k == 9u || k == 10u)
+            continue;
         around[k] = ffxDofSharedRimSample[(cell.y + k / 4u - 1u) * FFX_DOF_RIM_SIDE + cell.x + k % 4u - 1u];
+    }
+    around[5] = rim0;
+    around[6] = rim1;
+    around[9] = rim2;
+    around[10] = rim3;
     FfxFloat32 coc0 = ffxDofLightRimCocInQuad(around, 0u);
     FfxFloat32 coc1 = ffxDofLightRimCocInQuad(around, 1u);
     FfxFloat32 coc2 = ffxDofLightRimCocInQuad(around, 2u);
@@ -569,7 +579,7 @@ FFX_DOF_INLINE void ffxDofDownsampleColor(FfxUInt32x2 groupId, FfxUInt32 localIn
                                                 ffxDofRgb(input3), coc0, coc1, coc2, coc3);
     if (texel.x < constants.halfSize.x && texel.y < constants.halfSize.y)
     {
-        ffxDofStoreHalfColor(texel, ffxDofRoundForPackedColor(mip0.color));
+        ffxDofStoreHalfColor(texel, ffxDofToDofFloat3(ffxDofRoundForPackedColor32(mip0.color)));
         ffxDofStoreHalfCoc(texel, ffxDofPackNearCoverage(ffxDofRoundForHalfCoc(mip0.coc), mip0.coverage));
     }
     ffxDofStoreSharedMipTexel(localIndex, mip0);
@@ -597,7 +607,7 @@ FFX_DOF_INLINE void ffxDofDownsampleColor(FfxUInt32x2 groupId, FfxUInt32 localIn
             if (mipTexel.x < mipSize.x && mipTexel.y < mipSize.y)
             {
                 ffxDofStoreCoarseMip(mip, mipTexel,
-                                     ffxDofPackCoarseTexel(ffxDofToFloat32x3(ffxDofRoundForPackedColor(reduced.color)),
+                                     ffxDofPackCoarseTexel(ffxDofRoundForPackedColor32(reduced.color),
                                                            ffxDofPackCoarseNearCoverage(reduced.coc, reduced.coverage),
                                                            reduced.lightOffset));
             }
