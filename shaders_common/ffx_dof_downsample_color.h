@@ -156,18 +156,16 @@ FFX_DOF_INLINE FfxFloat32x4 ffxDofBilateralWeights(FfxDofMipTexel source0, FfxDo
     FfxFloat32 reference = ffxDofQuadReferenceCoc(source0.coc, source1.coc, source2.coc, source3.coc);
     FfxFloat32 range = max(max(source0.coc, source1.coc), max(source2.coc, source3.coc)) -
                        min(min(source0.coc, source1.coc), min(source2.coc, source3.coc));
-    FfxFloat32 referenceLight =
-        ffxDofQuadReferenceLuminance(reference, source0.coc, source1.coc, source2.coc, source0.color, source1.color,
-                                     source2.color, source3.color);
-    return FfxFloat32x4(
-        max(ffxDofQuadWeight(reference, range, source0.coc),
-            ffxDofLightKeep(source0.color, source0.coc, reference, referenceLight)),
-        max(ffxDofQuadWeight(reference, range, source1.coc),
-            ffxDofLightKeep(source1.color, source1.coc, reference, referenceLight)),
-        max(ffxDofQuadWeight(reference, range, source2.coc),
-            ffxDofLightKeep(source2.color, source2.coc, reference, referenceLight)),
-        max(ffxDofQuadWeight(reference, range, source3.coc),
-            ffxDofLightKeep(source3.color, source3.coc, reference, referenceLight)));
+    FfxFloat32 referenceLight = ffxDofQuadReferenceLuminance(
+        reference, source0.coc, source1.coc, source2.coc, source0.color, source1.color, source2.color, source3.color);
+    return FfxFloat32x4(max(ffxDofQuadWeight(reference, range, source0.coc),
+                            ffxDofLightKeep(source0.color, source0.coc, reference, referenceLight)),
+                        max(ffxDofQuadWeight(reference, range, source1.coc),
+                            ffxDofLightKeep(source1.color, source1.coc, reference, referenceLight)),
+                        max(ffxDofQuadWeight(reference, range, source2.coc),
+                            ffxDofLightKeep(source2.color, source2.coc, reference, referenceLight)),
+                        max(ffxDofQuadWeight(reference, range, source3.coc),
+                            ffxDofLightKeep(source3.color, source3.coc, reference, referenceLight)));
 }
 
 // The weight of a source among a quad's near sources: its coverage times its radius's closeness to the nearest
@@ -234,9 +232,9 @@ FFX_DOF_INLINE FfxDofNearQuad ffxDofReduceSources(FfxDofMipTexel source0, FfxDof
     }
     // The bilateral weights sum to at least 1 (the reference's own).
     FfxFloat32 normalization = 1.0f / max(weight.x + weight.y + weight.z + weight.w, 1e-6f);
-    quad.texel.color = (source0.color * weight.x + source1.color * weight.y + source2.color * weight.z +
-                        source3.color * weight.w) *
-                       normalization;
+    quad.texel.color =
+        (source0.color * weight.x + source1.color * weight.y + source2.color * weight.z + source3.color * weight.w) *
+        normalization;
     FfxFloat32 cocSum =
         source0.coc * cocWeight.x + source1.coc * cocWeight.y + source2.coc * cocWeight.z + source3.coc * cocWeight.w;
     quad.texel.coc = quad.partial ? max(cocSum * normalization - inset, FFX_DOF_NEAR_THRESHOLD)
