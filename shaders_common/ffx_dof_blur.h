@@ -870,8 +870,11 @@ FFX_DOF_INLINE FfxDofBlurResult ffxDofFinishGather(FfxDofGather gather, FfxDofKe
 {
     if (gather.nearWeight > 0.0f)
     {
-        result.nearColor = ffxDofToDofFloat3(gather.nearSum / gather.nearWeight);
-        result.alpha.x = ffxDofNearOpacity(gather.nearWeight);
+        // The opacity LAYER_ALPHA keeps, the colour scaled so that their product is what was gathered.
+        FfxFloat32 opacity = ffxDofNearOpacity(gather.nearWeight);
+        result.alpha.x = ffxDofStoredNearOpacity(opacity);
+        FfxFloat32 keptShare = result.alpha.x > 0.0f ? opacity / result.alpha.x : 1.0f;
+        result.nearColor = ffxDofToDofFloat3(gather.nearSum * (keptShare / gather.nearWeight));
     }
     // The hole fill is background to the near texel it fills.
     FfxFloat32 fillWeight = kernel.centerIsNear ? fillAreaWeight : 0.0f;

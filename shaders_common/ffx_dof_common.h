@@ -324,9 +324,23 @@ FFX_DOF_INLINE FfxFloat32 ffxDofCoarseNearCoverage(FfxFloat32 coc)
 // (0.971 of the width against 0.967; docs/performance.md, "LAYER_ALPHA in one byte").
 // The value stored lies a quarter of a step above its byte's multiple of 1/255, so that a conversion that
 // rounds to nearest and one that truncates (as lavapipe does its R16 float stores) store the same byte.
+//
+// A near opacity below half a step would round to none: a small near light, whose disc's opacity is its share of
+// the disc (a 1 px light at radius 8 half-res px: 0.0012), vanished, and one of a few steps drew up to 1.5 times
+// its energy. So an opacity from FFX_DOF_NEAR_OPACITY_KEPT up keeps at least one step, and the blur stores the
+// near colour times the opacity over the stored one (ffxDofStoredNearOpacity): colour times opacity, the light
+// the near layer adds, is what was gathered, and the stored step only sets how much of what lies behind it
+// hides (at most 1/127 more).
+#define FFX_DOF_NEAR_OPACITY_STEPS 127.0f
+#define FFX_DOF_NEAR_OPACITY_KEPT 1e-4f
+FFX_DOF_INLINE FfxFloat32 ffxDofStoredNearOpacity(FfxFloat32 opacity)
+{
+    FfxFloat32 steps = floor(ffxDofSaturate(opacity) * FFX_DOF_NEAR_OPACITY_STEPS + 0.5f);
+    return (opacity >= FFX_DOF_NEAR_OPACITY_KEPT ? max(steps, 1.0f) : steps) * (1.0f / FFX_DOF_NEAR_OPACITY_STEPS);
+}
 FFX_DOF_INLINE FfxFloat32 ffxDofPackLayerAlpha(FfxFloat32x2 nearOpacityFarValidity)
 {
-    FfxFloat32 opacitySteps = floor(ffxDofSaturate(nearOpacityFarValidity.x) * 127.0f + 0.5f);
+    FfxFloat32 opacitySteps = floor(ffxDofStoredNearOpacity(nearOpacityFarValidity.x) * 127.0f + 0.5f);
     return (opacitySteps + (nearOpacityFarValidity.y > 0.0f ? 128.0f : 0.0f) + 0.25f) * (1.0f / 255.0f);
 }
 FFX_DOF_INLINE FfxFloat32x2 ffxDofUnpackLayerAlpha(FfxFloat32 packed)

@@ -387,9 +387,10 @@ std::vector<ThinBarCase> runThinBarCases(vkrun::Device& device) {
 
 std::string SmallLightCase::describe() const {
     std::ostringstream text;
-    text << "light " << size << " px at radius " << radius << " px, offset (" << offsetX << ", " << offsetY << "), "
-         << (float32 ? "32" : "16") << "-bit: energy added " << energyRatio << " of the input's, centre " << centre
-         << " (truth " << truthCentre << "), disc " << discShift << " px from the light";
+    text << (near ? "near " : "") << "light " << size << " px at radius " << radius << " px, offset (" << offsetX
+         << ", " << offsetY << "), " << (float32 ? "32" : "16") << "-bit: energy added " << energyRatio
+         << " of the input's, centre " << centre << " (truth " << truthCentre << "), disc " << discShift
+         << " px from the light";
     return text.str();
 }
 
@@ -575,27 +576,33 @@ namespace {
 constexpr uint32_t kLightsWidth = 160, kLightsHeight = 128;
 constexpr double kLightsBackground = 0.05, kLightsBackgroundRadius = 32.0;
 
+// The near variant: the same background of 0.05 in focus, the lights in front of it at near radii up to this.
+constexpr double kNearLightsMaxRadius = 40.0, kNearLightsFocusDepth = 32.0;
+
 struct SquareLight {
     int x0 = 0, y0 = 0, size = 0;      // first pixel, px per side
-    double value = 0.0, radius = 0.0;  // radius: full-res px, far field
+    double value = 0.0, radius = 0.0;  // radius: full-res px, in the far field (or the near field: `near` below)
 };
 
-// The effect's output (RGBA32F) for the lights on the background. Radius (half-res px) = depth * cocScale:
-// the depth is the full-res radius.
+// The effect's output (RGBA32F) for the lights on the background. Far (issue 17's minimal case): radius
+// (half-res px) = depth * cocScale, so the depth is the full-res radius. `near`: the background lies at the
+// focus (radius 0) and a light of radius r at depth kNearLightsFocusDepth - r, nearer.
 vkrun::HostImage runSquareLights(vkrun::Device& device, const std::vector<SquareLight>& lights, bool float32,
-                                 uint32_t contextFlags = 0) {
+                                 uint32_t contextFlags = 0, bool near = false) {
+    const double backgroundDepth = near ? kNearLightsFocusDepth : kLightsBackgroundRadius;
+    const auto lightDepth = [&](double radius) { return near ? kNearLightsFocusDepth - radius : radius; };
     vkrun::HostImage color(kLightsWidth, kLightsHeight, 4), depth(kLightsWidth, kLightsHeight, 1);
     for (uint32_t y = 0; y < kLightsHeight; ++y) {
         for (uint32_t x = 0; x < kLightsWidth; ++x) {
             float* p = color.at(x, y);
             p[0] = p[1] = p[2] = float(kLightsBackground);
             p[3] = 1.0f;
-            depth.at(x, y)[0] = float(kLightsBackgroundRadius);
+            depth.at(x, y)[0] = float(backgroundDepth);
             for (const SquareLight& light : lights)
                 if (int(x) >= light.x0 && int(x) < light.x0 + light.size && int(y) >= light.y0 &&
                     int(y) < light.y0 + light.size) {
                     p[0] = p[1] = p[2] = float(light.value);
-                    depth.at(x, y)[0] = float(light.radius);
+                    depth.at(x, y)[0] = float(lightDepth(light.radius));
                 }
         }
     }
@@ -605,8 +612,8 @@ vkrun::HostImage runSquareLights(vkrun::Device& device, const std::vector<Square
     settings.outputFormat = VK_FORMAT_R32G32B32A32_SFLOAT;
     settings.quality = kEffectQuality;
     settings.cocScale = -0.5f;
-    settings.cocBias = 0.0f;
-    settings.cocLimitFactor = float(kLightsBackgroundRadius / kLightsHeight) * 1.02f;
+    settings.cocBias = near ? float(0.5 * kNearLightsFocusDepth) : 0.0f;
+    settings.cocLimitFactor = float((near ? kNearLightsMaxRadius : kLightsBackgroundRadius) / kLightsHeight) * 1.02f;
     settings.forceFloat32 = float32;
     settings.contextFlags = contextFlags;
     return vkrun::runEffect(device, color, depth, settings).output;
@@ -640,9 +647,14 @@ std::vector<SmallLightCase> runSmallLightCasesBelowGate(vkrun::Device& device) {
                               smallLightOffsets());
 }
 
+std::vector<SmallLightCase> runNearLightCases(vkrun::Device& device) {
+    return runSmallLightCases(device, {std::begin(kNearLightRadii), std::end(kNearLightRadii)},
+                              {std::begin(kNearLightSizes), std::end(kNearLightSizes)}, smallLightOffsets(), true);
+}
+
 std::vector<SmallLightCase> runSmallLightCases(vkrun::Device& device, const std::vector<double>& radii,
                                                const std::vector<int>& sizes,
-                                               const std::vector<std::array<int, 2>>& offsets) {
+                                               const std::vector<std::array<int, 2>>& offsets, bool near) {
     constexpr uint32_t kWidth = kLightsWidth, kHeight = kLightsHeight;
     constexpr double kBackground = kLightsBackground, kLight = 50.0;
     // The truth's centre: the light's share of the disc about its centre (64 x 64 points per pixel of the
@@ -661,13 +673,15 @@ std::vector<SmallLightCase> runSmallLightCases(vkrun::Device& device, const std:
     };
     std::vector<SmallLightCase> cases;
     for (bool float32 : {false, true}) {
-        const vkrun::HostImage without = runSquareLights(device, {}, float32);
+        const vkrun::HostImage without = runSquareLights(device, {}, float32, 0, near);
         for (const auto& offset : offsets) {
             for (double radius : radii) {
                 for (int size : sizes) {
                     const int x0 = int(kWidth) / 2 - size / 2 + offset[0], y0 = int(kHeight) / 2 - size / 2 + offset[1];
-                    const vkrun::HostImage with = runSquareLights(device, {{x0, y0, size, kLight, radius}}, float32);
+                    const vkrun::HostImage with =
+                        runSquareLights(device, {{x0, y0, size, kLight, radius}}, float32, 0, near);
                     SmallLightCase light;
+                    light.near = near;
                     light.size = size;
                     light.radius = radius;
                     light.offsetX = offset[0];

@@ -174,6 +174,7 @@ struct SmallLightCase {
     double radius = 0.0;
     int offsetX = 0, offsetY = 0;
     bool float32 = false;
+    bool near = false;         // in front of an in-focus background (runNearLightCases), else far
     double energyRatio = 0.0;  // added to the output / added to the input
     double centre = 0.0, truthCentre = 0.0;
     // How far the centre of what the light adds to the output lies from the light's centre (full-res px).
@@ -187,7 +188,14 @@ struct SmallLightCase {
 std::vector<SmallLightCase> runSmallLightCases(vkrun::Device& device);
 std::vector<SmallLightCase> runSmallLightCases(vkrun::Device& device, const std::vector<double>& radii,
                                                const std::vector<int>& sizes,
-                                               const std::vector<std::array<int, 2>>& offsets);
+                                               const std::vector<std::array<int, 2>>& offsets, bool near = false);
+// The same lights in the near field, in front of the background in focus: a near light's disc is its share of
+// the disc's opacity, which LAYER_ALPHA keeps in 127ths (ffxDofStoredNearOpacity). Until 2026-11-30 a 1 px light
+// at radius 16 px or more vanished and lights of a few px drew up to 1.47 times their energy.
+constexpr double kNearLightRadii[] = {8.0, 16.0, 24.0, 40.0};  // full-res px, near field
+constexpr int kNearLightSizes[] = {1, 2, 3, 5, 9};
+// Those cases at kSmallLightOffsets, both precisions.
+std::vector<SmallLightCase> runNearLightCases(vkrun::Device& device);
 // Below the gated radii: lights whose own pixels the composite blurs at full resolution (|radius| under 6
 // px) while the background around them takes the half-resolution layers. Issue 17 asks every depth; these
 // are a known failure (docs/quality.md, small lights), with a ratchet on how many keep their energy.

@@ -634,9 +634,15 @@ TEST_CASE("Past the image border, a near object goes on as its edge, no more opa
     Layers layers;
     ffxdoftest::runPipeline(scene, Settings{}, &layers);
     const uint32_t borderColumn = 0, insideColumn = 12;
+    // The near layer's light over the object's colour: the gathered opacity (LAYER_ALPHA keeps whole 127ths and
+    // the near colour makes up the rest, ffxDofStoredNearOpacity).
+    const auto gatheredOpacity = [&](uint32_t row, uint32_t column) {
+        const size_t i = size_t(row) * layers.halfWidth + column;
+        return layers.nearColor[i].x * layers.layerAlpha[i].x / kObject.x;
+    };
     for (uint32_t row = 20; row < 28; ++row) {
-        const float border = layers.layerAlpha[size_t(row) * layers.halfWidth + borderColumn].x;
-        const float inside = layers.layerAlpha[size_t(row) * layers.halfWidth + insideColumn].x;
+        const float border = gatheredOpacity(row, borderColumn);
+        const float inside = gatheredOpacity(row, insideColumn);
         INFO("texel row " << row << ": near opacity at the border " << border << ", inside " << inside);
         CHECK(std::abs(border - inside) < 0.005f);  // 0.008 to 0.04 more at the border before
     }
