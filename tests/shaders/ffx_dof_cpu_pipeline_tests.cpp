@@ -634,11 +634,13 @@ TEST_CASE("Past the image border, a near object goes on as its edge, no more opa
     Layers layers;
     ffxdoftest::runPipeline(scene, Settings{}, &layers);
     const uint32_t borderColumn = 0, insideColumn = 12;
-    // The near layer's light over the object's colour: the gathered opacity (LAYER_ALPHA keeps whole 127ths and
-    // the near colour makes up the rest, ffxDofStoredNearOpacity).
+    // The gathered opacity: LAYER_ALPHA keeps whole 127ths (ffxDofStoredNearOpacity) and the near colour makes up
+    // the rest, between the object's colour and the far layer's: stored colour x stored opacity = object x gathered
+    // opacity + far x (stored - gathered opacity).
     const auto gatheredOpacity = [&](uint32_t row, uint32_t column) {
         const size_t i = size_t(row) * layers.halfWidth + column;
-        return layers.nearColor[i].x * layers.layerAlpha[i].x / kObject.x;
+        const float stored = layers.layerAlpha[i].x, far = layers.farColor[i].x;
+        return (layers.nearColor[i].x - far) * stored / (kObject.x - far);
     };
     for (uint32_t row = 20; row < 28; ++row) {
         const float border = gatheredOpacity(row, borderColumn);
