@@ -368,7 +368,7 @@ void writeNearLights(std::ostream& md, vkrun::Device& device) {
     md << "\n"
        << within << " of " << cases.size() << " cases within 5%, " << largerWithin << " of " << larger
        << " of 2 px and more (`quality: small near lights`, a gate on those within 5% and on the 1 px lights within "
-          "7%). Until 2026-11-30 a 1 px light at radius 16 px or more, and a 2 px light from 24 px, vanished, and "
+          "8%). Until 2026-11-30 a 1 px light at radius 16 px or more, and a 2 px light from 24 px, vanished, and "
           "lights a little larger drew up to 1.47 times their energy: LAYER_ALPHA keeps the near opacity in 127ths, "
           "and their discs' opacities rounded to none or to one step. Now an opacity from 1e-4 keeps at least one "
           "step, and the blur makes up the difference in the near colour, between the gathered colour and the "
