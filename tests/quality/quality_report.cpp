@@ -221,6 +221,30 @@ void writeThinBars(std::ostream& md, vkrun::Device& device, const std::filesyste
           "summed 2.14 px of opacity, 2 px at radius 24 0.87 px (docs/technique.md).\n\n";
 }
 
+// A table of the energy added over the input's, a row per radius and a column per size: its range over the
+// cases of that radius and size (places and precisions), `format` per figure.
+void writeEnergyBySize(std::ostream& md, const std::vector<quality::SmallLightCase>& cases,
+                       const std::vector<double>& radii, const std::vector<int>& sizes, const char* format) {
+    md << "| radius (px) |";
+    for (int size : sizes) md << " " << size << " px |";
+    md << "\n|---:|";
+    for (size_t k = 0; k < sizes.size(); ++k) md << "---|";
+    md << "\n";
+    for (double radius : radii) {
+        md << "| " << number(radius, "%g") << " |";
+        for (int size : sizes) {
+            double low = 1e30, high = 0.0;
+            for (const quality::SmallLightCase& light : cases) {
+                if (light.radius != radius || light.size != size) continue;
+                low = std::min(low, light.energyRatio);
+                high = std::max(high, light.energyRatio);
+            }
+            md << " " << number(low, format) << " to " << number(high, format) << " |";
+        }
+        md << "\n";
+    }
+}
+
 // Issue 17's minimal case of small lights (tests/quality/test_small_lights.cpp): per radius and
 // precision, the range of the energy added and of the centre against the truth's over the sizes.
 void writeSmallLights(std::ostream& md, vkrun::Device& device) {
@@ -286,26 +310,9 @@ void writeSmallLights(std::ostream& md, vkrun::Device& device) {
        << "The same lights (1, 2, 3 and 5 px, the same three places) at radii of 2, 3 and 4 px, where the "
           "composite blurs the light's own pixels at full resolution (radii under 6 px: the fixed 3x3 blur, "
           "or the own-surface gather) while the background around them, at radius 32, takes the half-res "
-          "layers. Energy added over the input's, per size (the range over the places and both precisions):\n\n"
-       << "| radius (px) |";
-    for (int size : sizes) md << " " << size << " px |";
-    md << "\n|---:|";
-    for (size_t k = 0; k < sizes.size(); ++k) md << "---|";
-    md << "\n";
+          "layers. Energy added over the input's, per size (the range over the places and both precisions):\n\n";
+    writeEnergyBySize(md, below, radii, sizes, "%.2f");
     size_t belowWithin = 0;
-    for (double radius : radii) {
-        md << "| " << number(radius, "%g") << " |";
-        for (int size : sizes) {
-            double low = 1e30, high = 0.0;
-            for (const quality::SmallLightCase& light : below) {
-                if (light.radius != radius || light.size != size) continue;
-                low = std::min(low, light.energyRatio);
-                high = std::max(high, light.energyRatio);
-            }
-            md << " " << number(low, "%.2f") << " to " << number(high, "%.2f") << " |";
-        }
-        md << "\n";
-    }
     for (const quality::SmallLightCase& light : below) belowWithin += light.energyOk();
     md << "\n"
        << belowWithin << " of " << below.size()
@@ -338,26 +345,10 @@ void writeNearLights(std::ostream& md, vkrun::Device& device) {
        << "The same lights (value 50; 1, 2, 3, 5 and 9 px; the same three places) in the near field, at radii of 8 "
           "to 40 px, in front of the background of 0.05 in focus. A near light's disc is its share of the disc's "
           "opacity over the background: a 1 px light at radius 16 px covers 0.0012 of it. Energy added over the "
-          "input's, per size (the range over the places and both precisions):\n\n"
-       << "| radius (px) |";
-    for (int size : quality::kNearLightSizes) md << " " << size << " px |";
-    md << "\n|---:|";
-    for (size_t k = 0; k < std::size(quality::kNearLightSizes); ++k) md << "---|";
-    md << "\n";
+          "input's, per size (the range over the places and both precisions):\n\n";
+    writeEnergyBySize(md, cases, {std::begin(quality::kNearLightRadii), std::end(quality::kNearLightRadii)},
+                      {std::begin(quality::kNearLightSizes), std::end(quality::kNearLightSizes)}, "%.3f");
     size_t within = 0, largerWithin = 0, larger = 0;
-    for (double radius : quality::kNearLightRadii) {
-        md << "| " << number(radius, "%g") << " |";
-        for (int size : quality::kNearLightSizes) {
-            double low = 1e30, high = 0.0;
-            for (const quality::SmallLightCase& light : cases) {
-                if (light.radius != radius || light.size != size) continue;
-                low = std::min(low, light.energyRatio);
-                high = std::max(high, light.energyRatio);
-            }
-            md << " " << number(low, "%.3f") << " to " << number(high, "%.3f") << " |";
-        }
-        md << "\n";
-    }
     for (const quality::SmallLightCase& light : cases) {
         within += light.energyOk();
         if (light.size >= 2) {
