@@ -327,10 +327,9 @@ FFX_DOF_INLINE FfxFloat32 ffxDofCoarseNearCoverage(FfxFloat32 coc)
 //
 // A near opacity below half a step would round to none: a small near light, whose disc's opacity is its share of
 // the disc (a 1 px light at radius 8 half-res px: 0.0012), vanished, and one of a few steps drew up to 1.5 times
-// its energy. So an opacity from FFX_DOF_NEAR_OPACITY_KEPT up keeps at least one step, and the blur stores the
-// near colour times the opacity over the stored one (ffxDofStoredNearOpacity): colour times opacity, the light
-// the near layer adds, is what was gathered, and the stored step only sets how much of what lies behind it
-// hides (at most 1/127 more).
+// its energy. So an opacity from FFX_DOF_NEAR_OPACITY_KEPT up keeps at least one step, and the blur makes up the
+// difference between the stored and the gathered opacity in the near colour it stores (ffxDofFinishGather): the
+// composite's blend with the stored step then gives what the gathered opacity would over the texel's far layer.
 #define FFX_DOF_NEAR_OPACITY_STEPS 127.0f
 #define FFX_DOF_NEAR_OPACITY_KEPT 1e-4f
 FFX_DOF_INLINE FfxFloat32 ffxDofStoredNearOpacity(FfxFloat32 opacity)
