@@ -1110,6 +1110,59 @@ TEST_CASE("Layer blend weights match the variance of the pixel's disc", "[compos
 
 namespace {
 
+// Taps of a near disc's rim over an in-focus surface of 0.3: the left two texels covered by the near layer
+// (opacity `opacity`, colour 10), the right two not at all.
+FfxDofUpsampleTaps nearRimTaps(float opacity) {
+    FfxDofUpsampleTaps taps{};
+    for (int k = 0; k < 4; ++k) {
+        const bool covered = k == 0 || k == 2;
+        taps.alpha[k] = glm::vec2(covered ? opacity : 0.0f, 1.0f);
+        taps.nearColor[k] = FfxDofFloat3(covered ? 10.0f : 0.0f);
+        taps.farColor[k] = FfxDofFloat3(0.3f);
+        taps.coc[k] = 0.0f;
+    }
+    return taps;
+}
+
+// Composes one pixel of radius `coc` (input 0.3) from `taps` at the bilinear `fraction`; `composed` says
+// whether it changed from its input.
+glm::vec4 composeRimPixel(const FfxDofUpsampleTaps& taps, glm::vec2 fraction, float coc, bool* composed) {
+    glm::vec4 color(0.3f, 0.3f, 0.3f, 1.0f);
+    *composed = ffxDofComposePixel(taps, fraction, coc, glm::vec3(0.3f), false, glm::vec4(0.0f), false, glm::vec4(0.0f),
+                                   glm::vec3(0.0f), color);
+    return color;
+}
+
+}  // namespace
+
+TEST_CASE("The near layer's rim keeps its light over in-focus pixels, and only the near layer changes them",
+          "[composite]") {
+    bool composed = false;
+    // Half the footprint covered, at opacity 0.5: a near opacity of 0.25 with the near colour's bilinear mean (5)
+    // over the input, nothing else (no fixed blur, no far layer: the pixel is in focus).
+    const glm::vec4 rim = composeRimPixel(nearRimTaps(0.5f), glm::vec2(0.5f), 0.0f, &composed);
+    CHECK(composed);
+    CHECK(rim.y == Approx(0.3f + 0.25f * (5.0f - 0.3f)));
+    CHECK(rim.w == 1.0f);
+    // Along a row across the rim, what the near layer adds is its bilinear share of each covered texel:
+    // the same as where no tap is uncovered.
+    double added = 0.0, addedCovered = 0.0;
+    for (float fx : {0.125f, 0.375f, 0.625f, 0.875f}) {
+        added += composeRimPixel(nearRimTaps(0.01f), glm::vec2(fx, 0.5f), 0.0f, &composed).y - 0.3;
+        FfxDofUpsampleTaps full = nearRimTaps(0.01f);
+        full.alpha[1].x = full.alpha[3].x = 1e-6f;  // covered, with nothing to add
+        addedCovered += composeRimPixel(full, glm::vec2(fx, 0.5f), 0.0f, &composed).y - 0.3;
+    }
+    CHECK(added == Approx(addedCovered).epsilon(0.02));
+    CHECK(added > 0.0);
+    // No near coverage in the footprint: an in-focus pixel keeps its input.
+    const glm::vec4 kept = composeRimPixel(nearRimTaps(0.0f), glm::vec2(0.5f), 0.0f, &composed);
+    CHECK_FALSE(composed);
+    CHECK(kept.y == 0.3f);
+}
+
+namespace {
+
 // Fills the composite's own-surface arrays (full-res |radius| and color per pixel of the 30 x 30
 // neighbourhood) from a function of the pixel, and gathers at `pixel` for its own half-res |radius|.
 template <typename Radius, typename Color>
