@@ -11,11 +11,12 @@
 //      range of the 8 neighbours (an outlier filter that keeps edges and energy),
 //      3x3 average of near opacity, invalid near texels filled from the most opaque neighbour.
 //   3. Per pixel: CoC from depth (32-bit); in focus and not covered by the near field -> the input,
-//      bit for bit. Otherwise: near layer upsampled bilinearly (where a corner has zero opacity, the pixel
-//      takes the near layer alone over what it shows without it: the rim of a near disc); far layer upsampled joint-bilaterally (taps weighted by validity and by how well
-//      their CoC matches the pixel's, so a sharp foreground never spills into the blurred
-//      background). Layers blended so that the combined blur has the variance of the pixel's disc
-//      (ffxDofDiscVariance): the fixed 3x3 blur is mixed into the input by the radius, alone from
+//      bit for bit. Otherwise: near layer upsampled bilinearly (where a corner has zero opacity, the
+//      pixel takes the near layer alone over what it shows without it: the rim of a near disc); far
+//      layer upsampled joint-bilaterally (taps weighted by validity and by how well their CoC matches
+//      the pixel's, so a sharp foreground never spills into the blurred background). Layers blended so
+//      that the combined blur has the variance of the pixel's disc (ffxDofDiscVariance): the fixed 3x3
+//      blur is mixed into the input by the radius, alone from
 //      |radius| 0.76 half-res px (ffxDofFixedBlurBlend; left out under a near-field opacity above
 //      FFX_DOF_NEAR_BLOCKS_FIXED_BLUR, where it would spread foreground color), the far layer over
 //      it, alone from FFX_DOF_FAR_LAYER_ONLY_RADIUS (ffxDofFarBlend), and the near layer on top
