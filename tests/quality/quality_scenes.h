@@ -166,7 +166,7 @@ std::vector<ThinBarCase> runThinBarCases(vkrun::Device& device);
 // value, the background's at the rest.
 // Every light at three places: its centre on a corner of the coarsest MIP's texels (16 full-res px) and at two
 // other phases of every MIP's grid, since merged rings read a light from a coarse texel.
-constexpr int kSmallLightSizes[] = {1, 2, 3, 4, 5, 7, 9, 11, 13, 15};
+constexpr int kSmallLightSizes[] = {1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15};
 constexpr double kSmallLightRadii[] = {6.0, 12.0, 20.8, 28.0};     // full-res px, far field
 constexpr int kSmallLightOffsets[][2] = {{0, 0}, {3, 1}, {6, 5}};  // full-res px from the frame's centre
 struct SmallLightCase {
