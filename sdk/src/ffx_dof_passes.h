@@ -26,6 +26,23 @@ constexpr uint32_t kMipCount = 4;
 // to its API's enum). Names, formats and slots follow shaders_common/ffx_dof_resources.h.
 enum class InternalFormat : uint32_t { R11G11B10Float, R16Float, R16G16B16A16Float, R8Unorm, R32G32Uint };
 
+// Bytes of one texel of the format (before any driver layout).
+constexpr uint32_t internalFormatTexelBytes(InternalFormat format) {
+    switch (format) {
+        case InternalFormat::R11G11B10Float:
+            return 4;
+        case InternalFormat::R16Float:
+            return 2;
+        case InternalFormat::R16G16B16A16Float:
+            return 8;
+        case InternalFormat::R8Unorm:
+            return 1;
+        case InternalFormat::R32G32Uint:
+            return 8;
+    }
+    return 0;
+}
+
 enum class ImageExtent : uint32_t {
     Half,     // ceil(W / 2) x ceil(H / 2)
     Quarter,  // MIP 1 of the half-resolution image: max(half / 2, 1), rounded down

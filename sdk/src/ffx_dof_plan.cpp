@@ -213,6 +213,46 @@ PassGrid passGroups(const FfxDofConstants& constants, Pass pass) {
                     1};
 }
 
+void sizeInternalImages(const FfxDofConstants& constants, PlannedImage images[kInternalImageCount]) {
+    for (uint32_t i = 0; i < kInternalImageCount; ++i) {
+        const InternalImageSpec& spec = kInternalImages[i];
+        PlannedImage& image = images[i];
+        image.spec = &spec;
+        switch (spec.extent) {
+            case ImageExtent::Half:
+                image.width = constants.halfSize.x;
+                image.height = constants.halfSize.y;
+                break;
+            case ImageExtent::Quarter:
+                image.width = constants.halfSize.x / 2 > 0 ? constants.halfSize.x / 2 : 1;
+                image.height = constants.halfSize.y / 2 > 0 ? constants.halfSize.y / 2 : 1;
+                break;
+            case ImageExtent::Tiles:
+                image.width = constants.tileCount.x;
+                image.height = constants.tileCount.y;
+                break;
+        }
+        image.mipLevels = mipLevelsFor(spec, image.width, image.height);
+    }
+}
+
+uint64_t internalResourceBytes(const ContextConfig& config) {
+    const FfxDofConstants constants = contextConstants(config);
+    PlannedImage images[kInternalImageCount];
+    sizeInternalImages(constants, images);
+    uint64_t bytes = 0;
+    for (const PlannedImage& image : images) {
+        for (uint32_t level = 0; level < image.mipLevels; ++level) {
+            const uint64_t width = image.width >> level > 0 ? image.width >> level : 1;
+            const uint64_t height = image.height >> level > 0 ? image.height >> level : 1;
+            bytes += width * height * internalFormatTexelBytes(image.spec->format);
+        }
+    }
+    const FfxUInt32x2 tiles = constants.tileCount;
+    return bytes + kGlobalsBufferBytes + kTileListArgsBytes + uint64_t(tileListsWordCount(tiles.x, tiles.y)) * 4 +
+           uint64_t(highlightsWordCount(tiles.x, tiles.y)) * 4;
+}
+
 FfxDofErrorCode buildContextPlan(const ContextConfig& config, const BackendCapabilities& capabilities,
                                  ContextPlan* plan) {
     *plan = ContextPlan{};
@@ -223,26 +263,7 @@ FfxDofErrorCode buildContextPlan(const ContextConfig& config, const BackendCapab
     plan->axes.wave64 = capabilities.wave64 ? 1u : 0u;
 
     const FfxDofConstants& c = plan->constants;
-    for (uint32_t i = 0; i < kInternalImageCount; ++i) {
-        const InternalImageSpec& spec = kInternalImages[i];
-        PlannedImage& image = plan->images[i];
-        image.spec = &spec;
-        switch (spec.extent) {
-            case ImageExtent::Half:
-                image.width = c.halfSize.x;
-                image.height = c.halfSize.y;
-                break;
-            case ImageExtent::Quarter:
-                image.width = c.halfSize.x / 2 > 0 ? c.halfSize.x / 2 : 1;
-                image.height = c.halfSize.y / 2 > 0 ? c.halfSize.y / 2 : 1;
-                break;
-            case ImageExtent::Tiles:
-                image.width = c.tileCount.x;
-                image.height = c.tileCount.y;
-                break;
-        }
-        image.mipLevels = mipLevelsFor(spec, image.width, image.height);
-    }
+    sizeInternalImages(c, plan->images);
     mapSlots(plan);
 
     for (uint32_t p = 0; p < kPassCount; ++p) {

@@ -160,6 +160,12 @@ DispatchPlan planDispatch(const ContextPlan& plan, const FfxDofDispatchDescripti
 
 // The grid, images and constants of a configuration without shader tables (for tests and tools).
 FfxDofConstants contextConstants(const ContextConfig& config);
+// The size of each internal image (kInternalImages' order) for a context of these constants.
+void sizeInternalImages(const FfxDofConstants& constants, PlannedImage images[kInternalImageCount]);
+// The bytes the internal resources of a context of this configuration hold before any driver layout: every
+// image's texels at every level, and the buffers (docs/technique.md, Internal resources). What a backend
+// reports (ffxDofContextGetGpuMemoryUsage) is at least this; a GPU's tiled layouts pad each image.
+uint64_t internalResourceBytes(const ContextConfig& config);
 PassGrid passGroups(const FfxDofConstants& constants, Pass pass);
 
 }  // namespace ffxdof

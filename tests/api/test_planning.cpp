@@ -297,6 +297,26 @@ TEST_CASE("the storage buffer slots map to their buffers, sized by the tile coun
     CHECK(contextPlan(1, 1).highlightsBytes == 52u);
 }
 
+TEST_CASE("the internal resources at 1080p hold the bytes of docs/technique.md's table, within the 10 MB budget") {
+    ContextConfig config;
+    config.resolution = {1920, 1080};
+    config.quality = 10;
+    config.cocLimitFactor = 0.05f;
+    // The table's total (its Python command); a backend reports at least this (the Vulkan tests check it on the
+    // device, and the budget where the device lays images out linearly).
+    CHECK(internalResourceBytes(config) == 9854576u);
+    CHECK(internalResourceBytes(config) <= 10u * 1000u * 1000u);
+    // Neither the quality nor the CoC limit sizes anything.
+    config.quality = 32;
+    config.cocLimitFactor = 0.3f;
+    CHECK(internalResourceBytes(config) == 9854576u);
+    // A 1 x 1 context: a texel of each image at each of its levels (one), one tile of lists and highlights.
+    config.resolution = {1, 1};
+    CHECK(internalResourceBytes(config) == 4u + 2u + 8u + 8u + 8u + 4u + 4u + 1u + kGlobalsBufferBytes +
+                                               kTileListArgsBytes + tileListsWordCount(1, 1) * 4u +
+                                               highlightsWordCount(1, 1) * 4u);
+}
+
 TEST_CASE("a backend without a pass's shaders, or without its permutation, cannot make a context") {
     ContextConfig config;
     config.resolution = {64, 64};

