@@ -264,8 +264,13 @@ FFX_DOF_INLINE FfxFloat32 ffxDofRoundForHalfCoc(FfxFloat32 coc)
 // (ffxDofPackCoarseNearCoverage).
 
 // Quads whose nearest pixel has a smaller radius (half-res px) keep the bilateral reduction: from every near
-// radius (0.5) the floor scene's near field lost 0.32 dB more, busy-background 0.03 dB, and no bar gained.
-#define FFX_DOF_NEAR_COVERAGE_MIN_RADIUS 2.0f
+// radius (0.5) the floor scene's near field lost 0.32 dB more, busy-background 0.03 dB, and no bar gained. From
+// 2 until 2026-11-30: the bilateral reduction weighs a pixel 1.25 px or more from the quad's reference radius by 0,
+// so a near pixel of radius 1.25 to 2 in a quad of in-focus or far pixels vanished from every layer (an isolated
+// one over an in-focus wall kept 3 to 5% of its light: a speck of dust, a snowflake). From 1: 1.00 to 1.15 of it;
+// floor's near field 34.85 -> 34.53 dB, its in-focus pixels 32.50 -> 32.66 and halo band 32.22 -> 32.31, the
+// scene 34.82 as before (docs/quality.md, near specks).
+#define FFX_DOF_NEAR_COVERAGE_MIN_RADIUS 1.0f
 // How much smaller (half-res px) the radius of a partly covered near texel is than its pixels': they lie up
 // to 0.35 half-res px from its centre, and its disc must stay within theirs through the composite's
 // upsampling (with 0.25 the floor scene's in-focus pixels changed by 12/255 beyond every near radius).

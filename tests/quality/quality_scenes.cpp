@@ -231,14 +231,15 @@ PointBokeh measurePointBokeh(vkrun::Device& device) {
 
 std::string PointDiscCase::describe() const {
     std::ostringstream text;
-    text << "radius " << radius << " px, offset (" << offsetX << ", " << offsetY << "), ring merging "
-         << (ringMerge ? "on" : "off") << ": measured radius " << disc.radius << ", flatness " << disc.flatness
-         << ", centre / inner level " << disc.centreLevel / disc.innerLevel << ", rim deviation " << disc.rimDeviation
-         << " px, glow " << glow << ", energy " << energyRatio;
+    text << (nearField ? "near point, radius " : "far point, radius ") << radius << " px, offset (" << offsetX << ", "
+         << offsetY << "), ring merging " << (ringMerge ? "on" : "off") << ": measured radius " << disc.radius
+         << ", flatness " << disc.flatness << ", centre / inner level " << disc.centreLevel / disc.innerLevel
+         << ", rim deviation " << disc.rimDeviation << " px, glow " << glow << ", energy " << energyRatio;
     return text.str();
 }
 
-PointDiscCase runPointDisc(vkrun::Device& device, double radius, int offsetX, int offsetY, bool ringMerge) {
+PointDiscCase runPointDisc(vkrun::Device& device, double radius, int offsetX, int offsetY, bool ringMerge,
+                           bool nearField) {
     constexpr uint32_t kSide = 160;
     constexpr double kLargestRadius = 54.0;
     vkrun::HostImage color(kSide, kSide, 4), depth(kSide, kSide, 1);
@@ -249,6 +250,8 @@ PointDiscCase runPointDisc(vkrun::Device& device, double radius, int offsetX, in
     const double energy = 0.25 * kPi * radius * radius;
     float* point = color.at(80u + uint32_t(offsetX), 80u + uint32_t(offsetY));
     point[0] = point[1] = point[2] = float(energy);
+    // Near: the point at depth 0, of radius +R/2 half-res px; the wall at depth 1, of radius 0.
+    if (nearField) depth.pixels[size_t(80u + uint32_t(offsetY)) * kSide + 80u + uint32_t(offsetX)] = 0.0f;
 
     vkrun::RunSettings settings;
     settings.colorFormat = VK_FORMAT_R32G32B32A32_SFLOAT;
@@ -257,7 +260,7 @@ PointDiscCase runPointDisc(vkrun::Device& device, double radius, int offsetX, in
     settings.quality = kEffectQuality;
     // Radius (half-res px) = depth * cocScale + cocBias, negative: far field.
     settings.cocScale = -float(0.5 * radius);
-    settings.cocBias = 0.0f;
+    settings.cocBias = nearField ? float(0.5 * radius) : 0.0f;
     settings.cocLimitFactor = float(kLargestRadius / kSide);
     settings.contextFlags = ringMerge ? 0u : uint32_t(FFX_DOF_DISABLE_RING_MERGE);
     const vkrun::RunResult run = vkrun::runEffect(device, color, depth, settings);
@@ -267,6 +270,7 @@ PointDiscCase runPointDisc(vkrun::Device& device, double radius, int offsetX, in
     result.offsetX = offsetX;
     result.offsetY = offsetY;
     result.ringMerge = ringMerge;
+    result.nearField = nearField;
     result.output = io::ImageRGBA(kSide, kSide);
     result.output.pixels = run.output.pixels;
     result.disc = metrics::measureBokeh(result.output);
@@ -281,6 +285,14 @@ std::vector<PointDiscCase> runPointDiscCases(vkrun::Device& device) {
         for (double radius : kPointDiscRadii)
             for (const auto& offset : kPointDiscOffsets)
                 cases.push_back(runPointDisc(device, radius, offset[0], offset[1], ringMerge));
+    return cases;
+}
+
+std::vector<PointDiscCase> runNearPointDiscCases(vkrun::Device& device) {
+    std::vector<PointDiscCase> cases;
+    for (double radius : kNearPointDiscRadii)
+        for (const auto& offset : kPointDiscOffsets)
+            cases.push_back(runPointDisc(device, radius, offset[0], offset[1], true, true));
     return cases;
 }
 

@@ -112,10 +112,14 @@ PointBokeh measurePointBokeh(vkrun::Device& device);
 // the point's energy.
 constexpr double kPointDiscRadii[] = {2.0, 3.0, 4.5, 6.0, 8.0, 12.0, 19.2, 27.0, 40.0, 54.0};
 constexpr int kPointDiscOffsets[][2] = {{0, 0}, {1, 0}, {0, 1}, {1, 1}, {7, 5}};
+// The near field's point discs: the same point in front of an in-focus black wall (the near field
+// merges no rings), from 3 px on (below that the near blur is the fixed 3x3 one).
+constexpr double kNearPointDiscRadii[] = {3.0, 4.5, 6.0, 8.0, 12.0, 19.2, 27.0, 40.0, 54.0};
 struct PointDiscCase {
     double radius = 0.0;  // thin lens, full-res px
     int offsetX = 0, offsetY = 0;
     bool ringMerge = true;
+    bool nearField = false;  // the point near, before an in-focus wall; else far, as far as the black around it
     metrics::BokehMeasurement disc;
     double energyRatio = 0.0;  // measured / the point's
     double glow = 0.0;         // brightest beyond radius + 1.5 px, over the disc's inner level
@@ -129,9 +133,12 @@ struct PointDiscCase {
     bool rimOk() const { return disc.rimDeviation <= 1.0; }
     bool glowOk() const { return glow <= 0.02; }
 };
-PointDiscCase runPointDisc(vkrun::Device& device, double radius, int offsetX, int offsetY, bool ringMerge);
+PointDiscCase runPointDisc(vkrun::Device& device, double radius, int offsetX, int offsetY, bool ringMerge,
+                           bool nearField = false);
 // Every radius and offset, ring merging on, then off.
 std::vector<PointDiscCase> runPointDiscCases(vkrun::Device& device);
+// Every near radius (kNearPointDiscRadii) and offset.
+std::vector<PointDiscCase> runNearPointDiscCases(vkrun::Device& device);
 
 // Issue 17's thin near bars: a vertical bar `width` px wide from column `left` at near radius `radius` (full-res px)
 // over an in-focus checker wall, 192 x 96 px, run with the bar black and white: the veil's opacity at each column is
