@@ -60,6 +60,26 @@ void fieldGateRow(std::ostream& out, const char* name, const metrics::RegionScor
         << (quality::GateResult::fieldWithinGather(ours, gather) ? "pass" : "**FAIL**") << " |\n";
 }
 
+// The worst of each disc measure over a set of point discs (docs/quality.md's tables of point discs).
+struct WorstDisc {
+    double radiusError = 0.0, energyLow = 1e30, energyHigh = 0.0, flatness = 0.0, centre = 1e30, rim = 0.0, glow = 0.0;
+    void add(const quality::PointDiscCase& c) {
+        radiusError = std::max(radiusError, std::abs(c.disc.radius - c.radius));
+        energyLow = std::min(energyLow, c.energyRatio);
+        energyHigh = std::max(energyHigh, c.energyRatio);
+        flatness = std::max(flatness, c.disc.flatness);
+        centre = std::min(centre, c.disc.centreLevel / c.disc.innerLevel);
+        rim = std::max(rim, c.disc.rimDeviation);
+        glow = std::max(glow, c.glow);
+    }
+    // Its row's cells after the radius (and ring merging): radius error, energy, flatness, centre, rim, glow.
+    std::string cells() const {
+        return number(radiusError, "%.2f") + " | " + number(energyLow, "%.3f") + " to " + number(energyHigh, "%.3f") +
+               " | " + number(flatness, "%.3f") + " | " + number(centre, "%.3f") + " | " + number(rim, "%.2f") + " | " +
+               number(glow, "%.3f") + " |\n";
+    }
+};
+
 // Issue 17's disc-shape gates (tests/quality/test_point_discs.cpp): per radius, the worst over the
 // positions, ring merging off and on, and the gates' verdicts.
 void writePointDiscs(std::ostream& md, vkrun::Device& device, const std::filesystem::path& imageDir) {
@@ -87,28 +107,12 @@ void writePointDiscs(std::ostream& md, vkrun::Device& device, const std::filesys
           "Radius 40 px, position (0, 0), ring merging on, then off (values x 3).\n\n"
        << "| radius (px) | ring merging | radius error | energy | flatness | centre | rim | glow |\n"
        << "|---:|---|---:|---|---:|---:|---:|---:|\n";
-    struct Worst {
-        double radiusError = 0.0, energyLow = 1e30, energyHigh = 0.0, flatness = 0.0, centre = 1e30, rim = 0.0,
-               glow = 0.0;
-    };
     for (bool ringMerge : {false, true}) {
         for (double radius : quality::kPointDiscRadii) {
-            Worst worst;
-            for (const quality::PointDiscCase& c : cases) {
-                if (c.ringMerge != ringMerge || c.radius != radius) continue;
-                worst.radiusError = std::max(worst.radiusError, std::abs(c.disc.radius - c.radius));
-                worst.energyLow = std::min(worst.energyLow, c.energyRatio);
-                worst.energyHigh = std::max(worst.energyHigh, c.energyRatio);
-                worst.flatness = std::max(worst.flatness, c.disc.flatness);
-                worst.centre = std::min(worst.centre, c.disc.centreLevel / c.disc.innerLevel);
-                worst.rim = std::max(worst.rim, c.disc.rimDeviation);
-                worst.glow = std::max(worst.glow, c.glow);
-            }
-            md << "| " << number(radius, "%g") << " | " << (ringMerge ? "on" : "off") << " | "
-               << number(worst.radiusError, "%.2f") << " | " << number(worst.energyLow, "%.3f") << " to "
-               << number(worst.energyHigh, "%.3f") << " | " << number(worst.flatness, "%.3f") << " | "
-               << number(worst.centre, "%.3f") << " | " << number(worst.rim, "%.2f") << " | "
-               << number(worst.glow, "%.3f") << " |\n";
+            WorstDisc worst;
+            for (const quality::PointDiscCase& c : cases)
+                if (c.ringMerge == ringMerge && c.radius == radius) worst.add(c);
+            md << "| " << number(radius, "%g") << " | " << (ringMerge ? "on" : "off") << " | " << worst.cells();
         }
     }
     const auto verdict = [](bool ok, bool knownFailure) {
@@ -174,21 +178,10 @@ void writeNearPointDiscs(std::ostream& md, vkrun::Device& device) {
        << "| radius (px) | radius error | energy | flatness | centre | rim | glow |\n"
        << "|---:|---:|---|---:|---:|---:|---:|\n";
     for (double radius : quality::kNearPointDiscRadii) {
-        double radiusError = 0.0, energyLow = 1e30, energyHigh = 0.0, flatness = 0.0, centre = 1e30, rim = 0.0,
-               glow = 0.0;
-        for (const quality::PointDiscCase& c : cases) {
-            if (c.radius != radius) continue;
-            radiusError = std::max(radiusError, std::abs(c.disc.radius - c.radius));
-            energyLow = std::min(energyLow, c.energyRatio);
-            energyHigh = std::max(energyHigh, c.energyRatio);
-            flatness = std::max(flatness, c.disc.flatness);
-            centre = std::min(centre, c.disc.centreLevel / c.disc.innerLevel);
-            rim = std::max(rim, c.disc.rimDeviation);
-            glow = std::max(glow, c.glow);
-        }
-        md << "| " << number(radius, "%g") << " | " << number(radiusError, "%.2f") << " | " << number(energyLow, "%.3f")
-           << " to " << number(energyHigh, "%.3f") << " | " << number(flatness, "%.3f") << " | "
-           << number(centre, "%.3f") << " | " << number(rim, "%.2f") << " | " << number(glow, "%.3f") << " |\n";
+        WorstDisc worst;
+        for (const quality::PointDiscCase& c : cases)
+            if (c.radius == radius) worst.add(c);
+        md << "| " << number(radius, "%g") << " | " << worst.cells();
     }
     const auto share = [&](bool (quality::PointDiscCase::*gate)() const) {
         const size_t passing = size_t(

@@ -160,11 +160,7 @@ TEST_CASE("An isolated near pixel over an in-focus wall keeps its light at every
     // its light. Known, left: 1.2 and 1.25 add 1.15 and 1.11 (the pixel's own full-resolution blur and the near
     // layer both draw a share of it), 2.25 adds 0.81 (docs/quality.md, near point discs).
     const uint32_t w = 64, h = 64;
-    Scene wall;
-    wall.width = w;
-    wall.height = h;
-    wall.color.assign(size_t(w) * h, glm::vec4(0.0f, 0.0f, 0.0f, 1.0f));
-    wall.depth.assign(size_t(w) * h, 0.0f);
+    const Scene wall = makeScene(w, h, glm::vec4(0.0f, 0.0f, 0.0f, 1.0f), 0.0f);
     Settings settings;
     settings.cocLimit = 16.4f;
     for (const glm::ivec2 at : {glm::ivec2(32, 32), glm::ivec2(33, 35)}) {
@@ -782,11 +778,7 @@ TEST_CASE("Two lights a few pixels apart in one quadrant are drawn as each alone
     // px apart, 0.17 and 0.29 at 6 px, 0.13 and 0.22 at 8 px, 0.08 and 0.14 at 12 px; now 0.000 in every case.
     // Lights 7 px apart lie in two quadrants here.
     const uint32_t w = 64, h = 64;
-    Scene none;
-    none.width = w;
-    none.height = h;
-    none.color.assign(size_t(w) * h, glm::vec4(0.01f, 0.01f, 0.01f, 1.0f));
-    none.depth.assign(size_t(w) * h, 16.0f);
+    const Scene none = makeScene(w, h, glm::vec4(0.01f, 0.01f, 0.01f, 1.0f), -16.0f);
     Settings settings;
     settings.cocLimit = 16.4f;
     const std::vector<glm::vec4> noneOut = ffxdoftest::runPipeline(none, settings);
@@ -825,11 +817,7 @@ TEST_CASE("Three lights in one quadrant keep their energy, drawn as two discs", 
     // 0.16 at 16. Held as a ratchet at three of those radii: more slots per quadrant would cost HIGHLIGHTS memory
     // (the 10 MB budget).
     const uint32_t w = 64, h = 64;
-    Scene none;
-    none.width = w;
-    none.height = h;
-    none.color.assign(size_t(w) * h, glm::vec4(0.01f, 0.01f, 0.01f, 1.0f));
-    none.depth.assign(size_t(w) * h, 16.0f);
+    const Scene none = makeScene(w, h, glm::vec4(0.01f, 0.01f, 0.01f, 1.0f), -16.0f);
     Settings settings;
     settings.cocLimit = 16.4f;
     const std::vector<glm::vec4> noneOut = ffxdoftest::runPipeline(none, settings);
