@@ -3,15 +3,8 @@
 # prints check the table it makes of them, and its errors for bad input.
 set -uo pipefail
 script="${1:?usage: bench_commits_test.sh path/to/bench-commits.sh}"
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
-failures=0
-expect() {  # expect NAME WANTED ACTUAL
-  if [ "$2" != "$3" ]; then
-    printf 'FAILED: %s\n  wanted: %s\n  got:    %s\n' "$1" "$2" "$3"
-    failures=$((failures + 1))
-  fi
-}
+# shellcheck source=tool_test_support.sh
+. "$(dirname "$0")/tool_test_support.sh"
 
 mkdir -p "$work/bin"
 # What ffx-dof bench prints, with the times a stand-in chooses; the arguments echoed in the header.
@@ -63,5 +56,4 @@ expect "an unknown option is an error" "bench-commits: unknown option --frobnica
 bash "$script" >/dev/null 2>"$work/err"
 expect "no commit is an error" "bench-commits: name at least one commit" "$(head -1 "$work/err")"
 
-[ "$failures" = 0 ] && echo "bench-commits: all checks passed"
-exit "$failures"
+finish bench-commits

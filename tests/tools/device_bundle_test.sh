@@ -4,15 +4,8 @@
 set -uo pipefail
 script="${1:?usage: device_bundle_test.sh path/to/device-bundle.sh BUILD_DIR}"
 build="${2:?usage: device_bundle_test.sh path/to/device-bundle.sh BUILD_DIR}"
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
-failures=0
-check() {  # check NAME COMMAND...
-  if ! "${@:2}" >/dev/null 2>&1; then
-    echo "FAILED: $1"
-    failures=$((failures + 1))
-  fi
-}
+# shellcheck source=tool_test_support.sh
+. "$(dirname "$0")/tool_test_support.sh"
 
 check "a bundle is made" bash "$script" --build "$build" "$work/bundle"
 check "ffx-dof is in it" test -x "$work/bundle/bin/ffx-dof"
@@ -42,5 +35,4 @@ if [ -f /usr/share/vulkan/explicit_layer.d/VkLayer_khronos_validation.json ]; th
   check "the layer's library is there" test -f "$work/with-layer/layer/libVkLayer_khronos_validation.so"
 fi
 
-[ "$failures" = 0 ] && echo "device-bundle: all checks passed"
-exit "$failures"
+finish device-bundle

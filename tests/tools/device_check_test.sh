@@ -3,15 +3,8 @@
 # and its errors for bad input.
 set -uo pipefail
 script="${1:?usage: device_check_test.sh path/to/device-check.sh}"
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
-failures=0
-expect() {  # expect NAME WANTED ACTUAL
-  if [ "$2" != "$3" ]; then
-    printf 'FAILED: %s\n  wanted: %s\n  got:    %s\n' "$1" "$2" "$3"
-    failures=$((failures + 1))
-  fi
-}
+# shellcheck source=tool_test_support.sh
+. "$(dirname "$0")/tool_test_support.sh"
 
 bundle="$work/bundle"
 mkdir -p "$bundle/bin"
@@ -59,8 +52,4 @@ expect "a budget that is no number is an error" 1 $?
 bash "$script" "$bundle" >/dev/null 2>&1
 expect "the logs' folder is needed" 1 $?
 
-if [ "$failures" -gt 0 ]; then
-  echo "$failures check(s) failed"
-  exit 1
-fi
-echo "device-check: every check passed"
+finish device-check
