@@ -157,8 +157,9 @@ TEST_CASE("An isolated near pixel over an in-focus wall keeps its light at every
     // quad's corner and inside one. Until 2026-11-30 the colour downsample's bilateral reduction dropped a near
     // pixel 1.25 half-res px or more from its quad's reference radius unless the pixel's radius was at least 2
     // (FFX_DOF_NEAR_COVERAGE_MIN_RADIUS), and no layer held it: from radius 1.25 to 1.75 it kept 0.026 to 0.051 of
-    // its light. Known, left: 1.2 and 1.25 add 1.15 and 1.11 (the pixel's own full-resolution blur and the near
-    // layer both draw a share of it), 2.25 adds 0.81 (docs/quality.md, near point discs).
+    // its light. Each radius's figure is printed. Known, left: 1.25 adds 1.11 and 2.25 adds 0.81: the blur's near
+    // area weight (1 / r^2) misjudges discs of a few texels and the composite upsamples the near colour and opacity
+    // apart, two errors that partly cancel (docs/quality.md, near point discs).
     const uint32_t w = 64, h = 64;
     const Scene wall = makeScene(w, h, glm::vec4(0.0f, 0.0f, 0.0f, 1.0f), 0.0f);
     Settings settings;
@@ -170,6 +171,8 @@ TEST_CASE("An isolated near pixel over an in-focus wall keeps its light at every
             speck.depth[size_t(at.y) * w + size_t(at.x)] = -coc;
             double energy = 0.0;
             for (const glm::vec4& pixel : ffxdoftest::runPipeline(speck, settings)) energy += pixel.y;
+            std::printf("isolated near pixel of radius %.2f half-res px at (%d, %d): adds %.3f of its light\n", coc,
+                        at.x, at.y, energy);
             INFO("near radius " << coc << " half-res px at (" << at.x << ", " << at.y << "): adds " << energy);
             const bool knownGap = coc == 1.25f || coc == 2.25f;
             CHECK(energy >= (knownGap ? 0.78 : 0.95));
@@ -813,9 +816,8 @@ TEST_CASE("Three lights in one quadrant keep their energy, drawn as two discs", 
     // A quadrant's slot holds two discs (ffx_dof_highlights.h), so three 1 px lights of 100 in one quadrant of 8 x 8
     // px are drawn as two at the ends of their principal axis, each with a rim as wide as the spread across it: the
     // light is kept, its place only roughly. The L1 difference from the three drawn alone, over theirs, measured
-    // 2026-11-30 (the largest of the four patterns below): 0.54 at radius 4.5 px, 0.39 at 6, 0.31 at 8, 0.21 at 12,
-    // 0.16 at 16. Held as a ratchet at three of those radii: more slots per quadrant would cost HIGHLIGHTS memory
-    // (the 10 MB budget).
+    // 2026-11-30 (the largest of the four patterns below; printed): 0.54 at radius 4.5 px, 0.31 at 8, 0.16 at 16.
+    // Held as a ratchet: more slots per quadrant would cost HIGHLIGHTS memory (the 10 MB budget).
     const uint32_t w = 64, h = 64;
     const Scene none = makeScene(w, h, glm::vec4(0.01f, 0.01f, 0.01f, 1.0f), -16.0f);
     Settings settings;
@@ -854,6 +856,11 @@ TEST_CASE("Three lights in one quadrant keep their energy, drawn as two discs", 
                 added += together;
                 addedApart += apart[i];
             }
+            std::printf(
+                "three lights at radius %.1f px, (%d, %d) (%d, %d) (%d, %d): L1 difference from each alone "
+                "%.3f, energy %.3f\n",
+                -2.0 * radius.coc, lights[0].x, lights[0].y, lights[1].x, lights[1].y, lights[2].x, lights[2].y,
+                difference / aloneSum, added / addedApart);
             INFO("radius " << -2.0f * radius.coc << " px, lights (" << lights[0].x << ", " << lights[0].y << "), ("
                            << lights[1].x << ", " << lights[1].y << "), (" << lights[2].x << ", " << lights[2].y
                            << "): L1 difference " << difference / aloneSum << ", energy " << added / addedApart);
