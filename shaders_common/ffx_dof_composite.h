@@ -197,10 +197,10 @@ FFX_DOF_GROUPSHARED FfxDofFloat3 ffxDofSharedNear[FFX_DOF_FILTERED_SIDE * FFX_DO
 FFX_DOF_GROUPSHARED FfxDofFloat3 ffxDofSharedFar[FFX_DOF_FILTERED_SIDE * FFX_DOF_FILTERED_SIDE];
 FFX_DOF_GROUPSHARED FfxFloat32x2 ffxDofSharedAlpha[FFX_DOF_FILTERED_SIDE * FFX_DOF_FILTERED_SIDE];
 FFX_DOF_GROUPSHARED FfxFloat32 ffxDofSharedCoc[FFX_DOF_FILTERED_SIDE * FFX_DOF_FILTERED_SIDE];
-// Per tile of the 9 around the group's (ffxDofTileAround): its highlights' floor (a float's bits, 0 for a floor
-// at or below 0, which gives the same shares; FFX_DOF_FLOAT32_MAX, over which nothing gives light, for a tile
-// that cannot hold highlights: ffxDofTileMayHoldHighlights) and, in bit 31, whether it may hold bright small
-// sources (ffxDofSurveyTilesAround with one load per invocation instead of nine per invocation).
+// Per tile of the 9 around the group's (ffxDofTileAround): its highlights' floors (ffxDofPackHighlightFloors, whose
+// high half's sign bit is free: ffxDofNoHighlightFloors for a tile that cannot hold highlights,
+// ffxDofTileMayHoldHighlights) and, in bit 31, whether it may hold bright small sources (ffxDofSurveyTilesAround
+// with one load per invocation instead of nine per invocation).
 FFX_DOF_GROUPSHARED FfxUInt32 ffxDofSharedTilesAround[9];
 #define FFX_DOF_TILE_AROUND_SMALL_SOURCES_BIT 0x80000000u
 // Which tiles of the highlights' window hold one (ffxDofTileHoldsHighlights), a bit each in window order, and
@@ -358,6 +358,38 @@ FFX_DOF_INLINE FfxDofQuadNeighbourhood ffxDofLoadQuadNeighbourhood(FfxUInt32x2 q
         FfxInt32x2 pixel = clamp(FfxInt32x2(quad) + FfxInt32x2(FfxInt32(k % 4u) - 1, FfxInt32(k / 4u) - 1),
                                  FfxInt32x2(0, 0), FfxInt32x2(fullSize) - FfxInt32x2(1, 1));
         neighbourhood.color[k] = ffxDofCompositeInput(FfxUInt32x2(pixel), quad, scale);
+    }
+    return neighbourhood;
+}
+
+// The quad's neighbourhood less what pass 2 took of each of its pixels for the highlights to draw
+// (ffxDofPixelHighlightShare over the floors of the pixel's tile, one of the 3 x 3 in ffxDofSharedTilesAround):
+// where the composite leaves the layers' rest to a pixel's input or fixed blur (a far layer partly invalid, as
+// behind a near light over an in-focus wall, or a near layer not quite opaque), a light showed through as a dot of
+// up to 1.6 times its disc's level at the disc's centre, or a ring of its fixed blur around it
+// (docs/technique.md, "Near highlights"). Read in place, pixels outside the group's tile come from MIP 0, which
+// pass 2 left them out of already.
+FFX_DOF_INLINE FfxDofQuadNeighbourhood ffxDofNeighbourhoodLessHighlights(FfxDofQuadNeighbourhood neighbourhood,
+                                                                        FfxUInt32x2 quad, FfxUInt32x2 groupId,
+                                                                        FfxDofConstants constants, FfxFloat32 scale)
+{
+    FfxInt32 extent = FfxInt32(FFX_DOF_COMPOSITE_GROUP_EXTENT);
+    FFX_DOF_UNROLL
+    for (FfxUInt32 k = 0u; k < 16u; ++k)
+    {
+        FfxInt32x2 pixel = clamp(FfxInt32x2(quad) + FfxInt32x2(FfxInt32(k % 4u) - 1, FfxInt32(k / 4u) - 1),
+                                 FfxInt32x2(0, 0), FfxInt32x2(constants.fullSize) - FfxInt32x2(1, 1));
+        if (!ffxDofCompositeInputIsFullRes(FfxUInt32x2(pixel), quad))
+            continue;
+        FfxInt32x2 tileAround = pixel / extent - FfxInt32x2(groupId) + FfxInt32x2(1, 1);
+        FfxFloat32x2 floors = ffxDofUnpackHighlightFloors(ffxDofSharedTilesAround[tileAround.y * 3 + tileAround.x] &
+                                                          ~FFX_DOF_TILE_AROUND_SMALL_SOURCES_BIT);
+        FfxFloat32 coc = ffxDofCocFromDepth(ffxDofLoadInputDepth(FfxUInt32x2(pixel)), constants.cocScale,
+                                            constants.cocBias, constants.cocLimit);
+        FfxFloat32x4 color = neighbourhood.color[k];
+        FfxFloat32x3 rgb = FfxFloat32x3(color.x, color.y, color.z);
+        rgb *= 1.0f - ffxDofPixelHighlightShare(FfxUInt32x2(pixel), rgb, coc, floors, scale, constants.fullSize);
+        neighbourhood.color[k] = FfxFloat32x4(rgb.x, rgb.y, rgb.z, color.w);
     }
     return neighbourhood;
 }
@@ -677,21 +709,31 @@ FFX_DOF_INLINE void ffxDofHighlightWindow(FfxUInt32x2 tile, FfxDofConstants cons
                      constants.tileCount, first, last);
 }
 
-// What the highlights of the tiles in the window add to the far layers of a quad's four pixels (0: top-left
-// .. 3: bottom-right; `quad` its top-left pixel, `cocs` their radii), each as far as what lies in front does
-// not hide it (ffxDofHighlightBlockerPoint). Tiles in the window's order, slots in theirs: the same sum
-// whatever the order the groups ran in.
+// What the highlights of the tiles in the window add to a quad's four pixels (0: top-left .. 3: bottom-right;
+// `quad` its top-left pixel, `cocs` their radii): far ones to their far layers, each as far as what lies in front
+// does not hide it (ffxDofHighlightBlockerPoint), near ones over everything (nothing the pinhole image shows lies
+// in front of a near light but a nearer surface, which it would show instead). Tiles in the window's order, slots
+// in theirs: the same sum whatever the order the groups ran in.
 struct FfxDofQuadHighlights
 {
     FfxFloat32x3 added[4];
+    FfxFloat32x3 nearAdded[4];
 };
+FFX_DOF_INLINE FfxDofQuadHighlights ffxDofNoQuadHighlights()
+{
+    FfxDofQuadHighlights none;
+    FFX_DOF_UNROLL
+    for (FfxUInt32 k = 0u; k < 4u; ++k)
+    {
+        none.added[k] = FfxFloat32x3(0.0f, 0.0f, 0.0f);
+        none.nearAdded[k] = FfxFloat32x3(0.0f, 0.0f, 0.0f);
+    }
+    return none;
+}
 FFX_DOF_INLINE FfxDofQuadHighlights ffxDofHighlightsAtQuad(FfxUInt32x2 tile, FfxUInt32x2 quad, FfxFloat32x4 cocs,
                                                            FfxDofConstants constants)
 {
-    FfxDofQuadHighlights result;
-    FFX_DOF_UNROLL
-    for (FfxUInt32 k = 0u; k < 4u; ++k)
-        result.added[k] = FfxFloat32x3(0.0f, 0.0f, 0.0f);
+    FfxDofQuadHighlights result = ffxDofNoQuadHighlights();
     // The aperture at the quad's centre (half-res px): the cat's eye changes over a frame, not over a quad.
     FfxDofPixelAperture aperture = ffxDofMakeAperture(constants, (FfxFloat32x2(quad) + FfxFloat32x2(1.0f, 1.0f)) * 0.5f,
                                                       FfxFloat32x2(constants.halfSize));
@@ -741,6 +783,11 @@ FFX_DOF_INLINE FfxDofQuadHighlights ffxDofHighlightsAtQuad(FfxUInt32x2 tile, Ffx
                         FfxFloat32x2 pixelCentre =
                             FfxFloat32x2(quad + FfxUInt32x2(k & 1u, k >> 1u)) + FfxFloat32x2(0.5f, 0.5f);
                         FfxFloat32x3 added = ffxDofHighlightAt(highlight, pixelCentre - centre, aperture);
+                        if (highlight.near)
+                        {
+                            result.nearAdded[k] += added;
+                            continue;
+                        }
                         FfxFloat32x2 blocker;
                         if (ffxDofHighlightBlockerPoint(pixelCentre, centre, cocs[k], highlight.radius, blocker))
                         {
@@ -772,13 +819,14 @@ struct FfxDofUpsampleTaps
 // and `smallSourceTile`: whether the group loaded the full-res neighbourhood for either gather
 // (ffxDofTileGathersOwnSurface, ffxDofTileMayHoldBrightSmallSources); `ownGather` and `smallSources`: the
 // pixel's gathers (ffxDofGatherOwnSurfaceQuad, ffxDofGatherSmallSourcesQuad), used where
-// ffxDofPixelGathersOwnSurface and ffxDofPixelGathersSmallSources say; `highlights` what the far highlights
-// add to it (ffxDofHighlightsAtQuad). Returns false (and leaves `color` alone) when the pixel keeps
-// its input value.
+// ffxDofPixelGathersOwnSurface and ffxDofPixelGathersSmallSources say; `highlights` and `nearHighlights` what
+// the far and near highlights add to it (ffxDofHighlightsAtQuad). Returns false (and leaves `color` alone) when
+// the pixel keeps its input value.
 FFX_DOF_INLINE FfxBoolean ffxDofComposePixel(FfxDofUpsampleTaps taps, FfxFloat32x2 fraction, FfxFloat32 coc,
                                              FfxFloat32x3 fixedBlur, FfxBoolean ownSurfaceTile, FfxFloat32x4 ownGather,
                                              FfxBoolean smallSourceTile, FfxFloat32x4 smallSources,
-                                             FfxFloat32x3 highlights, FFX_DOF_INOUT(FfxFloat32x4) color)
+                                             FfxFloat32x3 highlights, FfxFloat32x3 nearHighlights,
+                                             FFX_DOF_INOUT(FfxFloat32x4) color)
 {
     FfxFloat32 bilinear[4];
     bilinear[0] = (1.0f - fraction.x) * (1.0f - fraction.y);
@@ -813,12 +861,15 @@ FFX_DOF_INLINE FfxBoolean ffxDofComposePixel(FfxDofUpsampleTaps taps, FfxFloat32
     if (!nearValid)
         nearOpacity = 0.0f;
     FfxFloat32 absCoc = abs(coc);
+    // Near highlights go over everything the pixel shows, its input included.
+    FfxBoolean nearLights = nearHighlights.x > 0.0f || nearHighlights.y > 0.0f || nearHighlights.z > 0.0f;
     if (absCoc < FFX_DOF_IN_FOCUS_RADIUS && nearOpacity <= 0.0f)
     {
-        if (rimOpacity <= 0.0f)
+        if (rimOpacity <= 0.0f && !nearLights)
             return false;
         FfxFloat32x3 veiled =
-            ffxDofLerp(FfxFloat32x3(color.x, color.y, color.z), nearColor, ffxDofNearLayerWeight(rimOpacity));
+            ffxDofLerp(FfxFloat32x3(color.x, color.y, color.z), nearColor, ffxDofNearLayerWeight(rimOpacity)) +
+            nearHighlights;
         color = FfxFloat32x4(veiled.x, veiled.y, veiled.z, color.w);
         return true;
     }
@@ -874,6 +925,7 @@ FFX_DOF_INLINE FfxBoolean ffxDofComposePixel(FfxDofUpsampleTaps taps, FfxFloat32
     result = ffxDofLerp(result, nearColor, ffxDofNearLayerWeight(nearOpacity + rimOpacity));
     if (ownNear)
         result = ffxDofLerp(ownBlur, result, layerShare);
+    result += nearHighlights;
     color = FfxFloat32x4(result.x, result.y, result.z, color.w);
     return true;
 }
@@ -925,12 +977,11 @@ FFX_DOF_INLINE void ffxDofComposite(FfxUInt32 compositeClass, FfxUInt32 listInde
     {
         FfxUInt32x2 around = ffxDofTileAround(groupId, localIndex, constants.tileCount);
         FfxFloat32x3 rangeAndPeak = ffxDofLoadTileRangeAndPeak(around);
-        FfxFloat32 tileFloor =
-            ffxDofTileMayHoldHighlights(rangeAndPeak)
-                ? ffxDofAsFloat(ffxDofLoadHighlightWord(ffxDofHighlightFloorWord(around, constants.tileCount)))
-                : FFX_DOF_FLOAT32_MAX;
+        FfxUInt32 tileFloors = ffxDofTileMayHoldHighlights(rangeAndPeak)
+                                   ? ffxDofLoadHighlightWord(ffxDofHighlightFloorWord(around, constants.tileCount))
+                                   : ffxDofNoHighlightFloors();
         ffxDofSharedTilesAround[localIndex] =
-            (tileFloor > 0.0f ? ffxDofAsUInt(tileFloor) : 0u) |
+            (tileFloors & ~FFX_DOF_TILE_AROUND_SMALL_SOURCES_BIT) |
             (ffxDofTileMayHoldBrightSmallSources(rangeAndPeak) ? FFX_DOF_TILE_AROUND_SMALL_SOURCES_BIT : 0u);
     }
     FfxInt32x2 tileOrigin = FfxInt32x2(groupId * FfxUInt32(FFX_DOF_TILE_SIZE));
@@ -964,8 +1015,8 @@ FFX_DOF_INLINE void ffxDofComposite(FfxUInt32 compositeClass, FfxUInt32 listInde
         {
             FfxUInt32 tileAround = ffxDofSharedTilesAround[k];
             smallSourceTiles |= tileAround;
-            highlightsAround = highlightsAround || (tileAround & ~FFX_DOF_TILE_AROUND_SMALL_SOURCES_BIT) !=
-                                                       ffxDofAsUInt(FFX_DOF_FLOAT32_MAX);
+            highlightsAround =
+                highlightsAround || (tileAround & ~FFX_DOF_TILE_AROUND_SMALL_SOURCES_BIT) != ffxDofNoHighlightFloors();
         }
     }
     FfxBoolean smallSourceTile = (smallSourceTiles & FFX_DOF_TILE_AROUND_SMALL_SOURCES_BIT) != 0u;
@@ -1007,9 +1058,9 @@ FFX_DOF_INLINE void ffxDofComposite(FfxUInt32 compositeClass, FfxUInt32 listInde
             if (highlightsAround && ffxDofCompositeInputIsFullRes(FfxUInt32x2(pixel), quad))
             {
                 FfxInt32x2 tileAround = pixel / FfxInt32(extent) - FfxInt32x2(groupId) + FfxInt32x2(1, 1);
-                FfxFloat32 tileFloor = ffxDofAsFloat(ffxDofSharedTilesAround[tileAround.y * 3 + tileAround.x] &
-                                                     ~FFX_DOF_TILE_AROUND_SMALL_SOURCES_BIT);
-                sampleColor *= 1.0f - ffxDofPixelHighlightShare(FfxUInt32x2(pixel), sampleColor, sampleCoc, tileFloor,
+                FfxFloat32x2 tileFloors = ffxDofUnpackHighlightFloors(
+                    ffxDofSharedTilesAround[tileAround.y * 3 + tileAround.x] & ~FFX_DOF_TILE_AROUND_SMALL_SOURCES_BIT);
+                sampleColor *= 1.0f - ffxDofPixelHighlightShare(FfxUInt32x2(pixel), sampleColor, sampleCoc, tileFloors,
                                                                 scale, constants.fullSize);
             }
             ffxDofStoreOwnSample(index, sampleColor, 2.0f * sampleCoc);
@@ -1036,6 +1087,8 @@ FFX_DOF_INLINE void ffxDofComposite(FfxUInt32 compositeClass, FfxUInt32 listInde
     FfxFloat32x4 inputColors[4];
     {
         FfxDofQuadNeighbourhood neighbourhood = ffxDofLoadQuadNeighbourhood(quad, constants.fullSize, scale);
+        if (fullResTile && highlightsAround)
+            neighbourhood = ffxDofNeighbourhoodLessHighlights(neighbourhood, quad, groupId, constants, scale);
         FFX_DOF_UNROLL
         for (FfxUInt32 k = 0u; k < 4u; ++k)
         {
@@ -1080,10 +1133,7 @@ FFX_DOF_INLINE void ffxDofComposite(FfxUInt32 compositeClass, FfxUInt32 listInde
         if (inside && ffxDofPixelGathersSmallSources(smallSourceTile, cocs[k]))
             smallGathers |= 1u << k;
     }
-    FfxDofQuadHighlights highlights;
-    FFX_DOF_UNROLL
-    for (FfxUInt32 k = 0u; k < 4u; ++k)
-        highlights.added[k] = FfxFloat32x3(0.0f, 0.0f, 0.0f);
+    FfxDofQuadHighlights highlights = ffxDofNoQuadHighlights();
     if (fullResTile && ffxDofSharedHighlightsInReach != 0u)
         highlights = ffxDofHighlightsAtQuad(groupId, quad, cocs, constants);
     FfxDofQuadGathers own;
@@ -1122,11 +1172,11 @@ FFX_DOF_INLINE void ffxDofComposite(FfxUInt32 compositeClass, FfxUInt32 listInde
         FfxFloat32x4 color = inputColors[k];
 #if FFX_DOF_OPTION_OUTPUT_PRE_INIT
         if (ffxDofComposePixel(taps, fraction, cocs[k], fixedBlurs[k], ownSurfaceTile, own.gathered[k], smallSourceTile,
-                               small.gathered[k], highlights.added[k], color))
+                               small.gathered[k], highlights.added[k], highlights.nearAdded[k], color))
             ffxDofStoreOutput(pixel, ffxDofUnscaleColor(color, scale));
 #else
         if (ffxDofComposePixel(taps, fraction, cocs[k], fixedBlurs[k], ownSurfaceTile, own.gathered[k], smallSourceTile,
-                               small.gathered[k], highlights.added[k], color))
+                               small.gathered[k], highlights.added[k], highlights.nearAdded[k], color))
             ffxDofStoreOutput(pixel, ffxDofUnscaleColor(color, scale));
         else
             ffxDofStoreOutput(pixel, ffxDofLoadInputColor(pixel));

@@ -74,7 +74,7 @@ FFX_DOF_INLINE FfxFloat32 ffxDofKernelFootprintRadius(FfxFloat32 kernelRadius, F
 
 // The dilated (far, near) range of `centerTile` given the radius every tile spreads.
 // `extent` (ffxDofApertureExtent): how far a disc reaches over its radius. `reachedByHighlights`: whether the
-// far discs of a tile that may hold highlights (ffxDofTileMayHoldHighlights) reach it.
+// near or far discs of a tile that may hold highlights (ffxDofTileMayHoldHighlights) reach it.
 FFX_DOF_INLINE FfxFloat32x2 ffxDofDilateTile(FfxUInt32x2 centerTile, FfxUInt32x2 tileCount, FfxFloat32 globalMaxRadius,
                                              FfxFloat32 extent, FFX_DOF_OUT(FfxBoolean) reachedByHighlights)
 {
@@ -100,7 +100,10 @@ FFX_DOF_INLINE FfxFloat32x2 ffxDofDilateTile(FfxUInt32x2 centerTile, FfxUInt32x2
                 reachedByHighlights = reachedByHighlights || ffxDofTileMayHoldHighlights(tile);
             }
             if (ffxDofTileReaches(tile.y * extent, distance))
+            {
                 nearCoc = max(nearCoc, tile.y);
+                reachedByHighlights = reachedByHighlights || ffxDofTileMayHoldHighlights(tile);
+            }
         }
     }
     return FfxFloat32x2(farCoc, nearCoc);

@@ -389,7 +389,8 @@ FFX_DOF_GROUPSHARED FfxFloat32x2 ffxDofSharedRimSample[FFX_DOF_RIM_SIDE * FFX_DO
 // quad gives light (so that a group without any skips the quadrants' sums).
 FFX_DOF_GROUPSHARED FfxFloat32x4 ffxDofSharedHighlightEnergyLight[FFX_DOF_GROUP_THREADS];
 FFX_DOF_GROUPSHARED FfxFloat32x4 ffxDofSharedHighlightPlaceRadius[FFX_DOF_GROUP_THREADS];
-FFX_DOF_GROUPSHARED FfxFloat32x2 ffxDofSharedHighlightAnisotropy[FFX_DOF_GROUP_THREADS];
+// The anisotropy (xy) and the near pixels' light (z) in one array: one group-shared read for both.
+FFX_DOF_GROUPSHARED FfxFloat32x4 ffxDofSharedHighlightAnisotropyNear[FFX_DOF_GROUP_THREADS];
 FFX_DOF_GROUPSHARED FfxUInt32 ffxDofSharedHighlightAny;
 
 // The sums of quadrant `quadrant` (0: top-left .. 3: bottom-right) of the group's 8 x 8 quads.
@@ -400,6 +401,7 @@ FFX_DOF_INLINE FfxDofHighlightSums ffxDofQuadrantHighlightSums(FfxUInt32 quadran
     sums.energyLight = FfxFloat32x4(0.0f, 0.0f, 0.0f, 0.0f);
     sums.placeRadius = FfxFloat32x4(0.0f, 0.0f, 0.0f, 0.0f);
     sums.anisotropy = FfxFloat32x2(0.0f, 0.0f);
+    sums.nearLight = 0.0f;
     FFX_DOF_UNROLL
     for (FfxUInt32 k = 0u; k < 16u; ++k)
     {
@@ -407,14 +409,17 @@ FFX_DOF_INLINE FfxDofHighlightSums ffxDofQuadrantHighlightSums(FfxUInt32 quadran
         FfxDofHighlightSums quad;
         quad.energyLight = ffxDofSharedHighlightEnergyLight[index];
         quad.placeRadius = ffxDofSharedHighlightPlaceRadius[index];
-        quad.anisotropy = ffxDofSharedHighlightAnisotropy[index];
+        FfxFloat32x4 anisotropyNear = ffxDofSharedHighlightAnisotropyNear[index];
+        quad.anisotropy = FfxFloat32x2(anisotropyNear.x, anisotropyNear.y);
+        quad.nearLight = anisotropyNear.z;
         sums = ffxDofAddHighlightSums(sums, quad);
     }
     return sums;
 }
 
-// Per wave, the dimmest far luminance of the group's pixels and border (the floor its highlights stand on).
-FFX_DOF_GROUPSHARED FfxFloat32 ffxDofSharedWaveFarFloor[FFX_DOF_GROUP_THREADS];
+// Per wave, the dimmest far luminance and the dimmest luminance of the group's pixels and border (the floors its
+// far and near highlights stand on, ffxDofPackHighlightFloors).
+FFX_DOF_GROUPSHARED FfxFloat32x2 ffxDofSharedWaveFloors[FFX_DOF_GROUP_THREADS];
 
 // Scaled in 32-bit (and clamped to the half range) before any conversion to 16 bits.
 FFX_DOF_INLINE FfxFloat32x4 ffxDofLoadScaledInputColor(FfxUInt32x2 pixel, FfxFloat32 scale)
@@ -503,9 +508,11 @@ FFX_DOF_INLINE void ffxDofDownsampleColor(FfxUInt32x2 groupId, FfxUInt32 localIn
     ffxDofSharedRimSample[(cell.y + 1u) * FFX_DOF_RIM_SIDE + cell.x + 1u] = rim3;
     if (localIndex == 0u)
         ffxDofSharedHighlightAny = 0u;
-    // The highlights' floor (below): the dimmest far pixel of the group's and of the border, per wave here.
+    // The highlights' floors (below): the dimmest far pixel and the dimmest pixel of the group's and of the border,
+    // per wave here.
     FfxFloat32 dimmestFar = min(min(ffxDofFarLuminance(rim0), ffxDofFarLuminance(rim1)),
                                 min(ffxDofFarLuminance(rim2), ffxDofFarLuminance(rim3)));
+    FfxFloat32 dimmest = min(min(rim0.x, rim1.x), min(rim2.x, rim3.x));
     FfxInt32x2 origin = FfxInt32x2(groupId * (2u * FfxUInt32(FFX_DOF_TILE_SIZE))) - FfxInt32x2(1, 1);
     FFX_DOF_LOOP
     for (FfxUInt32 border = localIndex; border < 4u * (FFX_DOF_RIM_SIDE - 1u); border += FFX_DOF_GROUP_THREADS)
@@ -516,10 +523,12 @@ FFX_DOF_INLINE void ffxDofDownsampleColor(FfxUInt32x2 groupId, FfxUInt32 localIn
         FfxFloat32x2 bordering = ffxDofRimSample(ffxDofLoadScaledInputColor(pixel, scale), pixel, constants);
         ffxDofSharedRimSample[borderCell.y * FFX_DOF_RIM_SIDE + borderCell.x] = bordering;
         dimmestFar = min(dimmestFar, ffxDofFarLuminance(bordering));
+        dimmest = min(dimmest, bordering.x);
     }
     dimmestFar = ffxDofWaveMin(dimmestFar);
+    dimmest = ffxDofWaveMin(dimmest);
     if (ffxDofWaveIsFirstLane())
-        ffxDofSharedWaveFarFloor[ffxDofWaveIndex(localIndex)] = dimmestFar;
+        ffxDofSharedWaveFloors[ffxDofWaveIndex(localIndex)] = FfxFloat32x2(dimmestFar, dimmest);
     ffxDofGroupBarrier();
     // The quad's 4 x 4 neighbourhood read once for its four pixels (16 group-shared reads instead of 36: on
     // lavapipe each is a loop over the lanes).
@@ -540,19 +549,22 @@ FFX_DOF_INLINE void ffxDofDownsampleColor(FfxUInt32x2 groupId, FfxUInt32 localIn
     FfxFloat32 coc2 = ffxDofLightRimCocInQuad(around, 2u);
     FfxFloat32 coc3 = ffxDofLightRimCocInQuad(around, 3u);
 
-    // Far highlights: the light of pixels far brighter than the tile's floor leaves the half-res colour for the
+    // Highlights: the light of pixels far brighter than the tile's floor leaves the half-res colour for the
     // composite's full-resolution discs (ffx_dof_highlights.h), one per quadrant of the tile.
-    // The floor: the dimmest far pixel of the tile and its border (the waves' minima above), so that every pixel
-    // of a light within it gives its light (a light split between both paths drew its rest from the layers 1.05
-    // to 1.10 times too bright, docs/technique.md).
-    FfxFloat32 tileFloor = FFX_DOF_FLOAT32_MAX;
+    // The floors: of the tile and its border (the waves' minima above), so that every pixel of a light within it
+    // gives its light (a light split between both paths drew its rest from the layers 1.05 to 1.10 times too
+    // bright, docs/technique.md); as the composite reads them back (ffxDofPackHighlightFloors).
+    FfxFloat32x2 tileFloors = FfxFloat32x2(FFX_DOF_FLOAT32_MAX, FFX_DOF_FLOAT32_MAX);
     FFX_DOF_LOOP
     for (FfxUInt32 wave = 0u; wave < ffxDofWaveCount(); ++wave)
-        tileFloor = min(tileFloor, ffxDofSharedWaveFarFloor[wave]);
-    FfxFloat32x4 shares = FfxFloat32x4(ffxDofHighlightShare(around[5].x, coc0, tileFloor, scale),
-                                       ffxDofHighlightShare(around[6].x, coc1, tileFloor, scale),
-                                       ffxDofHighlightShare(around[9].x, coc2, tileFloor, scale),
-                                       ffxDofHighlightShare(around[10].x, coc3, tileFloor, scale));
+        tileFloors = min(tileFloors, ffxDofSharedWaveFloors[wave]);
+    FfxUInt32 packedFloors = ffxDofPackHighlightFloors(tileFloors);
+    tileFloors = ffxDofUnpackHighlightFloors(packedFloors);
+    FfxFloat32x4 shares =
+        FfxFloat32x4(ffxDofHighlightShare(around[5].x, coc0, ffxDofHighlightFloor(tileFloors, coc0), scale),
+                     ffxDofHighlightShare(around[6].x, coc1, ffxDofHighlightFloor(tileFloors, coc1), scale),
+                     ffxDofHighlightShare(around[9].x, coc2, ffxDofHighlightFloor(tileFloors, coc2), scale),
+                     ffxDofHighlightShare(around[10].x, coc3, ffxDofHighlightFloor(tileFloors, coc3), scale));
     if (ffxDofQuadCutByEdge(quad, constants.fullSize))
         shares = FfxFloat32x4(0.0f, 0.0f, 0.0f, 0.0f);
     FfxDofHighlightSums highlightSums =
@@ -561,7 +573,8 @@ FFX_DOF_INLINE void ffxDofDownsampleColor(FfxUInt32x2 groupId, FfxUInt32 localIn
                                 FfxFloat32x4(coc0, coc1, coc2, coc3), shares, FfxFloat32x2(local * 2u));
     ffxDofSharedHighlightEnergyLight[localIndex] = highlightSums.energyLight;
     ffxDofSharedHighlightPlaceRadius[localIndex] = highlightSums.placeRadius;
-    ffxDofSharedHighlightAnisotropy[localIndex] = highlightSums.anisotropy;
+    ffxDofSharedHighlightAnisotropyNear[localIndex] =
+        FfxFloat32x4(highlightSums.anisotropy.x, highlightSums.anisotropy.y, highlightSums.nearLight, 0.0f);
     if (ffxDofHighlightSumsHoldLight(highlightSums))
     {
         ffxDofGroupAtomicOr(ffxDofSharedHighlightAny, 1u);
@@ -631,9 +644,9 @@ FFX_DOF_INLINE void ffxDofDownsampleColor(FfxUInt32x2 groupId, FfxUInt32 localIn
         ffxDofStoreHighlightWord(word + 1u, packed.y);
         ffxDofStoreHighlightWord(word + 2u, packed.z);
     }
-    // The floor, from which the composite knows what the tile's pixels gave (ffxDofPixelHighlightShare).
+    // The floors, from which the composite knows what the tile's pixels gave (ffxDofPixelHighlightShare).
     if (localIndex == FfxUInt32(FFX_DOF_HIGHLIGHT_SLOTS))
-        ffxDofStoreHighlightWord(ffxDofHighlightFloorWord(groupId, constants.tileCount), ffxDofAsUInt(tileFloor));
+        ffxDofStoreHighlightWord(ffxDofHighlightFloorWord(groupId, constants.tileCount), packedFloors);
 }
 
 #endif  // FFX_DOF_DOWNSAMPLE_COLOR_H

@@ -1,5 +1,5 @@
-// Far highlights drawn at full resolution: the one place that decides which light the half-res layers
-// leave out and how the composite draws it (see docs/technique.md, "Far highlights").
+// Near and far highlights drawn at full resolution: the one place that decides which light the half-res layers
+// leave out and how the composite draws it (see docs/technique.md, "Far highlights" and "Near highlights").
 //
 // The half-res layers are upsampled bilinearly, so a far disc's rim spreads over one more half-res texel
 // (2 full-res px) than the disc: a point's disc kept 0.09 to 0.16 of its level 1.5 px beyond its radius,
@@ -8,7 +8,8 @@
 // than the dimmest far pixel of their tile out of the half-res colour, down to that level, and stores it per
 // tile (HIGHLIGHTS: where it lies, its radius, its spread, its energy); the composite draws each such light as a disc
 // of the aperture's shape at full resolution, its energy over the disc's area, behind whatever lies in front of it.
-// Energy leaves the layers only where a slot holds it, so nothing is lost or drawn twice.
+// Energy leaves the layers only where a slot holds it, so nothing is lost or drawn twice. Near lights take the same
+// path over a floor of their own (ffxDofPackHighlightFloors), and the composite draws them over everything.
 //
 // A tile has FFX_DOF_HIGHLIGHT_SLOTS slots, one per quadrant of 8 x 8 full-res px: a slot holds the light of
 // every quad of its quadrant that gives some, as its light-weighted centre, the axis along which its light
@@ -41,12 +42,34 @@
 // 0.12 of the disc's level beyond its rim (docs/quality.md, point discs).
 #define FFX_DOF_HIGHLIGHT_MIN_RADIUS 1.5f
 #define FFX_DOF_HIGHLIGHT_FULL_RADIUS 2.0f
+// The same for near pixels (radius above FFX_DOF_NEAR_HIGHLIGHT_MIN_RADIUS, fully from
+// FFX_DOF_NEAR_HIGHLIGHT_FULL_RADIUS): the near layer, upsampled bilinearly from half resolution and
+// post-filtered over 3 x 3 texels, drew a near point's disc 1.3 to 1.9 px smaller than the thin lens's, with a
+// glow of 0.04 to 0.14 of its level beyond its rim (docs/quality.md, near point discs). The composite's
+// gathers of a near pixel's own surface below FFX_DOF_FAR_LAYER_ONLY_RADIUS read what pass 2 left of each
+// pixel (ffxDofPixelHighlightShare), as for far pixels, so near lights may start lower.
+#define FFX_DOF_NEAR_HIGHLIGHT_MIN_RADIUS 1.0f
+#define FFX_DOF_NEAR_HIGHLIGHT_FULL_RADIUS 1.5f
 #define FFX_DOF_SQRT2 1.41421356f
 // The widest rim a highlight's disc is drawn with (full-res px): half of it reaches beyond the radius, within the
-// margins of dilate (FFX_DOF_DILATE_MARGIN) and of the composite's window (ffxDofHighlightTileRange).
-#define FFX_DOF_HIGHLIGHT_MAX_RIM_WIDTH 6.0f
+// margins of dilate (FFX_DOF_DILATE_MARGIN, 6 full-res px) and of the composite's window (ffxDofHighlightTileRange).
+// A quadrant of uniform light (8 x 8 px: a spread of 3.3 px, a rim of 9.2) at a small radius is drawn as one disc
+// per quadrant, and such discs 8 px apart sum to a flat patch only where their rims overlap: at 6 px a bright near
+// patch of 24 x 24 px at radius 2 half-res px rippled by 10% inside (docs/technique.md, "Near highlights").
+#define FFX_DOF_HIGHLIGHT_MAX_RIM_WIDTH 9.0f
 
 // ---- Which light a quad gives --------------------------------------------------------------------
+
+// How much of its light a pixel of radius `coc` (half-res px) may give by its radius: far pixels from
+// FFX_DOF_HIGHLIGHT_MIN_RADIUS, near ones from FFX_DOF_NEAR_HIGHLIGHT_MIN_RADIUS, each ramped in.
+FFX_DOF_INLINE FfxFloat32 ffxDofHighlightRadiusRamp(FfxFloat32 coc)
+{
+    return coc < 0.0f
+               ? ffxDofSaturate((-coc - FFX_DOF_HIGHLIGHT_MIN_RADIUS) *
+                                (1.0f / (FFX_DOF_HIGHLIGHT_FULL_RADIUS - FFX_DOF_HIGHLIGHT_MIN_RADIUS)))
+               : ffxDofSaturate((coc - FFX_DOF_NEAR_HIGHLIGHT_MIN_RADIUS) *
+                                (1.0f / (FFX_DOF_NEAR_HIGHLIGHT_FULL_RADIUS - FFX_DOF_NEAR_HIGHLIGHT_MIN_RADIUS)));
+}
 
 // The share of its light a quad pixel of luminance `luminance` and radius `coc` gives to the full-resolution
 // path over a floor of `floorLuminance` (`scale`: the colour scale of the HDR range): what lies above that floor,
@@ -59,9 +82,31 @@ FFX_DOF_INLINE FfxFloat32 ffxDofHighlightShare(FfxFloat32 luminance, FfxFloat32 
     FfxFloat32 white = FFX_DOF_HIGHLIGHT_MIN_LUMINANCE * scale;
     FfxFloat32 bright = ffxDofSaturate(luminance / white - 1.0f);
     FfxFloat32 contrast = ffxDofSaturate(luminance / max(FFX_DOF_HIGHLIGHT_CONTRAST * floorLuminance, 1e-30f) - 1.0f);
-    FfxFloat32 far = ffxDofSaturate((-coc - FFX_DOF_HIGHLIGHT_MIN_RADIUS) *
-                                    (1.0f / (FFX_DOF_HIGHLIGHT_FULL_RADIUS - FFX_DOF_HIGHLIGHT_MIN_RADIUS)));
-    return bright * contrast * far * ffxDofSaturate(1.0f - floorLuminance / luminance);
+    return bright * contrast * ffxDofHighlightRadiusRamp(coc) * ffxDofSaturate(1.0f - floorLuminance / luminance);
+}
+
+// A tile's two floors: far pixels stand on the dimmest far pixel of the tile and its border (what lies behind a
+// far light is the far field around it), near pixels on the dimmest pixel of any kind there (a near light stands
+// in front of whatever lies around it: an in-focus wall holds no far pixel). Stored as two halves in one word
+// of HIGHLIGHTS (far in the low half), and pass 2 gives light over the floors as stored, so that the composite,
+// which reads them back, takes the same shares to the bit. FFX_DOF_HIGHLIGHT_NO_FLOOR, the largest half, over
+// which no pixel gives light (the HDR range keeps them at FFX_DOF_COLOR_RANGE_LIMIT): none of that kind there.
+#define FFX_DOF_HIGHLIGHT_NO_FLOOR 65504.0f
+FFX_DOF_INLINE FfxUInt32 ffxDofPackHighlightFloors(FfxFloat32x2 farNearFloors)
+{
+    return ffxDofPackHalf2(clamp(farNearFloors, FfxFloat32x2(0.0f, 0.0f),
+                                 FfxFloat32x2(FFX_DOF_HIGHLIGHT_NO_FLOOR, FFX_DOF_HIGHLIGHT_NO_FLOOR)));
+}
+FFX_DOF_INLINE FfxFloat32x2 ffxDofUnpackHighlightFloors(FfxUInt32 word) { return ffxDofUnpackHalf2(word); }
+// The word of a tile whose pixels give no light (ffxDofTileMayHoldHighlights false).
+FFX_DOF_INLINE FfxUInt32 ffxDofNoHighlightFloors()
+{
+    return ffxDofPackHighlightFloors(FfxFloat32x2(FFX_DOF_HIGHLIGHT_NO_FLOOR, FFX_DOF_HIGHLIGHT_NO_FLOOR));
+}
+// The floor a pixel of radius `coc` stands on.
+FFX_DOF_INLINE FfxFloat32 ffxDofHighlightFloor(FfxFloat32x2 farNearFloors, FfxFloat32 coc)
+{
+    return coc > 0.0f ? farNearFloors.y : farNearFloors.x;
 }
 
 // Whether the image's edge cuts the quad of full-res pixel `pixel`: such a quad repeats its edge pixels, which
@@ -72,22 +117,22 @@ FFX_DOF_INLINE FfxBoolean ffxDofQuadCutByEdge(FfxUInt32x2 pixel, FfxUInt32x2 ful
 }
 
 // ffxDofHighlightShare of full-res pixel `pixel` of scaled colour `color` and radius `coc` (half-res px) in a
-// tile of floor `floorLuminance`, as pass 2 takes it (but for the radius: pass 2 gives a light's anti-aliased
+// tile of floors `farNearFloors`, as pass 2 takes it (but for the radius: pass 2 gives a light's anti-aliased
 // rim pixels the light's radius, ffxDofLightRimCocInQuad, which needs their neighbours; the two differ only
 // where one of the radii lies below FFX_DOF_HIGHLIGHT_FULL_RADIUS): none where the image's edge cuts the
 // pixel's quad (its edge pixels repeated stay in the layers). What the composite's full-resolution gathers
 // leave of a pixel's light, the rest being drawn as a highlight.
 FFX_DOF_INLINE FfxFloat32 ffxDofPixelHighlightShare(FfxUInt32x2 pixel, FfxFloat32x3 color, FfxFloat32 coc,
-                                                    FfxFloat32 floorLuminance, FfxFloat32 scale, FfxUInt32x2 fullSize)
+                                                    FfxFloat32x2 farNearFloors, FfxFloat32 scale, FfxUInt32x2 fullSize)
 {
     if (ffxDofQuadCutByEdge(pixel, fullSize))
         return 0.0f;
-    return ffxDofHighlightShare(ffxDofLuminance32(color), coc, floorLuminance, scale);
+    return ffxDofHighlightShare(ffxDofLuminance32(color), coc, ffxDofHighlightFloor(farNearFloors, coc), scale);
 }
 
-// A light of the full-resolution path: where it lies (full-res px from its tile's top-left corner), its far
-// radius (|CoC|, half-res px), its axis (from where it lies to each of its two discs: the square root of its
-// light's variance along its principal axis less that across, full-res px), how far its light spreads about
+// A light of the full-resolution path: where it lies (full-res px from its tile's top-left corner), its
+// radius (|CoC|, half-res px) and whether it is near, its axis (from where it lies to each of its two discs: the square
+// root of its light's variance along its principal axis less that across, full-res px), how far its light spreads about
 // that axis (the root mean square distance of what is left, full-res px) and its energy (colour summed over its
 // pixels, in the HDR range's units). Two equal points g px apart have an axis of g / 2 and no spread; a round
 // light of radius a no axis and a spread of a / sqrt(2).
@@ -95,6 +140,7 @@ struct FfxDofHighlight
 {
     FfxFloat32x2 position;
     FfxFloat32 radius;
+    FfxBoolean near;
     FfxFloat32x2 axis;
     FfxFloat32 spread;
     FfxFloat32x3 energy;
@@ -102,13 +148,15 @@ struct FfxDofHighlight
 
 // A highlight as sums over the quads it gathers (a quadrant of a tile: every quad that gives light there, so
 // that a light is never split between the paths): energy (xyz) and light (w, luminance x share); the
-// light-weighted position (xy), radius (z) and squared distance from the tile's corner (w); and the
-// light-weighted x^2 - y^2 and 2 x y of the position (its second moments' part that has a direction).
+// light-weighted position (xy), |radius| (z) and squared distance from the tile's corner (w); the
+// light-weighted x^2 - y^2 and 2 x y of the position (its second moments' part that has a direction); and the
+// light of its near pixels.
 struct FfxDofHighlightSums
 {
     FfxFloat32x4 energyLight;
     FfxFloat32x4 placeRadius;
     FfxFloat32x2 anisotropy;
+    FfxFloat32 nearLight;
 };
 
 // What a quad gives: the light of its pixels 0..3 (top-left, top-right, bottom-left, bottom-right) at
@@ -136,6 +184,9 @@ FFX_DOF_INLINE FfxDofHighlightSums ffxDofQuadHighlightSums(FfxFloat32x3 color0, 
     sums.placeRadius = FfxFloat32x4(centre0 * lightSum + FfxFloat32x2(light.y + light.w, light.z + light.w),
                                     dot(abs(cocs), light), dot(distance2, light));
     sums.anisotropy = FfxFloat32x2(dot(squareDifference, light), dot(twiceProduct, light));
+    FfxFloat32x4 nearPixels = FfxFloat32x4(cocs.x > 0.0f ? 1.0f : 0.0f, cocs.y > 0.0f ? 1.0f : 0.0f,
+                                           cocs.z > 0.0f ? 1.0f : 0.0f, cocs.w > 0.0f ? 1.0f : 0.0f);
+    sums.nearLight = dot(nearPixels, light);
     return sums;
 }
 
@@ -145,6 +196,7 @@ FFX_DOF_INLINE FfxDofHighlightSums ffxDofAddHighlightSums(FfxDofHighlightSums a,
     sums.energyLight = a.energyLight + b.energyLight;
     sums.placeRadius = a.placeRadius + b.placeRadius;
     sums.anisotropy = a.anisotropy + b.anisotropy;
+    sums.nearLight = a.nearLight + b.nearLight;
     return sums;
 }
 
@@ -159,6 +211,9 @@ FFX_DOF_INLINE FfxDofHighlight ffxDofFinishHighlight(FfxDofHighlightSums sums)
     highlight.energy = FfxFloat32x3(sums.energyLight.x, sums.energyLight.y, sums.energyLight.z);
     highlight.position = FfxFloat32x2(sums.placeRadius.x, sums.placeRadius.y) * inverseLight;
     highlight.radius = sums.placeRadius.z * inverseLight;
+    // A quadrant with near and far light (a near speck over a far light within 8 px) is drawn as the side with
+    // more of it: its light is kept, the other side's radius and occlusion are not.
+    highlight.near = 2.0f * sums.nearLight > sums.energyLight.w;
     FfxFloat32x2 centre = highlight.position;
     // The covariance's trace (the variance summed over both axes) and its part with a direction, (c_xx - c_yy,
     // 2 c_xy), whose length is the variance along the principal axis less that across it.
@@ -230,8 +285,10 @@ FFX_DOF_INLINE FfxFloat32x3 ffxDofUnpackRgb9e5(FfxUInt32 bits)
 #define FFX_DOF_HIGHLIGHT_ENERGY_UNIT 16.0f
 // Word 1: the position in quarters of a pixel (6 bits each way: a tile is 16 px), the radius in 32nds of a
 // half-res px (12 bits, up to 128) and the spread in 16ths of a pixel (8 bits, up to 16). Word 2: the axis in
-// quarters of a pixel, two signed bytes (up to 31.75 px each way; its discs stay within the tile).
+// quarters of a pixel, two signed bytes (up to 31.75 px each way; its discs stay within the tile), and in bit 16
+// whether the light is near.
 #define FFX_DOF_HIGHLIGHT_POSITION_STEPS 4.0f
+#define FFX_DOF_HIGHLIGHT_NEAR_BIT 0x10000u
 #define FFX_DOF_HIGHLIGHT_RADIUS_STEPS 32.0f
 #define FFX_DOF_HIGHLIGHT_SPREAD_STEPS 16.0f
 #if FFX_DOF_HIGHLIGHT_WORDS != 3
@@ -252,7 +309,8 @@ FFX_DOF_INLINE FfxUInt32x3 ffxDofPackHighlight(FfxDofHighlight highlight)
         FfxInt32x2(clamp(floor(highlight.axis * FFX_DOF_HIGHLIGHT_POSITION_STEPS + FfxFloat32x2(0.5f, 0.5f)),
                          FfxFloat32x2(-127.0f, -127.0f), FfxFloat32x2(127.0f, 127.0f)));
     return FfxUInt32x3(energy, position.x | (position.y << 6u) | (radius << 12u) | (spread << 24u),
-                       (FfxUInt32(axis.x) & 0xffu) | ((FfxUInt32(axis.y) & 0xffu) << 8u));
+                       (FfxUInt32(axis.x) & 0xffu) | ((FfxUInt32(axis.y) & 0xffu) << 8u) |
+                           (highlight.near ? FFX_DOF_HIGHLIGHT_NEAR_BIT : 0u));
 }
 FFX_DOF_INLINE FfxDofHighlight ffxDofUnpackHighlight(FfxUInt32x3 words)
 {
@@ -265,6 +323,7 @@ FFX_DOF_INLINE FfxDofHighlight ffxDofUnpackHighlight(FfxUInt32x3 words)
     // Sign-extended from each byte.
     FfxInt32x2 axis = FfxInt32x2(FfxInt32(words.z << 24u) >> 24, FfxInt32((words.z << 16u) & 0xff000000u) >> 24);
     highlight.axis = FfxFloat32x2(axis) * (1.0f / FFX_DOF_HIGHLIGHT_POSITION_STEPS);
+    highlight.near = (words.z & FFX_DOF_HIGHLIGHT_NEAR_BIT) != 0u;
     return highlight;
 }
 
@@ -275,8 +334,7 @@ FFX_DOF_INLINE FfxUInt32 ffxDofHighlightWord(FfxUInt32x2 tile, FfxUInt32 slot, F
            slot * FfxUInt32(FFX_DOF_HIGHLIGHT_WORDS);
 }
 
-// The word of `tile`'s floor in HIGHLIGHTS (the float's bits; FFX_DOF_FLOAT32_MAX where the tile and its border
-// hold no far pixel).
+// The word of `tile`'s floors in HIGHLIGHTS (ffxDofPackHighlightFloors).
 FFX_DOF_INLINE FfxUInt32 ffxDofHighlightFloorWord(FfxUInt32x2 tile, FfxUInt32x2 tileCount)
 {
     return (tile.y * tileCount.x + tile.x) * FfxUInt32(FFX_DOF_HIGHLIGHT_TILE_WORDS) +
@@ -286,11 +344,13 @@ FFX_DOF_INLINE FfxUInt32 ffxDofHighlightFloorWord(FfxUInt32x2 tile, FfxUInt32x2 
 // ---- Where they are drawn ---------------------------------------------------------------------------
 
 // Whether a tile of (min, max) signed radius and colour peak `rangeAndPeak` (TILES) may hold highlights: a
-// channel above white and far pixels of radius from FFX_DOF_HIGHLIGHT_MIN_RADIUS (conservative: dilate lists
-// the tiles such a tile's discs reach for the composite's full-resolution work).
+// channel above white and far pixels of radius from FFX_DOF_HIGHLIGHT_MIN_RADIUS or near ones from
+// FFX_DOF_NEAR_HIGHLIGHT_MIN_RADIUS (conservative: dilate lists the tiles such a tile's discs reach for the
+// composite's full-resolution work).
 FFX_DOF_INLINE FfxBoolean ffxDofTileMayHoldHighlights(FfxFloat32x3 rangeAndPeak)
 {
-    return rangeAndPeak.z > FFX_DOF_HIGHLIGHT_MIN_LUMINANCE && rangeAndPeak.x < -FFX_DOF_HIGHLIGHT_MIN_RADIUS;
+    return rangeAndPeak.z > FFX_DOF_HIGHLIGHT_MIN_LUMINANCE &&
+           (rangeAndPeak.x < -FFX_DOF_HIGHLIGHT_MIN_RADIUS || rangeAndPeak.y > FFX_DOF_NEAR_HIGHLIGHT_MIN_RADIUS);
 }
 
 // Tiles of the composite's window whose highlights it draws, a bit each in group-shared memory: up to 32 words,
@@ -326,14 +386,18 @@ FFX_DOF_INLINE FfxFloat32x3 ffxDofHighlightAt(FfxDofHighlight highlight, FfxFloa
                                               FfxDofPixelAperture aperture)
 {
     FfxFloat32 radius = 2.0f * highlight.radius;
-    // The gauge takes the offset from the pixel to the sample: the light lies at -offset.
-    FfxFloat32 gauge = ffxDofApertureDistance(aperture, -offset, false);
+    // The gauge takes the offset from the pixel to the sample: the light lies at -offset. A near light's disc is
+    // the shape turned over, as the blur draws near samples.
+    FfxFloat32 gauge = ffxDofApertureDistance(aperture, -offset, highlight.near);
     // A light of a few pixels draws the union of its pixels' discs: a rim as wide as the light (a disc of
     // radius a has a root mean square spread of a / sqrt(2)), at least the one pixel of anti-aliasing.
     FfxFloat32 rimWidth = clamp(2.0f * FFX_DOF_SQRT2 * highlight.spread, 1.0f, FFX_DOF_HIGHLIGHT_MAX_RIM_WIDTH);
     FfxFloat32 reach = ffxDofSaturate((radius - gauge) / rimWidth + 0.5f);
-    // A rim ramping linearly over w about r covers pi (r^2 + w^2 / 12).
-    FfxFloat32 area = FFX_DOF_PI * (max(radius * radius, 0.25f) + rimWidth * rimWidth * (1.0f / 12.0f));
+    // A rim ramping linearly over w about r covers pi (r^2 + w^2 / 12); a rim wider than the disc (w > 2 r: a cone
+    // from r + w / 2 to its top at the centre, r / w + 1/2) covers pi (r + w / 2)^3 / (3 w).
+    FfxFloat32 outer = radius + 0.5f * rimWidth;
+    FfxFloat32 area = rimWidth > 2.0f * radius ? FFX_DOF_PI * outer * outer * outer / (3.0f * rimWidth)
+                                               : FFX_DOF_PI * (radius * radius + rimWidth * rimWidth * (1.0f / 12.0f));
     return highlight.energy * (reach * aperture.areaScale / area);
 }
 

@@ -51,11 +51,11 @@
 //                  each list (x | y << 16), in no order; lists 2a and 2a + 1 share array a, one from each
 //                  end (ffxDofTileListWord). The blur's or composite's workgroup i of a list works on the
 //                  list's tile i.
-//   HIGHLIGHTS     storage buffer, tiles x FFX_DOF_HIGHLIGHT_TILE_WORDS uint words: per tile the far
-//                  highlights pass 2 took out of the half-res colour, for the composite to draw at full
+//   HIGHLIGHTS     storage buffer, tiles x FFX_DOF_HIGHLIGHT_TILE_WORDS uint words: per tile the near and
+//                  far highlights pass 2 took out of the half-res colour, for the composite to draw at full
 //                  resolution (ffx_dof_highlights.h), FFX_DOF_HIGHLIGHT_SLOTS slots of FFX_DOF_HIGHLIGHT_WORDS
-//                  words (a slot of zeros is empty), then the tile's floor (a float's bits), from which the
-//                  composite knows what pass 2 took of each pixel. Pass 2 writes every word of every tile
+//                  words (a slot of zeros is empty), then the tile's far and near floors (two halves), from
+//                  which the composite knows what pass 2 took of each pixel. Pass 2 writes every word of every tile
 //                  each dispatch, so it needs no initial value. Tile (x, y) starts at word
 //                  (y * tileCount.x + x) * FFX_DOF_HIGHLIGHT_TILE_WORDS; slot s at s * FFX_DOF_HIGHLIGHT_WORDS
 //                  from there, the floor at FFX_DOF_HIGHLIGHT_FLOOR_WORD.

@@ -80,19 +80,31 @@ struct WorstDisc {
     }
 };
 
+// A point disc's picture: the disc level (0.25) times 3, so the rim and any glow show.
+void writeDiscPicture(const quality::PointDiscCase& c, const std::filesystem::path& path) {
+    io::ImageRGBA picture = c.output;
+    for (size_t i = 0; i < picture.pixels.size(); ++i)
+        if (i % 4 != 3) picture.pixels[i] *= 3.0f;
+    io::writePng(path.string(), picture);
+}
+
+// Whether every case of `cases` (of one ring-merging setting, or -1: of both) passes a gate of PointDiscCase.
+bool everyDisc(const std::vector<quality::PointDiscCase>& cases, bool (quality::PointDiscCase::*gate)() const,
+               int ringMerge = -1) {
+    return std::all_of(cases.begin(), cases.end(), [&](const quality::PointDiscCase& c) {
+        return (ringMerge >= 0 && c.ringMerge != bool(ringMerge)) || (c.*gate)();
+    });
+}
+
+const char* gateVerdict(bool ok) { return ok ? "pass" : "**FAIL**"; }
+
 // Issue 17's disc-shape gates (tests/quality/test_point_discs.cpp): per radius, the worst over the
 // positions, ring merging off and on, and the gates' verdicts.
 void writePointDiscs(std::ostream& md, vkrun::Device& device, const std::filesystem::path& imageDir) {
     const std::vector<quality::PointDiscCase> cases = quality::runPointDiscCases(device);
-    // Pictures: the disc level (0.25) times 3, so the rim and any glow show.
-    for (const quality::PointDiscCase& c : cases) {
-        if (c.radius != 40.0 || c.offsetX != 0 || c.offsetY != 0) continue;
-        io::ImageRGBA picture = c.output;
-        for (size_t i = 0; i < picture.pixels.size(); ++i)
-            if (i % 4 != 3) picture.pixels[i] *= 3.0f;
-        io::writePng((imageDir / (c.ringMerge ? "point-discs_40_merge.png" : "point-discs_40_no-merge.png")).string(),
-                     picture);
-    }
+    for (const quality::PointDiscCase& c : cases)
+        if (c.radius == 40.0 && c.offsetX == 0 && c.offsetY == 0)
+            writeDiscPicture(c, imageDir / (c.ringMerge ? "point-discs_40_merge.png" : "point-discs_40_no-merge.png"));
     md << "## point discs (issue 17: the disc's shape)\n\n"
        << "A single far point of light on black (disc level 0.25), 160 x 160 px, one radius everywhere, at each "
           "corner of a half-res quad and inside a tile (offsets (0, 0), (1, 0), (0, 1), (1, 1), (7, 5) from a tile "
@@ -115,28 +127,20 @@ void writePointDiscs(std::ostream& md, vkrun::Device& device, const std::filesys
             md << "| " << number(radius, "%g") << " | " << (ringMerge ? "on" : "off") << " | " << worst.cells();
         }
     }
-    const auto verdict = [](bool ok, bool knownFailure) {
-        return ok ? (knownFailure ? "**passes: update the test**" : "pass")
-                  : (knownFailure ? "known failure" : "**FAIL**");
-    };
-    // Whether every case (of one ring-merging setting, or of both) passes a gate of PointDiscCase.
     const auto every = [&](bool (quality::PointDiscCase::*gate)() const, int ringMerge = -1) {
-        return std::all_of(cases.begin(), cases.end(), [&](const quality::PointDiscCase& c) {
-            return (ringMerge >= 0 && c.ringMerge != bool(ringMerge)) || (c.*gate)();
-        });
+        return everyDisc(cases, gate, ringMerge);
     };
     md << "\n| gate (issue 17) | result |\n|---|---|\n"
-       << "| radius within 1 px | " << verdict(every(&quality::PointDiscCase::radiusOk), false) << " |\n"
-       << "| energy within 5% | " << verdict(every(&quality::PointDiscCase::energyOk), false) << " |\n"
+       << "| radius within 1 px | " << gateVerdict(every(&quality::PointDiscCase::radiusOk)) << " |\n"
+       << "| energy within 5% | " << gateVerdict(every(&quality::PointDiscCase::energyOk)) << " |\n"
        << "| flatness at most 0.08, centre at least 0.92 of the inner level | "
-       << verdict(every(&quality::PointDiscCase::flatOk) && every(&quality::PointDiscCase::noCentreDip), false)
+       << gateVerdict(every(&quality::PointDiscCase::flatOk) && every(&quality::PointDiscCase::noCentreDip)) << " |\n"
+       << "| rim within 1 px of a circle, ring merging off | " << gateVerdict(every(&quality::PointDiscCase::rimOk, 0))
        << " |\n"
-       << "| rim within 1 px of a circle, ring merging off | "
-       << verdict(every(&quality::PointDiscCase::rimOk, 0), false) << " |\n"
-       << "| rim within 1 px of a circle, ring merging on | "
-       << verdict(every(&quality::PointDiscCase::rimOk, 1), false) << " |\n"
-       << "| no glow beyond R + 1.5 px above 2% of the level | "
-       << verdict(every(&quality::PointDiscCase::glowOk), false) << " |\n\n"
+       << "| rim within 1 px of a circle, ring merging on | " << gateVerdict(every(&quality::PointDiscCase::rimOk, 1))
+       << " |\n"
+       << "| no glow beyond R + 1.5 px above 2% of the level | " << gateVerdict(every(&quality::PointDiscCase::glowOk))
+       << " |\n\n"
        << "Glow (passes at every radius since 2026-11-30): the far layer is half-res and upsampled bilinearly, so "
           "a disc's rim spreads over one more half-res texel (2 full-res px) than the disc: a perfectly sharp "
           "half-res disc upsampled so keeps up to a quarter of its level 1.5 px beyond its radius, and the discs "
@@ -167,14 +171,19 @@ void writePointDiscs(std::ostream& md, vkrun::Device& device, const std::filesys
           "(FFX_DOF_RING_MERGE_RIM_INSET, docs/technique.md): rims and glow as without merging.\n\n";
 }
 
-// The same disc measures for a near point before an in-focus wall (tests/quality/test_point_discs.cpp): per radius,
-// the worst over the positions, and which of the far discs' gates they meet.
-void writeNearPointDiscs(std::ostream& md, vkrun::Device& device) {
+// The same disc gates for a near point before an in-focus wall (tests/quality/test_point_discs.cpp): per radius,
+// the worst over the positions, and the gates' verdicts.
+void writeNearPointDiscs(std::ostream& md, vkrun::Device& device, const std::filesystem::path& imageDir) {
     const std::vector<quality::PointDiscCase> cases = quality::runNearPointDiscCases(device);
+    for (const quality::PointDiscCase& c : cases)
+        if (c.radius == 40.0 && c.offsetX == 0 && c.offsetY == 0)
+            writeDiscPicture(c, imageDir / "near-point-discs_40.png");
     md << "## near point discs (issue 17: the disc's shape in the near field)\n\n"
        << "The point of the section above in front of the focus: the point near (radius +R), the black around it an "
           "in-focus wall, so that the truth is again a flat disc of radius R holding the point's energy. The same "
           "five positions; the near field merges no rings. Measures as above.\n\n"
+       << "![near point, radius 40 px](images/quality/near-point-discs_40.png)\n\n"
+          "Radius 40 px, position (0, 0) (values x 3).\n\n"
        << "| radius (px) | radius error | energy | flatness | centre | rim | glow |\n"
        << "|---:|---:|---|---:|---:|---:|---:|\n";
     for (double radius : quality::kNearPointDiscRadii) {
@@ -183,27 +192,27 @@ void writeNearPointDiscs(std::ostream& md, vkrun::Device& device) {
             if (c.radius == radius) worst.add(c);
         md << "| " << number(radius, "%g") << " | " << worst.cells();
     }
-    const auto share = [&](bool (quality::PointDiscCase::*gate)() const) {
-        const size_t passing = size_t(
-            std::count_if(cases.begin(), cases.end(), [&](const quality::PointDiscCase& c) { return (c.*gate)(); }));
-        return std::to_string(passing) + " of " + std::to_string(cases.size()) +
-               (passing == cases.size() ? " (pass)" : " (**known failure**)");
-    };
-    md << "\n| far discs' gate | cases that meet it |\n|---|---|\n"
-       << "| radius within 1 px | " << share(&quality::PointDiscCase::radiusOk) << " |\n"
-       << "| energy within 5% | " << share(&quality::PointDiscCase::energyOk) << " |\n"
-       << "| flatness at most 0.08 | " << share(&quality::PointDiscCase::flatOk) << " |\n"
-       << "| centre at least 0.92 of the inner level | " << share(&quality::PointDiscCase::noCentreDip) << " |\n"
-       << "| rim within 1 px of a circle | " << share(&quality::PointDiscCase::rimOk) << " |\n"
-       << "| no glow beyond R + 1.5 px above 2% of the level | " << share(&quality::PointDiscCase::glowOk) << " |\n\n"
-       << "Near discs are drawn from the half-res near layer, upsampled bilinearly: a rim spread over about 5 px, "
-          "so the disc measures up to 1.9 px smaller than the truth's with a glow of 0.04 to 0.14 of its level "
-          "beyond R + 1.5 px, the far discs' state before far highlights (above). Drawing near highlights at full "
-          "resolution as the far ones are is the next step (not done). Energy: a near point of radius 3 px "
-          "(1.5 half-res px) kept 0.035 of its light until 2026-11-30 (the colour downsample dropped near "
-          "pixels of 1.25 to 2 half-res px among in-focus ones, FFX_DOF_NEAR_COVERAGE_MIN_RADIUS; "
-          "tests/shaders: \"An isolated near pixel over an in-focus wall keeps its light\"); at 4.5 px (2.25 "
-          "half-res px) it keeps 0.81, not yet explained (the near layer holds all of it).\n\n";
+    const auto every = [&](bool (quality::PointDiscCase::*gate)() const) { return everyDisc(cases, gate); };
+    md << "\n| gate (issue 17, the far discs') | result |\n|---|---|\n"
+       << "| radius within 1 px | " << gateVerdict(every(&quality::PointDiscCase::radiusOk)) << " |\n"
+       << "| energy within 5% | " << gateVerdict(every(&quality::PointDiscCase::energyOk)) << " |\n"
+       << "| flatness at most 0.08, centre at least 0.92 of the inner level | "
+       << gateVerdict(every(&quality::PointDiscCase::flatOk) && every(&quality::PointDiscCase::noCentreDip)) << " |\n"
+       << "| rim within 1 px of a circle | " << gateVerdict(every(&quality::PointDiscCase::rimOk)) << " |\n"
+       << "| no glow beyond R + 1.5 px above 2% of the level | " << gateVerdict(every(&quality::PointDiscCase::glowOk))
+       << " |\n\n"
+       << "Near highlights (passing since 2026-11-30): a near point brighter than white leaves the half-res layers in "
+          "the colour downsample, as a far one does, and the composite draws it at full resolution over everything "
+          "the pixel shows (ffx_dof_highlights.h, docs/technique.md \"Highlights\"), from a near radius of 1 half-res "
+          "px, fully from 1.5. Until then near discs were drawn from the half-res near layer, post-filtered over 3 x "
+          "3 texels and upsampled bilinearly, colour and opacity apart: 1.3 to 1.9 px smaller than the truth's "
+          "(a partly covered near texel's radius is also half a texel smaller than its pixels', "
+          "FFX_DOF_NEAR_COVERAGE_INSET), with a glow of 0.04 to 0.14 of the level beyond R + 1.5 px, a flatness of up "
+          "to 0.16 below 8 px and 0.81 of the light at 4.5 px. A near point of radius 3 px (1.5 half-res px) kept "
+          "0.035 of its light until earlier the same day (the colour downsample dropped near pixels of 1.25 to 2 "
+          "half-res px among in-focus ones, FFX_DOF_NEAR_COVERAGE_MIN_RADIUS). Near specks at or below white stay in "
+          "the near layer: tests/shaders \"An isolated near pixel over an in-focus wall keeps its light\" prints "
+          "what they keep (0.81 at 2.25 half-res px).\n\n";
 }
 
 // Issue 17's thin near bars (tests/quality/test_thin_bars.cpp): the veil's summed opacity and its
@@ -865,7 +874,7 @@ int main(int argc, char** argv) {
                   "walk).\n\n";
         }
         writePointDiscs(md, device, imageDir);
-        writeNearPointDiscs(md, device);
+        writeNearPointDiscs(md, device, imageDir);
         writeThinBars(md, device, imageDir);
         writeSmallLights(md, device);
         writeNearLights(md, device);

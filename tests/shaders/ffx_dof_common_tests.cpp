@@ -1129,7 +1129,7 @@ FfxDofUpsampleTaps nearRimTaps(float opacity) {
 glm::vec4 composeRimPixel(const FfxDofUpsampleTaps& taps, glm::vec2 fraction, float coc, bool* composed) {
     glm::vec4 color(0.3f, 0.3f, 0.3f, 1.0f);
     *composed = ffxDofComposePixel(taps, fraction, coc, glm::vec3(0.3f), false, glm::vec4(0.0f), false, glm::vec4(0.0f),
-                                   glm::vec3(0.0f), color);
+                                   glm::vec3(0.0f), glm::vec3(0.0f), color);
     return color;
 }
 

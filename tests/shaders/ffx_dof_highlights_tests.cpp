@@ -1,4 +1,4 @@
-// Unit tests of ffx_dof_highlights.h (far highlights drawn at full resolution) through the C++ mapping. Every
+// Unit tests of ffx_dof_highlights.h (near and far highlights drawn at full resolution) through the C++ mapping. Every
 // expectation is computed independently of the function under test (formula, brute force over a pixel grid).
 #include <catch2/catch.hpp>
 
@@ -12,6 +12,7 @@ FfxDofHighlight makeHighlight(glm::vec2 position, float radius, float spread, gl
     FfxDofHighlight highlight;
     highlight.position = position;
     highlight.radius = radius;
+    highlight.near = false;
     highlight.axis = glm::vec2(0.0f);
     highlight.spread = spread;
     highlight.energy = energy;
@@ -48,9 +49,11 @@ TEST_CASE(
         FfxDofHighlight highlight = makeHighlight(glm::vec2(place(rng), place(rng)), radius(rng), spread(rng),
                                                   glm::vec3(energy(rng), energy(rng), energy(rng)));
         highlight.axis = glm::vec2(axis(rng), axis(rng));
+        highlight.near = (i & 1) != 0;
         const glm::uvec3 words = ffxDofPackHighlight(highlight);
         REQUIRE(words.x != 0u);
         const FfxDofHighlight back = ffxDofUnpackHighlight(words);
+        CHECK(back.near == highlight.near);
         CHECK(std::fabs(back.position.x - highlight.position.x) <= 0.125f + 1e-6f);
         CHECK(std::fabs(back.position.y - highlight.position.y) <= 0.125f + 1e-6f);
         CHECK(std::fabs(back.axis.x - highlight.axis.x) <= 0.125f + 1e-6f);
@@ -74,7 +77,9 @@ TEST_CASE("A pixel gives light above its floor, only where it is bright, far bri
     CHECK(ffxDofHighlightShare(FFX_DOF_HIGHLIGHT_MIN_LUMINANCE, far, 0.0f, scale) == 0.0f);
     CHECK(ffxDofHighlightShare(FFX_DOF_HIGHLIGHT_CONTRAST * 10.0f, far, 10.0f, scale) == 0.0f);
     CHECK(ffxDofHighlightShare(50.0f, -FFX_DOF_HIGHLIGHT_MIN_RADIUS, floor, scale) == 0.0f);
-    CHECK(ffxDofHighlightShare(50.0f, 5.0f, floor, scale) == 0.0f);  // near field
+    CHECK(ffxDofHighlightShare(50.0f, FFX_DOF_NEAR_HIGHLIGHT_MIN_RADIUS, floor, scale) == 0.0f);
+    CHECK(ffxDofHighlightShare(50.0f, FFX_DOF_NEAR_HIGHLIGHT_FULL_RADIUS, floor, scale) ==
+          Approx(1.0f - floor / 50.0f));
     CHECK(ffxDofHighlightShare(0.0f, far, 0.0f, scale) == 0.0f);
     // White is in the input's units: the HDR range's scale moves it with the colour.
     CHECK(ffxDofHighlightShare(1.5f * 0.25f, far, 0.0f, 0.25f) == Approx(0.5f));
@@ -111,10 +116,55 @@ TEST_CASE("The composite knows what pass 2 took of a pixel, but for a quad the i
     const float coc = -2.5f, floor = 0.1f, scale = 0.5f;
     const float taken = ffxDofHighlightShare(ffxDofLuminance32(light), coc, floor, scale);
     REQUIRE(taken > 0.5f);
-    CHECK(ffxDofPixelHighlightShare(glm::uvec2(31u, 19u), light, coc, floor, scale, size) == taken);
+    // The far floor (the low half) for a far pixel.
+    const glm::vec2 floors(floor, 7.0f);
+    CHECK(ffxDofPixelHighlightShare(glm::uvec2(31u, 19u), light, coc, floors, scale, size) == taken);
     // Column 32 is the last, alone in its quad; rows 18 and 19 make the last quad row.
-    CHECK(ffxDofPixelHighlightShare(glm::uvec2(32u, 4u), light, coc, floor, scale, size) == 0.0f);
-    CHECK(ffxDofPixelHighlightShare(glm::uvec2(10u, 19u), light, coc, floor, scale, size) == taken);
+    CHECK(ffxDofPixelHighlightShare(glm::uvec2(32u, 4u), light, coc, floors, scale, size) == 0.0f);
+    CHECK(ffxDofPixelHighlightShare(glm::uvec2(10u, 19u), light, coc, floors, scale, size) == taken);
+    // The near floor for a near pixel.
+    CHECK(ffxDofPixelHighlightShare(glm::uvec2(10u, 19u), light, -coc, floors, scale, size) ==
+          ffxDofHighlightShare(ffxDofLuminance32(light), -coc, floors.y, scale));
+}
+
+TEST_CASE("A tile's two floors survive their word, and a tile without highlights gives no light", "[highlights]") {
+    // Far floor in the low half, near floor in the high half, each a half: what pass 2 takes its shares over.
+    const glm::vec2 floors(0.0371f, 2.5f);
+    const glm::vec2 back = ffxDofUnpackHighlightFloors(ffxDofPackHighlightFloors(floors));
+    CHECK(back.x == Approx(floors.x).epsilon(1.0 / 2048.0));
+    CHECK(back.y == Approx(floors.y).epsilon(1.0 / 2048.0));
+    // Read back, the same word again: the composite takes pass 2's shares to the bit.
+    CHECK(ffxDofPackHighlightFloors(back) == ffxDofPackHighlightFloors(floors));
+    CHECK(ffxDofHighlightFloor(back, -3.0f) == back.x);
+    CHECK(ffxDofHighlightFloor(back, 3.0f) == back.y);
+    // No far pixel (FLT_MAX) clamps to the largest half, over which no pixel of the HDR range gives light; the sign
+    // bit of the high half stays free for the composite's flag.
+    const uint32_t none = ffxDofPackHighlightFloors(glm::vec2(FFX_DOF_FLOAT32_MAX, FFX_DOF_FLOAT32_MAX));
+    CHECK(none == ffxDofNoHighlightFloors());
+    CHECK((none & 0x80000000u) == 0u);
+    CHECK(ffxDofUnpackHighlightFloors(none).x == FFX_DOF_HIGHLIGHT_NO_FLOOR);
+    CHECK(ffxDofHighlightShare(FFX_DOF_COLOR_RANGE_LIMIT, -5.0f, FFX_DOF_HIGHLIGHT_NO_FLOOR, 1.0f) == 0.0f);
+    CHECK(ffxDofHighlightShare(FFX_DOF_COLOR_RANGE_LIMIT, 5.0f, FFX_DOF_HIGHLIGHT_NO_FLOOR, 1.0f) == 0.0f);
+}
+
+TEST_CASE("A highlight is near where more than half of its light is", "[highlights]") {
+    const glm::vec3 dark(0.0f), light(10.0f, 20.0f, 30.0f);
+    const FfxDofHighlightSums near =
+        ffxDofQuadHighlightSums(light, dark, dark, dark, glm::vec4(6.0f, -5.0f, 0.0f, 0.0f),
+                                glm::vec4(1.0f, 0.0f, 0.0f, 0.0f), glm::vec2(2.0f));
+    const FfxDofHighlightSums far = ffxDofQuadHighlightSums(dark, light, dark, dark, glm::vec4(6.0f, -5.0f, 0.0f, 0.0f),
+                                                            glm::vec4(0.0f, 0.6f, 0.0f, 0.0f), glm::vec2(2.0f));
+    CHECK(near.nearLight == Approx(ffxDofLuminance32(light)));
+    CHECK(far.nearLight == 0.0f);
+    const FfxDofHighlight nearAlone = ffxDofFinishHighlight(near);
+    CHECK(nearAlone.near);
+    CHECK(nearAlone.radius == Approx(6.0f));
+    CHECK_FALSE(ffxDofFinishHighlight(far).near);
+    // Together: the near light is the larger part, so the slot is near; its light is all kept.
+    const FfxDofHighlight both = ffxDofFinishHighlight(ffxDofAddHighlightSums(near, far));
+    CHECK(both.near);
+    CHECK(both.energy.z == Approx(30.0f * 1.6f));
+    CHECK_FALSE(ffxDofFinishHighlight(ffxDofAddHighlightSums(far, ffxDofAddHighlightSums(far, near))).near);
 }
 
 TEST_CASE("Highlight sums give the light-weighted place, radius, axis and spread of what they gather", "[highlights]") {
@@ -178,8 +228,9 @@ TEST_CASE("Highlight sums give the light-weighted place, radius, axis and spread
 
 TEST_CASE("A highlight's disc on the pixel grid holds its energy and ends at its radius", "[highlights]") {
     const FfxDofPixelAperture round = ffxDofRoundAperture();
-    for (float radius : {3.0f, 4.5f, 9.1f, 13.0f, 27.0f}) {  // half-res px
-        for (float spread : {0.0f, 0.7f, 2.0f}) {            // full-res px
+    // Down to rims wider than the disc (radius 1 and 1.5 half-res px at a spread of 3.2 px: a rim of 9).
+    for (float radius : {1.0f, 1.5f, 3.0f, 4.5f, 9.1f, 13.0f, 27.0f}) {  // half-res px
+        for (float spread : {0.0f, 0.7f, 2.0f, 3.2f}) {                  // full-res px
             for (glm::vec2 place : {glm::vec2(0.5f), glm::vec2(0.3f, 0.85f)}) {
                 const FfxDofHighlight highlight = makeHighlight(place, radius, spread, glm::vec3(1.0f, 2.0f, 3.0f));
                 const float rim =
