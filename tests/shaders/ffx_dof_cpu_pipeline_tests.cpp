@@ -812,6 +812,45 @@ TEST_CASE("Two lights a few pixels apart in one quadrant are drawn as each alone
     }
 }
 
+TEST_CASE("A near and a far light in one quadrant keep their light, drawn as the brighter one's side", "[pipeline]") {
+    // A quadrant's slot is near or far (ffx_dof_highlights.h): a near light and a far light a few px apart in one
+    // quadrant are drawn with the radius and occlusion of the side that holds more of their light. Their light is
+    // kept; the L1 difference from the two drawn alone, over theirs, is printed (the dimmer side's disc drawn at the
+    // brighter side's radius).
+    const uint32_t w = 64, h = 64;
+    const Scene none = makeScene(w, h, glm::vec4(0.01f, 0.01f, 0.01f, 1.0f), -8.0f);
+    Settings settings;
+    settings.cocLimit = 16.4f;
+    const std::vector<glm::vec4> noneOut = ffxdoftest::runPipeline(none, settings);
+    const auto withLight = [&](Scene scene, int x, float value, float coc) {
+        scene.color[size_t(34) * w + size_t(x)] = glm::vec4(value, value, value, 1.0f);
+        scene.depth[size_t(34) * w + size_t(x)] = -coc;
+        return scene;
+    };
+    for (const float nearValue : {50.0f, 200.0f}) {
+        const Scene withNear = withLight(none, 33, nearValue, 4.0f);
+        const Scene withFar = withLight(none, 37, 100.0f, -4.0f);
+        const std::vector<glm::vec4> nearOut = ffxdoftest::runPipeline(withNear, settings);
+        const std::vector<glm::vec4> farOut = ffxdoftest::runPipeline(withFar, settings);
+        const std::vector<glm::vec4> bothOut =
+            ffxdoftest::runPipeline(withLight(withNear, 37, 100.0f, -4.0f), settings);
+        double added = 0.0, difference = 0.0, alone = 0.0;
+        for (size_t i = 0; i < noneOut.size(); ++i) {
+            const double apart = double(nearOut[i].y) + farOut[i].y - 2.0 * noneOut[i].y;
+            added += double(bothOut[i].y) - noneOut[i].y;
+            difference += std::abs(double(bothOut[i].y) - noneOut[i].y - apart);
+            alone += std::abs(apart);
+        }
+        const double input = nearValue + 100.0 - 2.0 * 0.01;
+        std::printf(
+            "a near light of %.0f and a far light of 100 in one quadrant: %.4f of their light, L1 difference "
+            "from each alone %.3f\n",
+            nearValue, added / input, difference / alone);
+        INFO("near light " << nearValue << ": light " << added / input << ", L1 difference " << difference / alone);
+        CHECK(std::abs(added / input - 1.0) <= 0.02);
+    }
+}
+
 TEST_CASE("Three lights in one quadrant keep their energy, drawn as two discs", "[pipeline]") {
     // A quadrant's slot holds two discs (ffx_dof_highlights.h), so three 1 px lights of 100 in one quadrant of 8 x 8
     // px are drawn as two at the ends of their principal axis, each with a rim as wide as the spread across it: the
