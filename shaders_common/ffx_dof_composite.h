@@ -370,8 +370,8 @@ FFX_DOF_INLINE FfxDofQuadNeighbourhood ffxDofLoadQuadNeighbourhood(FfxUInt32x2 q
 // (docs/technique.md, "Near highlights"). Read in place, pixels outside the group's tile come from MIP 0, which
 // pass 2 left them out of already.
 FFX_DOF_INLINE FfxDofQuadNeighbourhood ffxDofNeighbourhoodLessHighlights(FfxDofQuadNeighbourhood neighbourhood,
-                                                                        FfxUInt32x2 quad, FfxUInt32x2 groupId,
-                                                                        FfxDofConstants constants, FfxFloat32 scale)
+                                                                         FfxUInt32x2 quad, FfxUInt32x2 groupId,
+                                                                         FfxDofConstants constants, FfxFloat32 scale)
 {
     FfxInt32 extent = FfxInt32(FFX_DOF_COMPOSITE_GROUP_EXTENT);
     FFX_DOF_UNROLL
