@@ -108,8 +108,8 @@
 #define FFX_DOF_GLOBALS_FOCUS_COC_BIAS 5
 #define FFX_DOF_GLOBALS_WORD_COUNT 8
 
-// HIGHLIGHTS: highlights kept per tile, uint words per highlight, the word of the tile's floor after its slots
-// and uint words per tile.
+// HIGHLIGHTS: highlights kept per tile, uint words per highlight, the word of the tile's floors (far and near, two
+// halves) after its slots and uint words per tile.
 #define FFX_DOF_HIGHLIGHT_SLOTS 4
 #define FFX_DOF_HIGHLIGHT_WORDS 3
 #define FFX_DOF_HIGHLIGHT_FLOOR_WORD (FFX_DOF_HIGHLIGHT_SLOTS * FFX_DOF_HIGHLIGHT_WORDS)

@@ -94,7 +94,7 @@ constexpr uint32_t tileListsWordCount(uint32_t tileCountX, uint32_t tileCountY) 
     return FFX_DOF_TILE_LIST_ARRAYS * tileCountX * tileCountY;
 }
 // HIGHLIGHTS (FFX_DOF_UAV_BUFFER_HIGHLIGHTS): FFX_DOF_HIGHLIGHT_SLOTS highlights of FFX_DOF_HIGHLIGHT_WORDS
-// words and the floor per tile.
+// words and the word of the two floors (far, near) per tile.
 constexpr uint32_t highlightsWordCount(uint32_t tileCountX, uint32_t tileCountY) {
     return tileCountX * tileCountY * FFX_DOF_HIGHLIGHT_TILE_WORDS;
 }
