@@ -43,6 +43,16 @@ Scene makeScene(uint32_t w, uint32_t h, glm::vec4 background, float backgroundCo
     return s;
 }
 
+// `scene` with a square light of `size` px of `value` at radius `coc` (half-res px), its top-left pixel at `at`.
+Scene withLight(Scene scene, glm::ivec2 at, float value, float coc, int size = 1) {
+    for (int y = at.y; y < at.y + size; ++y)
+        for (int x = at.x; x < at.x + size; ++x) {
+            scene.color[size_t(y) * scene.width + size_t(x)] = glm::vec4(value, value, value, 1.0f);
+            scene.depth[size_t(y) * scene.width + size_t(x)] = -coc;
+        }
+    return scene;
+}
+
 void paint(Scene& s, const Rect& r, float coc, bool checker) {
     for (int y = r.y0; y < r.y1; ++y)
         for (int x = r.x0; x < r.x1; ++x) {
@@ -732,18 +742,10 @@ TEST_CASE("A dim light on a bright light's rim leaves the bright disc there as i
     none.height = h;
     none.color.assign(size_t(w) * h, glm::vec4(background, background, background, 1.0f));
     none.depth.assign(size_t(w) * h, 16.0f);
-    const auto withLight = [&](Scene scene, int x0, int y0, int size, float value, float coc) {
-        for (int y = y0; y < y0 + size; ++y)
-            for (int x = x0; x < x0 + size; ++x) {
-                scene.color[size_t(y) * w + size_t(x)] = glm::vec4(value, value, value, 1.0f);
-                scene.depth[size_t(y) * w + size_t(x)] = -coc;
-            }
-        return scene;
-    };
-    const Scene bright = withLight(none, 80, 60, 3, FFX_DOF_HIGHLIGHT_MIN_LUMINANCE, -9.1f);
+    const Scene bright = withLight(none, {80, 60}, FFX_DOF_HIGHLIGHT_MIN_LUMINANCE, -9.1f, 3);
     const float dimValue = 0.05f;
-    const Scene dim = withLight(none, 64, 57, 2, dimValue, -3.0f);
-    const Scene both = withLight(bright, 64, 57, 2, dimValue, -3.0f);
+    const Scene dim = withLight(none, {64, 57}, dimValue, -3.0f, 2);
+    const Scene both = withLight(bright, {64, 57}, dimValue, -3.0f, 2);
     Settings settings;
     settings.cocLimit = 16.4f;
     Layers noneLayers, brightLayers, dimLayers, bothLayers;
@@ -786,18 +788,15 @@ TEST_CASE("Two lights a few pixels apart in one quadrant are drawn as each alone
     settings.cocLimit = 16.4f;
     const std::vector<glm::vec4> noneOut = ffxdoftest::runPipeline(none, settings);
     for (const float coc : {-2.25f, -3.0f, -4.0f, -6.0f}) {
-        const auto withLight = [&](Scene scene, int x, int y) {
-            scene.color[size_t(y) * w + size_t(x)] = glm::vec4(100.0f, 100.0f, 100.0f, 1.0f);
-            scene.depth[size_t(y) * w + size_t(x)] = -coc;
-            return scene;
-        };
         // Both lights in the quadrant of pixels 32..39 each way, but for the gap of 7.
         const int x0 = 33, y0 = 34;
-        const Scene first = withLight(none, x0, y0);
+        const Scene first = withLight(none, {x0, y0}, 100.0f, coc);
         const std::vector<glm::vec4> firstOut = ffxdoftest::runPipeline(first, settings);
         for (const int gap : {3, 5, 7}) {
-            const std::vector<glm::vec4> secondOut = ffxdoftest::runPipeline(withLight(none, x0 + gap, y0), settings);
-            const std::vector<glm::vec4> bothOut = ffxdoftest::runPipeline(withLight(first, x0 + gap, y0), settings);
+            const std::vector<glm::vec4> secondOut =
+                ffxdoftest::runPipeline(withLight(none, {x0 + gap, y0}, 100.0f, coc), settings);
+            const std::vector<glm::vec4> bothOut =
+                ffxdoftest::runPipeline(withLight(first, {x0 + gap, y0}, 100.0f, coc), settings);
             double difference = 0.0, alone = 0.0;
             for (size_t i = 0; i < noneOut.size(); ++i) {
                 const double apart = double(firstOut[i].y) + secondOut[i].y - 2.0 * noneOut[i].y;
@@ -822,18 +821,13 @@ TEST_CASE("A near and a far light in one quadrant keep their light, drawn as the
     Settings settings;
     settings.cocLimit = 16.4f;
     const std::vector<glm::vec4> noneOut = ffxdoftest::runPipeline(none, settings);
-    const auto withLight = [&](Scene scene, int x, float value, float coc) {
-        scene.color[size_t(34) * w + size_t(x)] = glm::vec4(value, value, value, 1.0f);
-        scene.depth[size_t(34) * w + size_t(x)] = -coc;
-        return scene;
-    };
     for (const float nearValue : {50.0f, 200.0f}) {
-        const Scene withNear = withLight(none, 33, nearValue, 4.0f);
-        const Scene withFar = withLight(none, 37, 100.0f, -4.0f);
+        const Scene withNear = withLight(none, {33, 34}, nearValue, 4.0f);
+        const Scene withFar = withLight(none, {37, 34}, 100.0f, -4.0f);
         const std::vector<glm::vec4> nearOut = ffxdoftest::runPipeline(withNear, settings);
         const std::vector<glm::vec4> farOut = ffxdoftest::runPipeline(withFar, settings);
         const std::vector<glm::vec4> bothOut =
-            ffxdoftest::runPipeline(withLight(withNear, 37, 100.0f, -4.0f), settings);
+            ffxdoftest::runPipeline(withLight(withNear, {37, 34}, 100.0f, -4.0f), settings);
         double added = 0.0, difference = 0.0, alone = 0.0;
         for (size_t i = 0; i < noneOut.size(); ++i) {
             const double apart = double(nearOut[i].y) + farOut[i].y - 2.0 * noneOut[i].y;
@@ -874,17 +868,13 @@ TEST_CASE("Three lights in one quadrant keep their energy, drawn as two discs", 
     } radii[] = {{-2.25f, 0.56}, {-4.0f, 0.33}, {-8.0f, 0.18}};
     for (const auto& radius : radii) {
         for (const auto& lights : patterns) {
-            const auto withLight = [&](Scene scene, glm::ivec2 at) {
-                scene.color[size_t(at.y) * w + size_t(at.x)] = glm::vec4(100.0f, 100.0f, 100.0f, 1.0f);
-                scene.depth[size_t(at.y) * w + size_t(at.x)] = -radius.coc;
-                return scene;
-            };
             std::vector<double> apart(noneOut.size(), 0.0);
             Scene all = none;
             for (const glm::ivec2 at : lights) {
-                const std::vector<glm::vec4> alone = ffxdoftest::runPipeline(withLight(none, at), settings);
+                const std::vector<glm::vec4> alone =
+                    ffxdoftest::runPipeline(withLight(none, at, 100.0f, radius.coc), settings);
                 for (size_t i = 0; i < apart.size(); ++i) apart[i] += double(alone[i].y) - noneOut[i].y;
-                all = withLight(all, at);
+                all = withLight(all, at, 100.0f, radius.coc);
             }
             const std::vector<glm::vec4> allOut = ffxdoftest::runPipeline(all, settings);
             double difference = 0.0, aloneSum = 0.0, added = 0.0, addedApart = 0.0;
