@@ -11,9 +11,7 @@
 //   Far field (everything else): three layers, what lies nearer than the texel's own surface, the
 //   surface itself (front) and what lies behind it (back), each composed over the ones behind by its
 //   coverage (ffxDofFarNearerShare, ffxDofComposeFarLayers). A sample only counts within its own
-//   radius, so in-focus and foreground color never spreads into the far field beyond it. A far
-//   sample whose light over its own disc exceeds display white (in the input's units: GLOBALS'
-//   colour scale) spreads over a slightly smaller disc (ffxDofHighlightSpreadRadius). Where the layers
+//   radius, so in-focus and foreground color never spreads into the far field beyond it. Where the layers
 //   in front leave most of the disc open, what lies behind is also read beyond the kernel, as far as
 //   the far radii that reach the tile (ffxDofGatherBehind).
 //   Hole filling: when the texel itself is near, every far-field sample, whatever its reach, is
@@ -63,7 +61,6 @@ FfxUInt32x2 ffxDofLoadCoarseMip(FfxInt32x2 texel, FfxUInt32 mip);
 void ffxDofStoreNearColor(FfxUInt32x2 texel, FfxDofFloat3 color);
 void ffxDofStoreFarColor(FfxUInt32x2 texel, FfxDofFloat3 color);
 void ffxDofStoreLayerAlpha(FfxUInt32x2 texel, FfxFloat32x2 nearOpacityFarValidity);
-FfxFloat32 ffxDofLoadColorScale();
 void ffxDofResetGlobals();
 #endif
 
@@ -80,29 +77,6 @@ void ffxDofResetGlobals();
 // offsets (docs/technique.md, "Light offsets"): with half a texel a small far light lost up to 1.1% of
 // its energy, and a point's rim at radius 12 lay 0.60 px off the circle instead of 0.33.
 #define FFX_DOF_RING_MERGE_RIM_INSET 1.0f
-// Highlights: a far sample whose light, spread over its own disc, comes near display white (its disc
-// level: luminance x texel area / disc area, in the input's units) is spread over a disc up to
-// FFX_DOF_HIGHLIGHT_INSET half-res px smaller, its area weight following, so its energy is kept. The
-// half-res rim ramp and the bilinear upsample widen every disc by about a full-res pixel each side,
-// which a disc below white hides and a disc above white shows as a wider, fringed disc. The inset
-// grows from a disc level of FFX_DOF_HIGHLIGHT_LEVEL to twice that.
-#define FFX_DOF_HIGHLIGHT_INSET 0.25f
-#define FFX_DOF_HIGHLIGHT_LEVEL 0.5f
-
-// Radius over which a far sample of |radius| `absRadius` spreads its light (FFX_DOF_HIGHLIGHT_INSET).
-// `levelRadiusSquared`: the squared radius of the disc over which the sample's light would be exactly
-// at FFX_DOF_HIGHLIGHT_LEVEL (luminance x texel area x the shape's area scale / (pi x the level), in
-// the input's units), so the disc level over the level, less 1, is (levelRadiusSquared - r^2) / r^2.
-// `rampScale` stands for 1 / r^2: the kernel's, one division per texel instead of one per sample (the
-// threshold is exact; the ramp above it is steeper or gentler for samples of other radii).
-FFX_DOF_INLINE FfxFloat32 ffxDofHighlightSpreadRadius(FfxFloat32 absRadius, FfxFloat32 levelRadiusSquared,
-                                                      FfxFloat32 rampScale)
-{
-    FfxFloat32 excess = (levelRadiusSquared - absRadius * absRadius) * rampScale;
-    FfxFloat32 inset = FFX_DOF_HIGHLIGHT_INSET * ffxDofSaturate(excess);
-    return max(absRadius - inset, min(absRadius, 0.5f));
-}
-
 // ---- Kernel walk: every texel of a ring read once -----------------------------------------------
 //
 // Ring k of a kernel whose rings are s apart holds the texels whose centres lie at [(k - 1/2) s,
@@ -499,12 +473,10 @@ struct FfxDofKernel
     FfxUInt32 baseMip;
     FfxUInt32 rings;
     FfxBoolean centerIsNear;
-    FfxDofPixelAperture aperture;   // the bokeh shape this texel sees
-    FfxFloat32 inverseColorScale;   // 1 / ffxDofColorRangeScale: the color MIPs back in input units
-    FfxFloat32 highlightRampScale;  // 1 / the kernel radius^2 (ffxDofHighlightSpreadRadius)
-    FfxFloat32 ownGatherShare;      // ffxDofOwnGatherShare of the texel's own radius, where the tile draws
-                                    // small sources at full resolution (ffxDofSurveyTilesAround), else 0
-    FfxFloat32 smallSourceCut;      // 1 where ffxDofSmallSourceShare leaves small sources out, else 0
+    FfxDofPixelAperture aperture;  // the bokeh shape this texel sees
+    FfxFloat32 ownGatherShare;     // ffxDofOwnGatherShare of the texel's own radius, where the tile draws
+                                   // small sources at full resolution (ffxDofSurveyTilesAround), else 0
+    FfxFloat32 smallSourceCut;     // 1 where ffxDofSmallSourceShare leaves small sources out, else 0
 };
 
 // Which parts of the gather a tile class needs; literals at every call, so what a path leaves out
@@ -523,7 +495,6 @@ struct FfxDofRingWalk
     FfxUInt32 mip;
     FfxFloat32 texelSize;         // half-res px per texel of `mip`
     FfxFloat32 sampleWeight;      // the texel's area (4^mip half-res px^2) x the ring's presence
-    FfxFloat32 levelScale;        // luminance x this = the highlight level's squared radius
     FfxFloat32x2 centerToCorner;  // the kernel centre less half a texel, in texels of `mip`
     FfxFloat32x2 lastTexel;       // the last texel of `mip`
     FfxBoolean trackSpread;       // literal at every call: record the radius spread
@@ -597,12 +568,9 @@ FFX_DOF_INLINE void ffxDofWalkSamples(FFX_DOF_INOUT(FfxDofGather) gather, FFX_DO
         FfxFloat32 distance = gauge * ring.texelSize;
         // Near and far samples weigh alike (reach times inverse area).
         FfxFloat32 absCoc = abs(coc);
-        FfxFloat32 levelRadiusSquared = ffxDofLuminance32(color) * ring.levelScale;
-        FfxFloat32 spreadRadius =
-            nearSample ? absCoc : ffxDofHighlightSpreadRadius(absCoc, levelRadiusSquared, kernel.highlightRampScale);
-        FfxFloat32 areaWeight = parts.shaped ? ffxDofApertureAreaWeight(kernel.aperture, spreadRadius)
-                                             : ffxDofRoundAreaWeight(spreadRadius);
-        FfxFloat32 reach = ffxDofReach(spreadRadius, distance);
+        FfxFloat32 areaWeight =
+            parts.shaped ? ffxDofApertureAreaWeight(kernel.aperture, absCoc) : ffxDofRoundAreaWeight(absCoc);
+        FfxFloat32 reach = ffxDofReach(absCoc, distance);
         reach *= valid;
         FfxFloat32 weight = reach * areaWeight * ring.sampleWeight;
         FfxFloat32 farShare = nearSample ? 0.0f : valid;
@@ -666,10 +634,6 @@ FFX_DOF_INLINE FfxDofRingWalk ffxDofMakeRingWalk(FfxDofKernel kernel, FfxUInt32 
     ring.texelSize = FfxFloat32(1u << mip);
     ring.sampleWeight = ring.texelSize * ring.texelSize * presence;
     ring.trackSpread = trackSpread;
-    // A sample's luminance x this = the squared radius over which its light would be at the highlight
-    // level (ffxDofHighlightSpreadRadius): texel area x area scale / (pi x level), in input units.
-    ring.levelScale = ring.texelSize * ring.texelSize * kernel.aperture.areaScale * kernel.inverseColorScale *
-                      (1.0f / (FFX_DOF_PI * FFX_DOF_HIGHLIGHT_LEVEL));
     FfxFloat32 mipScale = 1.0f / ring.texelSize;
     // In units of MIP texels: the kernel centre less half a texel, so that (texel - centre) is the
     // offset of the texel's centre.
@@ -1082,8 +1046,6 @@ FFX_DOF_INLINE FfxDofBlurResult ffxDofBlurTexel(FfxUInt32x2 texel, FfxFloat32x4 
     kernel.behindRadius = kernel.centerCoc <= -FFX_DOF_IN_FOCUS_RADIUS && farReach > kernelRadius ? farReach : 0.0f;
     kernel.aperture = ffxDofRoundAperture();
     kernel.origin = kernel.center + ffxDofKernelJitter(texel, constants.frameIndex);
-    kernel.inverseColorScale = 1.0f / ffxDofLoadColorScale();
-    kernel.highlightRampScale = ffxDofRoundAreaWeight(kernelRadius);
     // Near texels have no layer in front of their own surface to leave small sources out of.
     FfxBoolean drawsSmallSources = !kernel.centerIsNear && around.drawsSmallSources;
     kernel.ownGatherShare = drawsSmallSources ? ffxDofOwnGatherShare(kernel.centerCoc) : 0.0f;

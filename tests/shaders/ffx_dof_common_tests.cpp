@@ -862,37 +862,6 @@ TEST_CASE("Far layers: a texel's own surface and nearer samples in front, farthe
     CHECK(ffxDofFarFrontShare(30.0f, 10.0f) == 0.0f);
 }
 
-TEST_CASE("Highlights spread over a disc up to FFX_DOF_HIGHLIGHT_INSET smaller, from the level to twice it",
-          "[gather]") {
-    // levelRadiusSquared: the squared radius over which the light would be at FFX_DOF_HIGHLIGHT_LEVEL;
-    // a disc of radius r is at (levelRadiusSquared / r^2) times the level.
-    const auto spread = [](float radius, float timesTheLevel) {
-        return ffxDofHighlightSpreadRadius(radius, timesTheLevel * radius * radius, ffxDofRoundAreaWeight(radius));
-    };
-    // At or below the level: the sample's own radius, whatever it is.
-    for (const float radius : {0.2f, 0.5f, 1.0f, 6.0f, 40.0f}) {
-        CHECK(spread(radius, 0.0f) == radius);
-        CHECK(spread(radius, 1.0f) == radius);
-    }
-    // The inset grows linearly up to twice the level and stops there.
-    CHECK(spread(6.0f, 1.5f) == Approx(6.0f - 0.5f * FFX_DOF_HIGHLIGHT_INSET));
-    CHECK(spread(6.0f, 2.0f) == Approx(6.0f - FFX_DOF_HIGHLIGHT_INSET));
-    CHECK(spread(6.0f, 1e20f) == Approx(6.0f - FFX_DOF_HIGHLIGHT_INSET));
-    // Never below half a pixel (a disc keeps the texel it starts from), never above the radius.
-    CHECK(spread(0.6f, 1e6f) == Approx(std::max(0.6f - FFX_DOF_HIGHLIGHT_INSET, 0.5f)));
-    CHECK(spread(0.3f, 1e6f) == Approx(0.3f));
-    // Monotonic in the level.
-    float previous = 10.0f;
-    for (float level = 0.0f; level < 3.0f; level += 0.05f) {
-        CHECK(spread(10.0f, level) <= previous);
-        previous = spread(10.0f, level);
-    }
-    // The ramp's scale is the kernel's: a sample of another radius starts its inset at the same
-    // threshold (its own disc at the level), only its ramp is steeper or gentler.
-    CHECK(ffxDofHighlightSpreadRadius(4.0f, 16.0f, ffxDofRoundAreaWeight(8.0f)) == 4.0f);
-    CHECK(ffxDofHighlightSpreadRadius(4.0f, 16.5f, ffxDofRoundAreaWeight(8.0f)) < 4.0f);
-}
-
 TEST_CASE("Far layers compose front to back by the front layer's coverage", "[gather]") {
     const float pi = 3.14159265f;
     FfxFloat32x3 color;

@@ -443,7 +443,7 @@ TEST_CASE("HDR: colour far above the half range stays finite, is blurred and kee
         INFO(c.name);
         Scene scene = makeScene(192, 160, glm::vec4(0, 0, 0, 1), -6.0f);
         // The same scene at an intensity the effect handles without scaling, and as far above white as
-        // the HDR one (highlights spread over a smaller disc: ffxDofHighlightSpreadRadius).
+        // the HDR one, so that both take the same highlight paths and differ only by the colour scale.
         Scene reference = scene;
         const float low = 1000.0f;
         for (int y = c.rect.y0; y < c.rect.y1; ++y)
