@@ -858,7 +858,7 @@ FFX_DOF_INLINE FfxDofBlurResult ffxDofFinishGather(FfxDofGather gather, FfxDofKe
     {
         // LAYER_ALPHA keeps whole steps of the opacity (ffxDofStoredNearOpacity). The near colour makes up the
         // difference: over a background like this texel's far layer, the composite's blend with the stored opacity
-        // gives what the gathered opacity would (at most the stored step's 1/127 of the far layer's difference
+        // gives what the gathered opacity would (at most the stored step's 2/127 of the far layer's difference
         // from what the pixel shows behind). Scaled alone, the near colour kept the near layer's light, but every
         // opacity rounded up to one step hid 1/127 of what lay behind: in-focus pixels at the rim of near discs
         // darkened (the floor scene's in-focus PSNR 0.26 dB lower).

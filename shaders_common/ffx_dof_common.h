@@ -322,7 +322,8 @@ FFX_DOF_INLINE FfxFloat32 ffxDofCoarseNearCoverage(FfxFloat32 coc)
 // ---- Layer alpha -------------------------------------------------------------------------------------
 //
 // LAYER_ALPHA holds, per half-res texel, the near-field opacity and whether the far layer holds gathered
-// colour (a yes or no) in one 8-bit unorm: the validity in the top bit, the opacity in 127ths below it. Two
+// colour (a yes or no) in one 8-bit unorm: the validity in the top bit, the opacity's square root in 127ths below
+// it (see below). Two
 // 8-bit channels (R8G8) cost 0.52 MB more at 1080p; the composite averages the opacity over 3 x 3 texels
 // and interpolates it: every gate of docs/quality.md holds, no scene moved by more than 0.01 dB, and a thin
 // near bar's summed veil moved by up to 4% of its width, its worst case within the gate's 10% as before
@@ -335,23 +336,34 @@ FFX_DOF_INLINE FfxFloat32 ffxDofCoarseNearCoverage(FfxFloat32 coc)
 // its energy. So an opacity from FFX_DOF_NEAR_OPACITY_KEPT up keeps at least one step, and the blur makes up the
 // difference between the stored and the gathered opacity in the near colour it stores (ffxDofFinishGather): the
 // composite's blend with the stored step then gives what the gathered opacity would over the texel's far layer.
+//
+// The steps are of the opacity's square root, so that the opacities near zero, where a small near disc's rim
+// lies, come in fine steps (the smallest 1/16129, then 4/16129, ...) and the largest in steps of at most 2/127.
+// With steps of the opacity itself (1/127), a rim texel of a near speck gathered an opacity of a few ten-thousandths
+// and stored one step with a colour made up almost entirely of its far layer; the composite's post-filter, which
+// averages the opacity over 3 x 3 texels and keeps each texel's colour, then gave that colour the disc's opacity:
+// a speck at 2.25 half-res px kept 0.81 of its light, 1.06 now (docs/technique.md, "Near opacity in whole steps").
 #define FFX_DOF_NEAR_OPACITY_STEPS 127.0f
 #define FFX_DOF_NEAR_OPACITY_KEPT 1e-4f
 FFX_DOF_INLINE FfxFloat32 ffxDofStoredNearOpacity(FfxFloat32 opacity)
 {
-    FfxFloat32 steps = floor(ffxDofSaturate(opacity) * FFX_DOF_NEAR_OPACITY_STEPS + 0.5f);
-    return (opacity >= FFX_DOF_NEAR_OPACITY_KEPT ? max(steps, 1.0f) : steps) * (1.0f / FFX_DOF_NEAR_OPACITY_STEPS);
+    FfxFloat32 steps = floor(sqrt(ffxDofSaturate(opacity)) * FFX_DOF_NEAR_OPACITY_STEPS + 0.5f);
+    FfxFloat32 root =
+        (opacity >= FFX_DOF_NEAR_OPACITY_KEPT ? max(steps, 1.0f) : steps) * (1.0f / FFX_DOF_NEAR_OPACITY_STEPS);
+    return root * root;
 }
 FFX_DOF_INLINE FfxFloat32 ffxDofPackLayerAlpha(FfxFloat32x2 nearOpacityFarValidity)
 {
-    FfxFloat32 opacitySteps = floor(ffxDofStoredNearOpacity(nearOpacityFarValidity.x) * 127.0f + 0.5f);
+    FfxFloat32 opacitySteps =
+        floor(sqrt(ffxDofStoredNearOpacity(nearOpacityFarValidity.x)) * FFX_DOF_NEAR_OPACITY_STEPS + 0.5f);
     return (opacitySteps + (nearOpacityFarValidity.y > 0.0f ? 128.0f : 0.0f) + 0.25f) * (1.0f / 255.0f);
 }
 FFX_DOF_INLINE FfxFloat32x2 ffxDofUnpackLayerAlpha(FfxFloat32 packed)
 {
     FfxFloat32 value = floor(packed * 255.0f + 0.5f);
     FfxFloat32 validity = value >= 128.0f ? 1.0f : 0.0f;
-    return FfxFloat32x2((value - 128.0f * validity) * (1.0f / 127.0f), validity);
+    FfxFloat32 root = (value - 128.0f * validity) * (1.0f / FFX_DOF_NEAR_OPACITY_STEPS);
+    return FfxFloat32x2(root * root, validity);
 }
 
 // ---- HDR range ---------------------------------------------------------------------------------

@@ -26,7 +26,7 @@
 //   NEAR_COLOR     half, B10G11R11 float     near-field color
 //   FAR_COLOR      half, B10G11R11 float     far-field color
 //   LAYER_ALPHA    half, R8 unorm            near-field opacity (coverage of the pixel by near-field
-//                                            blur, 0..1, in 127ths) and far-field validity (top bit; 1:
+//                                            blur, 0..1, its square root in 127ths) and far-field validity (top bit; 1:
 //                                            FAR_COLOR holds gathered far-field color, 0: nothing was
 //                                            gathered), packed by ffxDofPackLayerAlpha
 //   GLOBALS        16-byte storage buffer    four uint words, all zero before the first dispatch:

@@ -407,7 +407,7 @@ void writeNearLights(std::ostream& md, vkrun::Device& device) {
        << " cases within 5% (`quality: small near lights`, a gate on every case). Until 2026-11-30 (these cases run at "
           "2581273's shaders) a 1 px light at radius 16 px or more, a 2 px "
           "light from 24 px and a 3 px light at 40 px vanished, and "
-          "lights a little larger drew up to 1.48 times their energy: LAYER_ALPHA keeps the near opacity in 127ths, "
+          "lights a little larger drew up to 1.48 times their energy: LAYER_ALPHA kept the near opacity in 127ths, "
           "and their discs' opacities rounded to none or to one step. Now an opacity from 1e-4 keeps at least one "
           "step, and the blur makes up the difference in the near colour, between the gathered colour and the "
           "texel's far layer, so that the composite's blend gives what the gathered opacity would over that "

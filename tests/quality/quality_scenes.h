@@ -196,7 +196,7 @@ std::vector<SmallLightCase> runSmallLightCases(vkrun::Device& device, const std:
                                                const std::vector<int>& sizes,
                                                const std::vector<std::array<int, 2>>& offsets, bool near = false);
 // The same lights in the near field, in front of the background in focus: a near light's disc is its share of
-// the disc's opacity, which LAYER_ALPHA keeps in 127ths (ffxDofStoredNearOpacity). Until 2026-11-30 a 1 px light
+// the disc's opacity, which LAYER_ALPHA keeps in steps (ffxDofStoredNearOpacity). Until 2026-11-30 a 1 px light
 // at radius 16 px or more vanished and lights of a few px drew up to 1.48 times their energy.
 constexpr double kNearLightRadii[] = {8.0, 16.0, 24.0, 40.0};  // full-res px, near field
 constexpr int kNearLightSizes[] = {1, 2, 3, 5, 9};

@@ -1344,13 +1344,18 @@ TEST_CASE("Near opacity and far validity share one 8-bit texel of LAYER_ALPHA", 
             REQUIRE(std::floor(steps) <= 255.0f);
             const FfxFloat32x2 back = ffxDofUnpackLayerAlpha(std::floor(steps) / 255.0f);
             CHECK(back.y == float(valid));
-            // Within half a step, but an opacity from FFX_DOF_NEAR_OPACITY_KEPT keeps at least one step (the blur
-            // scales the near colour to make up the difference: below).
+            // The square root within half a step of 1/127, but an opacity from FFX_DOF_NEAR_OPACITY_KEPT keeps at
+            // least one step (the blur makes up the difference in the near colour: below). So the opacity itself
+            // comes back in fine steps near 0 and within 1/127 (half of a step of 2/127) near 1.
+            const float smallest = 1.0f / (127.0f * 127.0f);
             if (opacity >= FFX_DOF_NEAR_OPACITY_KEPT)
-                CHECK(back.x >= 1.0f / 127.0f);
+                CHECK(back.x >= smallest);
             else
                 CHECK(back.x == 0.0f);
-            CHECK(std::fabs(back.x - opacity) <= std::max(0.5f / 127.0f + 1e-6f, 1.0f / 127.0f - opacity + 1e-6f));
+            CHECK(std::fabs(std::sqrt(back.x) - std::sqrt(opacity)) <=
+                  std::max(0.5f / 127.0f + 1e-6f, 1.0f / 127.0f - std::sqrt(opacity) + 1e-6f));
+            CHECK(std::fabs(back.x - opacity) <= std::max(1.0f / 127.0f, smallest - opacity) + 1e-6f);
+            if (opacity > 0.0f && opacity <= 0.01f) CHECK(std::fabs(back.x - opacity) <= 0.002f);
             // Monotonic in the opacity within each validity; every valid value above every invalid one.
             if (valid == int(previousValid)) CHECK(packed >= previousPacked);
             if (valid == 1 && i == 0) CHECK(packed > previousPacked);

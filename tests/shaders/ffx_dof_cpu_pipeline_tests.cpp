@@ -167,9 +167,10 @@ TEST_CASE("An isolated near pixel over an in-focus wall keeps its light at every
     // quad's corner and inside one. Until 2026-11-30 the colour downsample's bilateral reduction dropped a near
     // pixel 1.25 half-res px or more from its quad's reference radius unless the pixel's radius was at least 2
     // (FFX_DOF_NEAR_COVERAGE_MIN_RADIUS), and no layer held it: from radius 1.25 to 1.75 it kept 0.026 to 0.051 of
-    // its light. Each radius's figure is printed. Known, left: 1.25 adds 1.11 and 2.25 adds 0.81: the blur's near
-    // area weight (1 / r^2) misjudges discs of a few texels and the composite upsamples the near colour and opacity
-    // apart, two errors that partly cancel (docs/quality.md, near point discs).
+    // its light. Each radius's figure is printed. Known, left: 1.25 adds 1.09 and 2.25 adds 1.06 (0.81 until
+    // LAYER_ALPHA kept the opacity's square root): the blur's near area weight (1 / r^2) misjudges discs of a few
+    // texels, and the composite averages the opacity over 3 x 3 texels but keeps each texel's colour
+    // (docs/technique.md, "Near opacity in whole steps").
     const uint32_t w = 64, h = 64;
     const Scene wall = makeScene(w, h, glm::vec4(0.0f, 0.0f, 0.0f, 1.0f), 0.0f);
     Settings settings;
@@ -185,8 +186,8 @@ TEST_CASE("An isolated near pixel over an in-focus wall keeps its light at every
                         at.x, at.y, energy);
             INFO("near radius " << coc << " half-res px at (" << at.x << ", " << at.y << "): adds " << energy);
             const bool knownGap = coc == 1.25f || coc == 2.25f;
-            CHECK(energy >= (knownGap ? 0.78 : 0.95));
-            CHECK(energy <= (knownGap ? 1.15 : 1.05));
+            CHECK(energy >= 0.95);
+            CHECK(energy <= (knownGap ? 1.10 : 1.05));
         }
     }
 }
@@ -673,20 +674,26 @@ TEST_CASE("Past the image border, a near object goes on as its edge, no more opa
     Layers layers;
     ffxdoftest::runPipeline(scene, Settings{}, &layers);
     const uint32_t borderColumn = 0, insideColumn = 12;
-    // The gathered opacity: LAYER_ALPHA keeps whole 127ths (ffxDofStoredNearOpacity) and the near colour makes up
+    // The gathered opacity: LAYER_ALPHA keeps whole steps (ffxDofStoredNearOpacity) and the near colour makes up
     // the rest, between the object's colour and the far layer's: stored colour x stored opacity = object x gathered
-    // opacity + far x (stored - gathered opacity).
+    // opacity + far x (stored - gathered opacity). The stored colour's 6-bit mantissa makes each row's figure
+    // noisy by a few thousandths; the defect this guards against was systematic (every row 0.008 to 0.04 more
+    // opaque at the border), so each row is held to 0.01 and their mean to 0.004.
     const auto gatheredOpacity = [&](uint32_t row, uint32_t column) {
         const size_t i = size_t(row) * layers.halfWidth + column;
         const float stored = layers.layerAlpha[i].x, far = layers.farColor[i].x;
         return (layers.nearColor[i].x - far) * stored / (kObject.x - far);
     };
+    double meanDifference = 0.0;
     for (uint32_t row = 20; row < 28; ++row) {
         const float border = gatheredOpacity(row, borderColumn);
         const float inside = gatheredOpacity(row, insideColumn);
         INFO("texel row " << row << ": near opacity at the border " << border << ", inside " << inside);
-        CHECK(std::abs(border - inside) < 0.005f);  // 0.008 to 0.04 more at the border before
+        CHECK(std::abs(border - inside) < 0.01f);
+        meanDifference += (border - inside) / 8.0;
     }
+    INFO("mean of border - inside over the rows: " << meanDifference);
+    CHECK(std::abs(meanDifference) < 0.004);  // 0.008 to 0.04 more at the border before
 }
 
 TEST_CASE("A slightly blurred near object shows the background within its radius of its silhouette", "[pipeline]") {
