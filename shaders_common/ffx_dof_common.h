@@ -322,11 +322,10 @@ FFX_DOF_INLINE FfxFloat32 ffxDofCoarseNearCoverage(FfxFloat32 coc)
 // ---- Layer alpha -------------------------------------------------------------------------------------
 //
 // LAYER_ALPHA holds, per half-res texel, the near-field opacity and whether the far layer holds gathered
-// colour (a yes or no) in one 8-bit unorm: the validity in the top bit, the opacity's square root in 127ths below
-// it (see below). Two
-// 8-bit channels (R8G8) cost 0.52 MB more at 1080p; the composite averages the opacity over 3 x 3 texels
-// and interpolates it: every gate of docs/quality.md holds, no scene moved by more than 0.01 dB, and a thin
-// near bar's summed veil moved by up to 4% of its width, its worst case within the gate's 10% as before
+// colour (a yes or no) in one 8-bit unorm: the validity in the top bit, the opacity's square root in 127ths
+// below it (see below). Two 8-bit channels (R8G8) cost 0.52 MB more at 1080p; the composite averages the
+// opacity over 3 x 3 texels and interpolates it: every gate of docs/quality.md holds, no scene moved by more than 0.01
+// dB, and a thin near bar's summed veil moved by up to 4% of its width, its worst case within the gate's 10% as before
 // (0.971 of the width against 0.967; docs/performance.md, "LAYER_ALPHA in one byte").
 // The value stored lies a quarter of a step above its byte's multiple of 1/255, so that a conversion that
 // rounds to nearest and one that truncates (as lavapipe does its R16 float stores) store the same byte.
