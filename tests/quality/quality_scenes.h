@@ -105,10 +105,10 @@ struct PointBokeh {
 PointBokeh measurePointBokeh(vkrun::Device& device);
 
 // Issue 17's point discs: a single far point of light (disc level 0.25) on black, 160 x 160 px, at one
-// radius everywhere, through the effect. Radii from 2 full-res px to 1080p's default CoC limit (0.05 of the height: 54
-// px); positions at each corner of a half-res quad (offsets (0, 0) to (1, 1) from the tile corner (80, 80)) and inside
-// a tile (7, 5); ring merging on and off. The truth of a one-pixel point is a flat disc of the thin-lens radius holding
-// the point's energy.
+// radius everywhere, through the effect. Radii from 2 full-res px to 1080p's default CoC limit (0.05 of
+// the height: 54 px); positions at each corner of a half-res quad (offsets (0, 0) to (1, 1) from the tile
+// corner (80, 80)) and inside a tile (7, 5); ring merging on and off. The truth of a one-pixel point is a
+// flat disc of the thin-lens radius holding the point's energy.
 constexpr double kPointDiscRadii[] = {2.0, 3.0, 4.5, 6.0, 8.0, 12.0, 19.2, 27.0, 40.0, 54.0};
 constexpr int kPointDiscOffsets[][2] = {{0, 0}, {1, 0}, {0, 1}, {1, 1}, {7, 5}};
 // The near field's point discs: the same point in front of an in-focus black wall (the near field
