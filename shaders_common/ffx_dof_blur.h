@@ -432,6 +432,21 @@ FFX_DOF_INLINE FfxFloat32 ffxDofNearOpacity(FfxFloat32 nearWeight)
     return ffxDofSaturate(nearWeight * (1.0f / FFX_DOF_PI));
 }
 
+// Below this |radius| (half-res px) a near disc's area on the texel grid is not pi radius^2
+// (ffxDofPixelDiscArea): from it, within 1.8%.
+#define FFX_DOF_NEAR_GRID_AREA_RADIUS 3.0f
+// What scales the near weights of a texel whose near samples have the mean |radius| `meanRadius` so that
+// a disc sums to pi over the texel grid, as it does over the plane: a near speck of 1.25 half-res px added
+// 1.13 times its light to the near layer (1.27 at 1), of 2 px 1.04 (tests/shaders, "An isolated near pixel
+// over an in-focus wall"). Taken at the mean radius, as ffxDofFinishSmallSources does: exact for one radius,
+// and where a kernel holds near samples of several, the larger ones weigh least and are the nearest pi r^2.
+FFX_DOF_INLINE FfxFloat32 ffxDofNearGridAreaScale(FfxFloat32 meanRadius)
+{
+    if (meanRadius >= FFX_DOF_NEAR_GRID_AREA_RADIUS)
+        return 1.0f;
+    return FFX_DOF_PI * max(meanRadius * meanRadius, 0.25f) / ffxDofPixelDiscArea(meanRadius);
+}
+
 // Weight of a background sample in the hole fill of a near texel, by its distance (half-res px):
 // the inverse square, so the fill extrapolates the background from just around the near object rather
 // than averaging the whole kernel. Behind a thin near object over a sharp surface the hidden part is
@@ -452,6 +467,7 @@ struct FfxDofGather
 {
     FfxFloat32x3 nearSum;
     FfxFloat32 nearWeight;
+    FfxFloat32 nearRadiusSum;  // |radius| * near weight
     FfxFloat32x3 fillSum;      // hole fill: color * proximity * texel area
     FfxFloat32x2 fillWeights;  // hole fill: x the texel area summed, y proximity * texel area
     FfxDofBucket farNearer;    // far-field samples nearer than the texel's own surface
@@ -590,6 +606,7 @@ FFX_DOF_INLINE void ffxDofWalkSamples(FFX_DOF_INOUT(FfxDofGather) gather, FFX_DO
             FfxFloat32 nearWeight = (weight - farWeight) * coverage;
             gather.nearSum += color * nearWeight;
             gather.nearWeight += nearWeight;
+            gather.nearRadiusSum += absCoc * nearWeight;
         }
         if (parts.farField)
         {
@@ -863,6 +880,7 @@ FFX_DOF_INLINE FfxDofBlurResult ffxDofFinishGather(FfxDofGather gather, FfxDofKe
         // opacity rounded up to one step hid 1/127 of what lay behind: in-focus pixels at the rim of near discs
         // darkened (the floor scene's in-focus PSNR 0.26 dB lower).
         FfxFloat32 opacity = ffxDofNearOpacity(gather.nearWeight);
+        opacity = ffxDofSaturate(opacity * ffxDofNearGridAreaScale(gather.nearRadiusSum / gather.nearWeight));
         result.alpha.x = ffxDofStoredNearOpacity(opacity);
         FfxFloat32x3 nearColor = gather.nearSum / gather.nearWeight;
         if (result.alpha.x > 0.0f)
@@ -1054,6 +1072,7 @@ FFX_DOF_INLINE FfxDofBlurResult ffxDofBlurTexel(FfxUInt32x2 texel, FfxFloat32x4 
     FfxDofGather gather;
     gather.nearSum = FfxFloat32x3(0.0f, 0.0f, 0.0f);
     gather.nearWeight = 0.0f;
+    gather.nearRadiusSum = 0.0f;
     gather.fillSum = FfxFloat32x3(0.0f, 0.0f, 0.0f);
     gather.fillWeights = FfxFloat32x2(0.0f, 0.0f);
     gather.farNearer = ffxDofEmptyBucket();

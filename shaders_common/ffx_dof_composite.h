@@ -283,8 +283,6 @@ FFX_DOF_INLINE void ffxDofPostFilterTexel(FfxUInt32 index)
     FfxFloat32x2 nearRange = FfxFloat32x2(FFX_DOF_FLOAT32_MAX, 0.0f);
     FfxFloat32x2 farRange = FfxFloat32x2(FFX_DOF_FLOAT32_MAX, 0.0f);
     FfxFloat32 opacitySum = 0.0f;
-    FfxFloat32 bestOpacity = 0.0f;
-    FfxUInt32 bestIndex = center;
     FFX_DOF_UNROLL
     for (FfxUInt32 k = 0u; k < 9u; ++k)
     {
@@ -297,15 +295,30 @@ FFX_DOF_INLINE void ffxDofPostFilterTexel(FfxUInt32 index)
         nearRange = FfxFloat32x2(min(nearRange.x, nearLuminance), max(nearRange.y, nearLuminance));
         farRange = FfxFloat32x2(min(farRange.x, farLuminance), max(farRange.y, farLuminance));
         opacitySum += summary.z;
-        if (summary.z > bestOpacity)
-        {
-            bestOpacity = summary.z;
-            bestIndex = raw;
-        }
     }
-    FfxDofFloat3 nearColor = ffxDofUnpackRawColor(ffxDofSharedRawNear[centerAlpha.x > 0.0f ? center : bestIndex]);
+    FfxDofFloat3 nearColor = ffxDofUnpackRawColor(ffxDofSharedRawNear[center]);
     if (centerAlpha.x > 0.0f)
         nearColor = nearColor * FfxDofFloat(ffxDofOutlierGain(nearCenterLuminance, nearRange.x, nearRange.y));
+    // The opacity the 3 x 3 mean adds to a texel is its neighbours': it takes their colour, weighed by their
+    // opacity, for that share. Under the texel's own colour, the rim of a small near disc (a tiny opacity,
+    // whose colour the blur makes up for its whole step of LAYER_ALPHA: ffxDofFinishGather) took the disc's
+    // opacity: a near speck of 2.25 half-res px added 1.08 times what its near layer holds. The share is 0
+    // where the mean does not raise the opacity, so a near object's texture keeps its sharpness; an empty
+    // texel takes its neighbours' colour whole (the most opaque neighbour's until 2026-12-01).
+    FfxFloat32 borrowedShare = opacitySum > 0.0f ? ffxDofSaturate(1.0f - centerAlpha.x * 9.0f / opacitySum) : 0.0f;
+    if (borrowedShare > 0.0f)
+    {
+        FfxFloat32x3 premultiplied = FfxFloat32x3(0.0f, 0.0f, 0.0f);
+        FFX_DOF_UNROLL
+        for (FfxUInt32 k = 0u; k < 9u; ++k)
+        {
+            FfxUInt32 raw = (y + k / 3u) * FfxUInt32(FFX_DOF_RAW_SIDE) + x + k % 3u;
+            premultiplied +=
+                ffxDofToFloat32x3(ffxDofUnpackRawColor(ffxDofSharedRawNear[raw])) * ffxDofSharedRawSummary[raw].z;
+        }
+        nearColor =
+            ffxDofToDofFloat3(ffxDofLerp(ffxDofToFloat32x3(nearColor), premultiplied / opacitySum, borrowedShare));
+    }
     FfxDofFloat3 farColor = ffxDofUnpackRawColor(ffxDofSharedRawFar[center]);
     if (centerAlpha.y > 0.0f)
         farColor = farColor * FfxDofFloat(ffxDofOutlierGain(farCenterLuminance, farRange.x, farRange.y));
@@ -542,26 +555,6 @@ FFX_DOF_INLINE FfxDofQuadGathers ffxDofGatherOwnSurfaceQuad(FfxInt32x2 topLeft, 
     for (FfxUInt32 k = 0u; k < 4u; ++k)
         result.gathered[k] = ffxDofFinishOwnGather(sums[k], max(weightSums[k], 1e-30f));
     return result;
-}
-
-// The area of a disc of `radius` full-res px drawn on the pixel grid by ffxDofReach: the sum of its
-// reach over the pixel centres. pi radius^2 (ffxDofRoundAreaWeight's) misses it by up to 6% below 4 px
-// (2 px: 13.11 against 12.57), so a small light whose disc the composite draws at full resolution
-// added 1.04 times its energy.
-FFX_DOF_INLINE FfxFloat32 ffxDofPixelDiscArea(FfxFloat32 radius)
-{
-    FfxInt32 extent = FfxInt32(ceil(radius + 0.5f));
-    FfxFloat32 area = 0.0f;
-    // One quadrant, the axes counted twice and the others four times.
-    FFX_DOF_LOOP
-    for (FfxInt32 y = 0; y <= extent; ++y)
-    {
-        FFX_DOF_LOOP
-        for (FfxInt32 x = 0; x <= extent; ++x)
-            area +=
-                ffxDofReach(radius, sqrt(FfxFloat32(x * x + y * y))) * (x == 0 ? 1.0f : 2.0f) * (y == 0 ? 1.0f : 2.0f);
-    }
-    return area;
 }
 
 // The far pixels of small radius in front of a far pixel of |radius| `absCoc` (half-res px) that reach
@@ -837,6 +830,8 @@ FFX_DOF_INLINE FfxBoolean ffxDofComposePixel(FfxDofUpsampleTaps taps, FfxFloat32
     FfxFloat32 nearOpacity = 0.0f;
     FfxFloat32x3 nearColor = FfxFloat32x3(0.0f, 0.0f, 0.0f);
     FfxBoolean nearValid = true;
+    FfxFloat32x3 rimColor = FfxFloat32x3(0.0f, 0.0f, 0.0f);
+    FfxFloat32 rimWeight = 0.0f;
     FfxFloat32x3 farSum = FfxFloat32x3(0.0f, 0.0f, 0.0f);
     FfxFloat32 farWeight = 0.0f;
     FfxFloat32 farTotal = 0.0f;
@@ -844,9 +839,12 @@ FFX_DOF_INLINE FfxBoolean ffxDofComposePixel(FfxDofUpsampleTaps taps, FfxFloat32
     for (FfxUInt32 k = 0u; k < 4u; ++k)
     {
         FfxFloat32x2 alpha = taps.alpha[k];
+        FfxFloat32 coveredTap = alpha.x > 0.0f ? bilinear[k] : 0.0f;
         nearValid = nearValid && alpha.x > 0.0f;
         nearOpacity += alpha.x * bilinear[k];
         nearColor += ffxDofToFloat32x3(taps.nearColor[k]) * bilinear[k];
+        rimColor += ffxDofToFloat32x3(taps.nearColor[k]) * coveredTap;
+        rimWeight += coveredTap;
         FfxFloat32 tapWeight = bilinear[k] * ffxDofUpsampleCocWeight(taps.coc[k], coc);
         farSum += ffxDofToFloat32x3(taps.farColor[k]) * (tapWeight * alpha.y);
         farWeight += tapWeight * alpha.y;
@@ -856,10 +854,16 @@ FFX_DOF_INLINE FfxBoolean ffxDofComposePixel(FfxDofUpsampleTaps taps, FfxFloat32
     // only the near layer over what it would show without it. Composed in full there (its own blur and the far
     // layer mixed in by its radius), in-focus pixels around stray near coverage changed by up to 23/255 (the
     // floor scene); left without the near layer, a small near disc lost its rim: a 1 px near light at radius
-    // 8 px kept 0.93 of its energy, 0.97 to 0.99 now (docs/quality.md, near lights).
+    // 8 px kept 0.93 of its energy, 0.97 to 0.99 now (docs/quality.md, near lights). Its colour is that of the
+    // taps the near field covers: the others hold none, and mixed in (until 2026-12-01) they darkened the rim
+    // twice, in colour and in opacity (a near speck of 1 half-res px added 0.80 times what its near layer holds).
     FfxFloat32 rimOpacity = nearValid ? 0.0f : nearOpacity;
     if (!nearValid)
+    {
         nearOpacity = 0.0f;
+        if (rimWeight > 0.0f)
+            nearColor = rimColor / rimWeight;
+    }
     FfxFloat32 absCoc = abs(coc);
     // Near highlights go over everything the pixel shows, its input included.
     FfxBoolean nearLights = nearHighlights.x > 0.0f || nearHighlights.y > 0.0f || nearHighlights.z > 0.0f;

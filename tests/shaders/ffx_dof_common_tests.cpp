@@ -12,6 +12,7 @@
 #include "ffx_dof_composite.h"
 
 #include <algorithm>
+#include <functional>
 #include <cmath>
 #include <limits>
 #include <map>
@@ -1107,22 +1108,19 @@ glm::vec4 composeRimPixel(const FfxDofUpsampleTaps& taps, glm::vec2 fraction, fl
 TEST_CASE("The near layer's rim keeps its light over in-focus pixels, and only the near layer changes them",
           "[composite]") {
     bool composed = false;
-    // Half the footprint covered, at opacity 0.5: a near opacity of 0.25 with the near colour's bilinear mean (5)
-    // over the input, nothing else (no fixed blur, no far layer: the pixel is in focus).
+    // Half the footprint covered, at opacity 0.5: a near opacity of 0.25 with the covered taps' colour (10) over the
+    // input, nothing else (no fixed blur, no far layer: the pixel is in focus). Until 2026-12-01 the colour was the
+    // bilinear mean of all four taps (5), the uncovered ones' included.
     const glm::vec4 rim = composeRimPixel(nearRimTaps(0.5f), glm::vec2(0.5f), 0.0f, &composed);
     CHECK(composed);
-    CHECK(rim.y == Approx(0.3f + 0.25f * (5.0f - 0.3f)));
+    CHECK(rim.y == Approx(0.3f + 0.25f * (10.0f - 0.3f)));
     CHECK(rim.w == 1.0f);
-    // Along a row across the rim, what the near layer adds is its bilinear share of each covered texel:
-    // the same as where no tap is uncovered.
-    double added = 0.0, addedCovered = 0.0;
-    for (float fx : {0.125f, 0.375f, 0.625f, 0.875f}) {
+    // Along a row across the rim, what the near layer adds is its bilinear share of each covered texel's light
+    // (opacity times colour over the input): the left column's, at weights 1 - fx summing to 2.
+    double added = 0.0;
+    for (float fx : {0.125f, 0.375f, 0.625f, 0.875f})
         added += composeRimPixel(nearRimTaps(0.01f), glm::vec2(fx, 0.5f), 0.0f, &composed).y - 0.3;
-        FfxDofUpsampleTaps full = nearRimTaps(0.01f);
-        full.alpha[1].x = full.alpha[3].x = 1e-6f;  // covered, with nothing to add
-        addedCovered += composeRimPixel(full, glm::vec2(fx, 0.5f), 0.0f, &composed).y - 0.3;
-    }
-    CHECK(added == Approx(addedCovered).epsilon(0.02));
+    CHECK(added == Approx(2.0 * 0.01 * (10.0 - 0.3)).epsilon(1e-4));
     CHECK(added > 0.0);
     // No near coverage in the footprint: an in-focus pixel keeps its input.
     const glm::vec4 kept = composeRimPixel(nearRimTaps(0.0f), glm::vec2(0.5f), 0.0f, &composed);
@@ -1738,4 +1736,76 @@ TEST_CASE("The pixel grid's disc area is the reach summed over the pixel centres
     }
     CHECK(ffxDofPixelDiscArea(2.0f) / (3.14159265f * 4.0f) == Approx(1.0434).epsilon(1e-3));
     CHECK(ffxDofPixelDiscArea(1.0f) == Approx(1.0 + 4.0 * 0.5 + 4.0 * std::clamp(1.5 - std::sqrt(2.0), 0.0, 1.0)));
+}
+
+TEST_CASE("A small near disc's weights, scaled by the grid's disc area, sum to pi over the texel grid", "[blur]") {
+    // One near sample of |radius| r reaches the texels around it with reach * 1 / r^2 (ffxDofRoundAreaWeight); the
+    // blur scales a texel's near weights by ffxDofNearGridAreaScale of their mean radius, so that the disc's
+    // weights, summed over the texels it reaches, are pi (opacity 1 for the whole disc), as over the plane.
+    auto gridSum = [](float radius) {
+        double sum = 0.0;
+        for (int y = -8; y <= 8; ++y)
+            for (int x = -8; x <= 8; ++x)
+                sum += ffxDofReach(radius, std::sqrt(float(x * x + y * y))) * ffxDofRoundAreaWeight(radius);
+        return sum;
+    };
+    for (float radius = 0.5f; radius < FFX_DOF_NEAR_GRID_AREA_RADIUS; radius += 0.0625f) {
+        INFO("radius " << radius);
+        CHECK(gridSum(radius) * ffxDofNearGridAreaScale(radius) == Approx(kPi).epsilon(1e-5));
+    }
+    // From FFX_DOF_NEAR_GRID_AREA_RADIUS the grid's disc is within 1.8% of pi r^2, unscaled.
+    for (float radius = FFX_DOF_NEAR_GRID_AREA_RADIUS; radius <= 7.0f; radius += 0.0625f) {
+        INFO("radius " << radius);
+        CHECK(ffxDofNearGridAreaScale(radius) == 1.0f);
+        CHECK(std::abs(gridSum(radius) / kPi - 1.0) < 0.018);
+    }
+    // Half a pixel and below weigh as half a pixel: the disc is the texel itself.
+    CHECK(ffxDofNearGridAreaScale(0.5f) == Approx(kPi / 4.0f));
+}
+
+namespace {
+// Fills the composite's raw near texels (group-shared, FFX_DOF_RAW_SIDE per side) with `opacity` and `color` per
+// texel, no far layer, and post-filters every filtered texel; returns the light of the near layer before and after
+// (opacity times green, summed over the filtered texels, whose 3 x 3 windows hold every raw texel that is not 0).
+void postFilterNearTexels(const std::function<float(int, int)>& opacity, const std::function<float(int, int)>& color,
+                          double* rawLight, double* filteredLight) {
+    *rawLight = *filteredLight = 0.0;
+    for (int y = 0; y < FFX_DOF_RAW_SIDE; ++y)
+        for (int x = 0; x < FFX_DOF_RAW_SIDE; ++x) {
+            const FfxDofFloat3 near(color(x, y));
+            const size_t index = size_t(y) * FFX_DOF_RAW_SIDE + size_t(x);
+            ffxDofSharedRawNear[index] = ffxDofPackRawColor(near);
+            ffxDofSharedRawFar[index] = ffxDofPackRawColor(FfxDofFloat3(0.0f));
+            ffxDofSharedRawSummary[index] = glm::vec4(ffxDofLuminance(near), 0.0f, opacity(x, y), 0.0f);
+            *rawLight += double(opacity(x, y)) * double(ffxDofUnpackRawColor(ffxDofSharedRawNear[index]).y);
+        }
+    for (uint32_t index = 0; index < uint32_t(FFX_DOF_FILTERED_SIDE * FFX_DOF_FILTERED_SIDE); ++index) {
+        ffxDofPostFilterTexel(index);
+        *filteredLight += double(ffxDofSharedAlpha[index].x) * double(ffxDofSharedNear[index].y);
+    }
+}
+}  // namespace
+
+TEST_CASE("The near post-filter keeps a small disc's light and a near surface's own colours", "[composite]") {
+    // A small near disc as the blur stores it: a core, and a rim of tiny opacities whose colour the blur made up for
+    // their whole LAYER_ALPHA step (1.45 times the core's). The 3 x 3 mean opacity under each texel's own colour drew
+    // the rim's made-up colour at the disc's opacity (1.08 times the light); what the mean adds comes from the
+    // neighbours, with their colour.
+    auto discOpacity = [](int x, int y) {
+        const int d = std::abs(x - 6) + std::abs(y - 6);
+        return d == 0 ? 0.025f : d == 1 ? 0.022f : d == 2 ? 0.006f : d == 3 ? 0.00006f : 0.0f;
+    };
+    auto discColor = [&](int x, int y) { return discOpacity(x, y) == 0.00006f ? 1.45f : 1.0f; };
+    double raw = 0.0, filtered = 0.0;
+    postFilterNearTexels(discOpacity, discColor, &raw, &filtered);
+    CHECK(filtered == Approx(raw).epsilon(0.01));
+    // A near surface of one opacity keeps each texel's own colour (its texture), untouched by the mean.
+    auto textured = [](int x, int y) { return 0.25f + 0.5f * float((x * 7 + y * 3) % 5) / 4.0f; };
+    postFilterNearTexels([](int, int) { return 0.75f; }, textured, &raw, &filtered);
+    for (int y = 0; y < FFX_DOF_FILTERED_SIDE; ++y)
+        for (int x = 0; x < FFX_DOF_FILTERED_SIDE; ++x) {
+            INFO("filtered texel (" << x << ", " << y << ")");
+            const glm::vec3 kept = glm::vec3(ffxDofSharedNear[size_t(y) * FFX_DOF_FILTERED_SIDE + size_t(x)]);
+            CHECK(kept.y == Approx(ffxDofUnpackRawColor(ffxDofPackRawColor(FfxDofFloat3(textured(x + 1, y + 1)))).y));
+        }
 }
