@@ -828,10 +828,10 @@ FFX_DOF_INLINE FfxBoolean ffxDofComposePixel(FfxDofUpsampleTaps taps, FfxFloat32
     bilinear[3] = fraction.x * fraction.y;
 
     FfxFloat32 nearOpacity = 0.0f;
+    // The near colour of the taps the near field covers, and their bilinear weight (1 where it covers all four).
     FfxFloat32x3 nearColor = FfxFloat32x3(0.0f, 0.0f, 0.0f);
+    FfxFloat32 coveredWeight = 0.0f;
     FfxBoolean nearValid = true;
-    FfxFloat32x3 rimColor = FfxFloat32x3(0.0f, 0.0f, 0.0f);
-    FfxFloat32 rimWeight = 0.0f;
     FfxFloat32x3 farSum = FfxFloat32x3(0.0f, 0.0f, 0.0f);
     FfxFloat32 farWeight = 0.0f;
     FfxFloat32 farTotal = 0.0f;
@@ -842,9 +842,8 @@ FFX_DOF_INLINE FfxBoolean ffxDofComposePixel(FfxDofUpsampleTaps taps, FfxFloat32
         FfxFloat32 coveredTap = alpha.x > 0.0f ? bilinear[k] : 0.0f;
         nearValid = nearValid && alpha.x > 0.0f;
         nearOpacity += alpha.x * bilinear[k];
-        nearColor += ffxDofToFloat32x3(taps.nearColor[k]) * bilinear[k];
-        rimColor += ffxDofToFloat32x3(taps.nearColor[k]) * coveredTap;
-        rimWeight += coveredTap;
+        nearColor += ffxDofToFloat32x3(taps.nearColor[k]) * coveredTap;
+        coveredWeight += coveredTap;
         FfxFloat32 tapWeight = bilinear[k] * ffxDofUpsampleCocWeight(taps.coc[k], coc);
         farSum += ffxDofToFloat32x3(taps.farColor[k]) * (tapWeight * alpha.y);
         farWeight += tapWeight * alpha.y;
@@ -861,8 +860,8 @@ FFX_DOF_INLINE FfxBoolean ffxDofComposePixel(FfxDofUpsampleTaps taps, FfxFloat32
     if (!nearValid)
     {
         nearOpacity = 0.0f;
-        if (rimWeight > 0.0f)
-            nearColor = rimColor / rimWeight;
+        if (coveredWeight > 0.0f)
+            nearColor /= coveredWeight;
     }
     FfxFloat32 absCoc = abs(coc);
     // Near highlights go over everything the pixel shows, its input included.
