@@ -9,7 +9,7 @@
 //      post-filter reads of each neighbour in one read) and post-filters the 10 x 10 that bilinear
 //      upsampling touches, once per texel: luminance of near and far color clamped to the
 //      range of the 8 neighbours (an outlier filter that keeps edges and energy),
-//      3x3 average of near opacity, invalid near texels filled from the most opaque neighbour.
+//      3x3 average of near opacity, the opacity it adds in its neighbours' colour (ffxDofPostFilterTexel).
 //   3. Per pixel: CoC from depth (32-bit); in focus and not covered by the near field -> the input,
 //      bit for bit. Otherwise: near layer upsampled bilinearly (where a corner has zero opacity, the
 //      pixel takes the near layer alone over what it shows without it: the rim of a near disc); far
