@@ -304,7 +304,7 @@ FFX_DOF_INLINE void ffxDofPostFilterTexel(FfxUInt32 index)
     // whose colour the blur makes up for its whole step of LAYER_ALPHA: ffxDofFinishGather) took the disc's
     // opacity: a near speck of 2.25 half-res px added 1.08 times what its near layer holds. The share is 0
     // where the mean does not raise the opacity, so a near object's texture keeps its sharpness; an empty
-    // texel takes its neighbours' colour whole (the most opaque neighbour's until 2026-12-01).
+    // texel takes its neighbours' colour whole (the most opaque neighbour's before 7aea5e0).
     FfxFloat32 borrowedShare = opacitySum > 0.0f ? ffxDofSaturate(1.0f - centerAlpha.x * 9.0f / opacitySum) : 0.0f;
     if (borrowedShare > 0.0f)
     {
@@ -854,7 +854,7 @@ FFX_DOF_INLINE FfxBoolean ffxDofComposePixel(FfxDofUpsampleTaps taps, FfxFloat32
     // layer mixed in by its radius), in-focus pixels around stray near coverage changed by up to 23/255 (the
     // floor scene); left without the near layer, a small near disc lost its rim: a 1 px near light at radius
     // 8 px kept 0.93 of its energy, 0.97 to 0.99 now (docs/quality.md, near lights). Its colour is that of the
-    // taps the near field covers: the others hold none, and mixed in (until 2026-12-01) they darkened the rim
+    // taps the near field covers: the others hold none, and mixed in (before 7aea5e0) they darkened the rim
     // twice, in colour and in opacity (a near speck of 1 half-res px added 0.80 times what its near layer holds).
     FfxFloat32 rimOpacity = nearValid ? 0.0f : nearOpacity;
     if (!nearValid)

@@ -1109,7 +1109,7 @@ TEST_CASE("The near layer's rim keeps its light over in-focus pixels, and only t
           "[composite]") {
     bool composed = false;
     // Half the footprint covered, at opacity 0.5: a near opacity of 0.25 with the covered taps' colour (10) over the
-    // input, nothing else (no fixed blur, no far layer: the pixel is in focus). Until 2026-12-01 the colour was the
+    // input, nothing else (no fixed blur, no far layer: the pixel is in focus). Before 7aea5e0 the colour was the
     // bilinear mean of all four taps (5), the uncovered ones' included.
     const glm::vec4 rim = composeRimPixel(nearRimTaps(0.5f), glm::vec2(0.5f), 0.0f, &composed);
     CHECK(composed);

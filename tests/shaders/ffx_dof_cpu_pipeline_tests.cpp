@@ -167,7 +167,7 @@ TEST_CASE("An isolated near pixel over an in-focus wall keeps its light at every
     // quad's corner and inside one. Until 2026-11-30 the colour downsample's bilateral reduction dropped a near
     // pixel 1.25 half-res px or more from its quad's reference radius unless the pixel's radius was at least 2
     // (FFX_DOF_NEAR_COVERAGE_MIN_RADIUS), and no layer held it: from radius 1.25 to 1.75 it kept 0.026 to 0.051 of
-    // its light. Each radius's figure is printed. Until 2026-12-01 the radii 1.25 and 2.25 added 1.09 and 1.06:
+    // its light. Each radius's figure is printed. Before 7aea5e0 the radii 1.25 and 2.25 added 1.09 and 1.06:
     // the blur weighed near samples by 1 / r^2 where the texel grid's disc is not pi r^2 (ffxDofNearGridAreaScale),
     // the composite's 3 x 3 opacity mean kept each texel's own colour (ffxDofPostFilterTexel) and the near layer's
     // rim mixed in the colour of texels it does not cover (ffxDofComposePixel). Known, left: radius 1 adds 1.052.
