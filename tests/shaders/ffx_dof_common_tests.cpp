@@ -1128,6 +1128,34 @@ TEST_CASE("The near layer's rim keeps its light over in-focus pixels, and only t
     CHECK(kept.y == 0.3f);
 }
 
+TEST_CASE("A near pixel whose own surface covers little of its disc shows mostly the layers", "[composite]") {
+    // A near pixel of radius 1 half-res px that gathers its own surface at full resolution: the layers hold a near
+    // opacity of 0.028 of colour 1 over a far layer of 0, its own gather a colour of 1 covering `coverage` of its disc.
+    FfxDofUpsampleTaps taps{};
+    for (int k = 0; k < 4; ++k) {
+        taps.alpha[k] = glm::vec2(0.028f, 1.0f);
+        taps.nearColor[k] = FfxDofFloat3(1.0f);
+        taps.farColor[k] = FfxDofFloat3(0.0f);
+        taps.coc[k] = 1.0f;
+    }
+    auto compose = [&](float coverage) {
+        glm::vec4 color(1.0f, 1.0f, 1.0f, 1.0f);
+        REQUIRE(ffxDofComposePixel(taps, glm::vec2(0.5f), 1.0f, glm::vec3(1.0f), true,
+                                   glm::vec4(1.0f, 1.0f, 1.0f, coverage), false, glm::vec4(0.0f), glm::vec3(0.0f),
+                                   glm::vec3(0.0f), color));
+        return color.y;
+    };
+    // An isolated speck (its own pixel covers 0.08 of its disc): the own gather over the far layer (0.08) mixed
+    // with the layers (0.028) by the square of what it leaves uncovered, 0.92^2.
+    const float uncovered = 0.92f * 0.92f;
+    CHECK(compose(0.08f) == Approx(0.08f * (1.0f - uncovered) + 0.028f * uncovered));
+    // A surface that covers its whole disc is its own gather alone (the share below FFX_DOF_FAR_LAYER_ONLY_RADIUS
+    // minus the fade is 0).
+    CHECK(compose(1.0f) == Approx(1.0f));
+    // Half covered (a surface's rim): a quarter of the layers, where the pixel's own blur shows its far layer too.
+    CHECK(compose(0.5f) == Approx(0.5f * 0.75f + 0.028f * 0.25f));
+}
+
 namespace {
 
 // Fills the composite's own-surface arrays (full-res |radius| and color per pixel of the 30 x 30
