@@ -24,7 +24,8 @@
 //      pixel's own surface is instead gathered at full resolution from a 30 x 30 neighbourhood the
 //      group loads once (a quad at a time: ffxDofGatherOwnSurfaceQuad), the far layer showing where it does not
 //      cover the disc (near pixels too: their far layer is the background the blur extrapolates
-//      behind them), and handing over to the layers over the last half-res px. Only the FULL_RES class
+//      behind them; a near pixel takes the layers by the square of what it leaves uncovered), and
+//      handing over to the layers over the last half-res px. Only the FULL_RES class
 //      gathers at full resolution (own surface and small sources) and draws the far highlights pass 2 took
 //      out of the layers (ffxDofHighlightsAtQuad, ffx_dof_highlights.h), on the far layer; the LAYERS class's
 //      pipeline has none of these.

@@ -212,7 +212,7 @@ void writeNearPointDiscs(std::ostream& md, vkrun::Device& device, const std::fil
           "0.035 of its light until earlier the same day (the colour downsample dropped near pixels of 1.25 to 2 "
           "half-res px among in-focus ones, FFX_DOF_NEAR_COVERAGE_MIN_RADIUS). Near specks at or below white stay in "
           "the near layer: tests/shaders \"An isolated near pixel over an in-focus wall keeps its light\" prints "
-          "what they keep, 0.987 to 1.052 of their light at every near radius from 1 to 4 half-res px (0.81 at "
+          "what they keep, 0.991 to 1.023 of their light at every near radius from 1 to 4 half-res px (0.81 at "
           "2.25 until LAYER_ALPHA kept the opacity's square root; 1.09 at 1.25 and 1.06 at 2.25 until the near "
           "weights took the texel grid's disc area, docs/technique.md \"Near specks keep their light\").\n\n";
 }
