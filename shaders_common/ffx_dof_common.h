@@ -362,20 +362,25 @@ FFX_DOF_INLINE FfxFloat32 ffxDofCoarseNearCoverage(FfxFloat32 coc)
 // With steps of the opacity itself (1/127), a rim texel of a near speck gathered an opacity of a few ten-thousandths
 // and stored one step with a colour made up almost entirely of its far layer; the composite's post-filter, which
 // averages the opacity over 3 x 3 texels and keeps each texel's colour, then gave that colour the disc's opacity:
-// a speck at 2.25 half-res px kept 0.81 of its light, 1.06 now (docs/technique.md, "Near opacity in whole steps").
+// a speck at 2.25 half-res px kept 0.81 of its light (docs/technique.md, "Near opacity in whole steps"; 1.02 since
+// the near weights and the post-filter keep it too, "Near specks keep their light").
 #define FFX_DOF_NEAR_OPACITY_STEPS 127.0f
 #define FFX_DOF_NEAR_OPACITY_KEPT 1e-4f
-FFX_DOF_INLINE FfxFloat32 ffxDofStoredNearOpacity(FfxFloat32 opacity)
+// The whole steps of the opacity's square root that LAYER_ALPHA keeps of `opacity`.
+FFX_DOF_INLINE FfxFloat32 ffxDofNearOpacitySteps(FfxFloat32 opacity)
 {
     FfxFloat32 steps = floor(sqrt(ffxDofSaturate(opacity)) * FFX_DOF_NEAR_OPACITY_STEPS + 0.5f);
-    FfxFloat32 root =
-        (opacity >= FFX_DOF_NEAR_OPACITY_KEPT ? max(steps, 1.0f) : steps) * (1.0f / FFX_DOF_NEAR_OPACITY_STEPS);
+    return opacity >= FFX_DOF_NEAR_OPACITY_KEPT ? max(steps, 1.0f) : steps;
+}
+FFX_DOF_INLINE FfxFloat32 ffxDofStoredNearOpacity(FfxFloat32 opacity)
+{
+    FfxFloat32 root = ffxDofNearOpacitySteps(opacity) * (1.0f / FFX_DOF_NEAR_OPACITY_STEPS);
     return root * root;
 }
+// The blur stores ffxDofStoredNearOpacity's value, whose steps are its own.
 FFX_DOF_INLINE FfxFloat32 ffxDofPackLayerAlpha(FfxFloat32x2 nearOpacityFarValidity)
 {
-    FfxFloat32 opacitySteps =
-        floor(sqrt(ffxDofStoredNearOpacity(nearOpacityFarValidity.x)) * FFX_DOF_NEAR_OPACITY_STEPS + 0.5f);
+    FfxFloat32 opacitySteps = ffxDofNearOpacitySteps(nearOpacityFarValidity.x);
     return (opacitySteps + (nearOpacityFarValidity.y > 0.0f ? 128.0f : 0.0f) + 0.25f) * (1.0f / 255.0f);
 }
 FFX_DOF_INLINE FfxFloat32x2 ffxDofUnpackLayerAlpha(FfxFloat32 packed)
