@@ -46,6 +46,14 @@ const std::vector<SceneGate>& sceneGates() {
          "approximate, so the gain is smaller"},
         {"busy-background", 13.5, "a 40+ px background blur: nearly every background pixel changes"},
         {"floor", 12.5, "blur grows continuously with distance in front of and behind the focus"},
+        {"bright-window", 15.0,
+         "a far field brighter than display white behind thin dark bars in focus: the far layer must stay out of "
+         "the bars, whose thin-lens halo (the truth sees the sky around them) a post-process of the pinhole image "
+         "cannot draw"},
+        {"near-and-far", 13.5,
+         "small near objects, strongly blurred, over a blurred far field: their veils are faint and the far field "
+         "behind them must show no edge where their pinhole silhouettes lie (docs/technique.md, \"The far field "
+         "behind a small near object\")"},
     };
     return gates;
 }

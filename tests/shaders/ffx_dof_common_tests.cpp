@@ -1659,6 +1659,18 @@ TEST_CASE("Hole fill proximity: the inverse square of the distance, bounded at h
     for (float d = 0.5f; d < 40.0f; d += 0.5f) CHECK(ffxDofFillProximity(d + 0.5f) < ffxDofFillProximity(d));
 }
 
+TEST_CASE("Veil share: a near sample hides a far texel's own surface from a near radius a pixel below its own",
+          "[blur]") {
+    // The far layer fills what near samples of at least the far radius hide of its disc; none below, so that the
+    // front of an object at the focus (a near radius far below the background's) leaves the far layer as it was.
+    CHECK(ffxDofVeilShare(24.0f, 4.8f) == 1.0f);
+    CHECK(ffxDofVeilShare(4.8f, 4.8f) == 1.0f);
+    CHECK(ffxDofVeilShare(4.3f, 4.8f) == Approx(0.5f));
+    CHECK(ffxDofVeilShare(3.8f, 4.8f) == 0.0f);
+    CHECK(ffxDofVeilShare(1.0f, 20.0f) == 0.0f);
+    for (float r = 0.5f; r < 40.0f; r += 0.25f) CHECK(ffxDofVeilShare(r + 0.25f, 10.0f) >= ffxDofVeilShare(r, 10.0f));
+}
+
 TEST_CASE("Small sources: the composite's full-resolution share and the blur's complement meet", "[blur]") {
     // A source below radius 2 in front of a receiver of 3 or more: all drawn at full resolution.
     CHECK(ffxDofSmallSourceShare(1.0f, 16.0f) == 1.0f);

@@ -664,6 +664,40 @@ TEST_CASE("Behind a near bar, the far layer takes the background from the nearer
     CHECK(std::is_sorted(columnMean.rbegin(), columnMean.rend()));
 }
 
+TEST_CASE("A small near object over a blurred far field leaves no edge of its silhouette", "[pipeline]") {
+    // A dark leaf 14 px wide at a near radius of 25 half-res px in front of a far wall at radius 4.8, bright
+    // left of x = 77 and dark right of it (the step hidden behind the leaf). The thin lens sees behind the leaf:
+    // its veil (0.06 opaque) lies over the far field blurred across the step, with no edge where the leaf's
+    // pinhole silhouette is. Until the far layer beside such an object took its own surface behind the object
+    // from the texels around (ffxDofVeilShare), it was the visible side's mean alone, unlike the hole fill of the
+    // leaf's own texels: the output stepped by 0.13 and 0.09 across the silhouettes, a hard-edged ghost
+    // (docs/quality.md, near-and-far). Now 0.07 at most.
+    const uint32_t w = 160, h = 96;
+    Scene scene = makeScene(w, h, glm::vec4(0.0f), -4.8f);
+    const Rect leaf{70, 30, 84, 66};
+    const float bright = 0.8f, dark = 0.2f;
+    for (uint32_t y = 0; y < h; ++y)
+        for (uint32_t x = 0; x < w; ++x) {
+            const size_t i = size_t(y) * w + x;
+            const float wall = x < 77 ? bright : dark;
+            scene.color[i] = glm::vec4(wall, wall, wall, 1.0f);
+            if (leaf.contains(int(x), int(y))) {
+                scene.color[i] = glm::vec4(0.1f, 0.1f, 0.1f, 1.0f);
+                scene.depth[i] = -25.0f;
+            }
+        }
+    Settings settings;
+    settings.cocLimit = 30.0f;
+    const std::vector<glm::vec4> out = ffxdoftest::runPipeline(scene, settings);
+    for (const int edge : {leaf.x0, leaf.x1}) {
+        double largestStep = 0.0;
+        for (int x = edge - 3; x < edge + 3; ++x)
+            largestStep = std::max(largestStep, double(std::abs(out[48 * w + x + 1].x - out[48 * w + x].x)));
+        INFO("largest step between neighbouring pixels across the silhouette at x = " << edge << ": " << largestStep);
+        CHECK(largestStep <= 0.14 * (bright - dark));
+    }
+}
+
 TEST_CASE("Past the image border, a near object goes on as its edge, no more opaque there", "[pipeline]") {
     // A near rectangle against the left border (radius 8, so kernels reach 8 texels past the border)
     // over an in-focus background. Past the border the image is its edge texels repeated, so there the

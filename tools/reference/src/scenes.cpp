@@ -216,6 +216,52 @@ SceneSetup singlePoint(uint32_t width, uint32_t height) {
     return setup;
 }
 
+// A far field above display white (2 to 8) behind thin bars in focus: the far layer must not bleed into the
+// bars, and the bright field around them is where a half-resolution far layer shows its rims.
+SceneSetup brightWindow(uint32_t width, uint32_t height) {
+    SceneSetup setup{"bright-window",
+                     "dark window bars in focus at 2 m against a bright far sky (values 2 to 8)",
+                     {},
+                     baseCamera(width, height, 0.05, 2.0)};
+    Scene& scene = setup.scene;
+    scene.background = {3.0f, 3.2f, 3.6f};
+    scene.addQuad({0, 0, 30}, kRight * 40.0, kUp * 30.0, noise({1.5f, 1.8f, 2.4f}, {7.0f, 6.5f, 5.0f}, 1.2f));
+    scene.addQuad({0, -3.5, 28}, kRight * 40.0, kUp * 3.0, noise({0.05f, 0.08f, 0.04f}, {0.2f, 0.3f, 0.1f}, 0.8f));
+    const Texture wood = stripes({0.25f, 0.15f, 0.08f}, {0.35f, 0.22f, 0.12f}, 0.02f);
+    for (int i = -2; i <= 2; ++i) scene.addBox({0.25 * i, 0.0, 2.0}, {0.015, 1.0, 0.015}, wood);
+    scene.addBox({0.0, 0.1, 2.0}, {1.0, 0.015, 0.015}, wood);
+    scene.addSphere({0.1, -0.25, 1.95}, 0.08, checker({0.9f, 0.9f, 0.85f}, {0.2f, 0.2f, 0.6f}, 0.03f));
+    setApertureForBlur(setup.camera, 30.0, std::max(8.0, 0.04 * width));
+    return setup;
+}
+
+// Small near objects (leaves) blurred 2.7 to 6.5 times as much as the far field behind them (26 to 63 px against
+// 9.6 at 320 x 180), nothing but a small box in focus: faint veils whose pinhole silhouettes must not show
+// (issue 17's thin near objects, over a far field rather than an in-focus wall).
+SceneSetup nearAndFar(uint32_t width, uint32_t height) {
+    SceneSetup setup{"near-and-far",
+                     "leaves at 0.6 to 1.2 m and a busy far wall at 30 m, focus at 4 m on a small box",
+                     {},
+                     baseCamera(width, height, 0.035, 4.0)};
+    Scene& scene = setup.scene;
+    scene.background = {0.5f, 0.6f, 0.8f};
+    scene.addQuad({0, 0, 30}, kRight * 40.0, kUp * 30.0, noise({0.1f, 0.2f, 0.4f}, {1.0f, 0.85f, 0.5f}, 0.7f));
+    scene.addBox({0.3, -0.1, 4.0}, {0.15, 0.2, 0.15}, checker({0.9f, 0.9f, 0.9f}, {0.7f, 0.1f, 0.1f}, 0.05f));
+    // In focus and out of every leaf's reach, for the in-focus gate.
+    scene.addBox({1.5, 0.2, 4.0}, {0.15, 0.25, 0.15}, stripes({0.9f, 0.8f, 0.2f}, {0.1f, 0.1f, 0.3f}, 0.04f));
+    for (int i = 0; i < 9; ++i) {
+        const double z = 0.6 + 0.075 * i;
+        // Inside the frame (its half width is 0.51 z; beyond it the thin lens sees what the input does not) and
+        // in its left half.
+        const double x = -0.26 + 0.03 * i + 0.03 * std::sin(i * 1.7);
+        const double y = -0.25 + 0.3 * latticeValue(i, 5);
+        scene.addBox({x, y, z}, {0.012 + 0.01 * (i % 3), 0.05 + 0.03 * (i % 2), 0.01},
+                     noise({0.05f, 0.3f, 0.05f}, {0.3f, 0.6f, 0.2f}, 0.02f));
+    }
+    setApertureForBlur(setup.camera, 30.0, std::max(6.0, 0.03 * width));
+    return setup;
+}
+
 struct SceneEntry {
     const char* name;
     std::function<SceneSetup(uint32_t, uint32_t)> make;
@@ -229,6 +275,8 @@ const std::vector<SceneEntry>& sceneCatalog() {
         {"fence", fence},
         {"busy-background", busyBackground},
         {"floor", floorScene},
+        {"bright-window", brightWindow},
+        {"near-and-far", nearAndFar},
         {"point", singlePoint},
     };
     return catalog;
