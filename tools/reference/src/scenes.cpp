@@ -240,7 +240,7 @@ SceneSetup brightWindow(uint32_t width, uint32_t height) {
 // (issue 17's thin near objects, over a far field rather than an in-focus wall).
 SceneSetup nearAndFar(uint32_t width, uint32_t height) {
     SceneSetup setup{"near-and-far",
-                     "leaves at 0.6 to 1.2 m and a busy far wall at 30 m, focus at 4 m on a small box",
+                     "leaves at 0.6 to 1.2 m and a busy far wall at 30 m, focus at 4 m on two small boxes",
                      {},
                      baseCamera(width, height, 0.035, 4.0)};
     Scene& scene = setup.scene;
