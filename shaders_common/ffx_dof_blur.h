@@ -486,7 +486,7 @@ struct FfxDofGather
     FfxFloat32 nearWeight;
     FfxFloat32 nearRadiusSum;  // |radius| * near weight
     FfxFloat32x3 fillSum;      // hole fill: color * proximity * texel area
-    FfxFloat32x2 fillWeights;  // hole fill: x the texel area summed, y proximity * texel area
+    FfxFloat32 fillProximity;  // hole fill: proximity * texel area
     FfxFloat32 veiledArea;     // far texels: texel area of their own disc that near samples hide (ffxDofVeilShare)
     // Far texels: their own surface by proximity (rgb: color * weight, w: weight), what the veiled area takes.
     // Not the hole fill's samples: in-focus ones among them would bleed an object at the focus into the far
@@ -544,7 +544,7 @@ struct FfxDofRingWalk
 };
 
 // The sample loop of one ring walk: every texel of `annulus` at the walk's MIP, once, added to the
-// gather (the ring's hole fill to ringFillSum / ringFillCount). `coarse` is a literal at both calls: MIP
+// gather (the ring's hole fill to ringFillSum / ringFillProximity). `coarse` is a literal at both calls: MIP
 // 0 reads HALF_COLOR and HALF_COC, MIPs 1 and up read COARSE_MIPS, colour, radius and light offset in
 // one fetch. Two loops rather than a choice per sample because on devices that run both sides of every
 // branch (lavapipe) a per-sample choice fetches from both images; a loop no lane enters costs at most one pass.
@@ -552,7 +552,7 @@ struct FfxDofRingWalk
 // step of the walk that lands on an empty row counts with weight 0 (`valid`) rather than looping on to
 // the next row.
 FFX_DOF_INLINE void ffxDofWalkSamples(FFX_DOF_INOUT(FfxDofGather) gather, FFX_DOF_INOUT(FfxFloat32x3) ringFillSum,
-                                      FFX_DOF_INOUT(FfxFloat32x2) ringFillWeights, FfxDofKernel kernel,
+                                      FFX_DOF_INOUT(FfxFloat32) ringFillProximity, FfxDofKernel kernel,
                                       FfxDofRingWalk ring, FfxDofAnnulus annulus, FfxBoolean coarse,
                                       FfxDofGatherParts parts)
 {
@@ -664,7 +664,7 @@ FFX_DOF_INLINE void ffxDofWalkSamples(FFX_DOF_INOUT(FfxDofGather) gather, FFX_DO
         {
             FfxFloat32 proximity = ffxDofFillProximity(distance) * farShare;
             ringFillSum += color * proximity;
-            ringFillWeights += FfxFloat32x2(farShare, proximity);
+            ringFillProximity += proximity;
             FfxFloat32 ownProximity = proximity * ownShare * ring.sampleWeight;
             gather.ownFill += FfxFloat32x4(color * ownProximity, ownProximity);
         }
@@ -704,13 +704,13 @@ FFX_DOF_INLINE FfxDofAnnulus ffxDofKernelAnnulus(FfxDofKernel kernel, FfxUInt32 
 
 // Walks `annulus` at the walk's MIP (ffxDofWalkSamples, with `coarse` a literal at each call).
 FFX_DOF_INLINE void ffxDofWalkAnnulus(FFX_DOF_INOUT(FfxDofGather) gather, FFX_DOF_INOUT(FfxFloat32x3) ringFillSum,
-                                      FFX_DOF_INOUT(FfxFloat32x2) ringFillWeights, FfxDofKernel kernel,
+                                      FFX_DOF_INOUT(FfxFloat32) ringFillProximity, FfxDofKernel kernel,
                                       FfxDofRingWalk ring, FfxDofAnnulus annulus, FfxDofGatherParts parts)
 {
     if (ring.mip == 0u)
-        ffxDofWalkSamples(gather, ringFillSum, ringFillWeights, kernel, ring, annulus, false, parts);
+        ffxDofWalkSamples(gather, ringFillSum, ringFillProximity, kernel, ring, annulus, false, parts);
     else
-        ffxDofWalkSamples(gather, ringFillSum, ringFillWeights, kernel, ring, annulus, true, parts);
+        ffxDofWalkSamples(gather, ringFillSum, ringFillProximity, kernel, ring, annulus, true, parts);
 }
 
 // The annulus of rings firstRing..lastRing at MIP `mip` around the kernel origin, in texels of that MIP;
@@ -748,10 +748,10 @@ FFX_DOF_INLINE void ffxDofGatherRing(FFX_DOF_INOUT(FfxDofGather) gather, FfxDofK
     FfxDofAnnulus annulus =
         ffxDofRingsAnnulus(kernel, firstRing, lastRing, mip, innerBorderMip, outerBorderMip, parts.shaped);
     FfxFloat32x3 ringFillSum = FfxFloat32x3(0.0f, 0.0f, 0.0f);
-    FfxFloat32x2 ringFillWeights = FfxFloat32x2(0.0f, 0.0f);
-    ffxDofWalkAnnulus(gather, ringFillSum, ringFillWeights, kernel, ring, annulus, parts);
+    FfxFloat32 ringFillProximity = 0.0f;
+    ffxDofWalkAnnulus(gather, ringFillSum, ringFillProximity, kernel, ring, annulus, parts);
     gather.fillSum += ringFillSum * ring.sampleWeight;
-    gather.fillWeights += ringFillWeights * ring.sampleWeight;
+    gather.fillProximity += ringFillProximity * ring.sampleWeight;
 }
 
 // The walks over the rings inside the outermost one. Rings 1 .. rings - 1 form groups of
@@ -874,25 +874,29 @@ FFX_DOF_INLINE void ffxDofGatherInnerRings(FFX_DOF_INOUT(FfxDofGather) gather, F
 }
 
 // The layers of one texel from its finished gather; `result` holds the defaults (texel itself).
-// `fillAreaWeight`: the area weight of the texel's own radius (the hole fill's samples weigh it); `parts`: the
+// `ownAreaWeight`: the area weight of the texel's own radius (its veiled area weighs it); `parts`: the
 // tile class's (literals, so that what a class never gathers compiles away, and with it the resources it reads).
 FFX_DOF_INLINE FfxDofBlurResult ffxDofFinishGather(FfxDofGather gather, FfxDofKernel kernel, FfxDofGatherParts parts,
-                                                   FfxFloat32 fillAreaWeight, FfxDofBlurResult result)
+                                                   FfxFloat32 ownAreaWeight, FfxDofBlurResult result)
 {
-    // The hole fill is background to the near texel it fills.
-    FfxFloat32 fillWeight = kernel.centerIsNear ? fillAreaWeight : 0.0f;
+    // The hole fill is background to a near texel: it takes what the far samples that reach the texel leave
+    // uncovered of its disc (their weights sum to pi where they cover it all), as a far texel's veiled area
+    // takes its own surface around. Weighed instead by the far samples' share of the kernel (until 2026-12-01),
+    // a near object over a far field still showed its silhouette: steps of 0.071 and 0.065 across it, 0.057 and
+    // 0.044 now (tests/shaders, "A small near object over a blurred far field leaves no edge of its silhouette").
     FfxDofBucket back = gather.farBack;
     FfxDofBucket front = gather.farFront;
-    if (gather.fillWeights.y > 0.0f)
+    if (kernel.centerIsNear && gather.fillProximity > 0.0f)
     {
-        back.color += gather.fillSum * (gather.fillWeights.x * fillWeight / gather.fillWeights.y);
-        back.weight += gather.fillWeights.x * fillWeight;
+        FfxFloat32 holeWeight = max(FFX_DOF_PI - gather.farBack.weight, 0.0f);
+        back.color += gather.fillSum * (holeWeight / gather.fillProximity);
+        back.weight += holeWeight;
     }
     // A far texel's own surface behind the near samples in its disc (ffxDofVeilShare), as much of it as the
     // texel's front layer keeps (ffxDofOwnGatherShare).
     if (parts.nearField && parts.farField && gather.ownFill.w > 0.0f && !kernel.centerIsNear)
     {
-        FfxFloat32 veiledWeight = gather.veiledArea * fillAreaWeight * (1.0f - kernel.ownGatherShare);
+        FfxFloat32 veiledWeight = gather.veiledArea * ownAreaWeight * (1.0f - kernel.ownGatherShare);
         front.color +=
             FfxFloat32x3(gather.ownFill.x, gather.ownFill.y, gather.ownFill.z) * (veiledWeight / gather.ownFill.w);
         front.weight += veiledWeight;
@@ -1012,8 +1016,8 @@ FFX_DOF_INLINE void ffxDofGatherBehind(FFX_DOF_INOUT(FfxDofGather) gather, FfxDo
     // Far buckets only: near samples this far out cannot reach (the kernel covers the near radii).
     FfxDofGatherParts behindParts = ffxDofMakeGatherParts(false, true, false, parts.shaped);
     FfxFloat32x3 unusedFillSum = FfxFloat32x3(0.0f, 0.0f, 0.0f);
-    FfxFloat32x2 unusedFillWeights = FfxFloat32x2(0.0f, 0.0f);
-    ffxDofWalkAnnulus(gather, unusedFillSum, unusedFillWeights, kernel, ring, annulus, behindParts);
+    FfxFloat32 unusedFillProximity = 0.0f;
+    ffxDofWalkAnnulus(gather, unusedFillSum, unusedFillProximity, kernel, ring, annulus, behindParts);
 }
 
 // Gathers the whole kernel with the parts of one tile class.
@@ -1114,7 +1118,7 @@ FFX_DOF_INLINE FfxDofBlurResult ffxDofBlurTexel(FfxUInt32x2 texel, FfxFloat32x4 
     gather.nearWeight = 0.0f;
     gather.nearRadiusSum = 0.0f;
     gather.fillSum = FfxFloat32x3(0.0f, 0.0f, 0.0f);
-    gather.fillWeights = FfxFloat32x2(0.0f, 0.0f);
+    gather.fillProximity = 0.0f;
     gather.farNearer = ffxDofEmptyBucket();
     gather.farFront = ffxDofEmptyBucket();
     gather.farBack = ffxDofEmptyBucket();
@@ -1122,14 +1126,14 @@ FFX_DOF_INLINE FfxDofBlurResult ffxDofBlurTexel(FfxUInt32x2 texel, FfxFloat32x4 
     gather.veiledArea = 0.0f;
     gather.ownFill = FfxFloat32x4(0.0f, 0.0f, 0.0f, 0.0f);
 
-    FfxFloat32 fillAreaWeight = ffxDofRoundAreaWeight(abs(kernel.centerCoc));
+    FfxFloat32 ownAreaWeight = ffxDofRoundAreaWeight(abs(kernel.centerCoc));
 #if FFX_DOF_OPTION_APERTURE_SHAPES
     // The permutation of FFX_DOF_ENABLE_APERTURE_SHAPES: every dispatch takes the shaped path (a round
     // aperture there gives the circle up to rounding). The circle's own code is the other permutation:
     // a blur holding both paths, one chosen per dispatch, made the round aperture's blur 1.11 to 1.27
     // times as long on lavapipe even when the shaped path never ran (docs/aperture.md, Cost).
     kernel.aperture = ffxDofMakeAperture(constants, kernel.center, FfxFloat32x2(constants.halfSize));
-    fillAreaWeight = ffxDofApertureAreaWeight(kernel.aperture, abs(kernel.centerCoc));
+    ownAreaWeight = ffxDofApertureAreaWeight(kernel.aperture, abs(kernel.centerCoc));
     // A coarse texel's centre lies farther off in the aperture's units where the disc is narrowed.
     kernel.rimInset /= ffxDofApertureRingSpacingScale(constants);
     // On a flat far tile the outermost ring reaches in to the shape's inscribed circle where that lies
@@ -1144,7 +1148,7 @@ FFX_DOF_INLINE FfxDofBlurResult ffxDofBlurTexel(FfxUInt32x2 texel, FfxFloat32x4 
     FfxDofGatherParts parts = ffxDofBlurClassParts(blurClass, false);
 #endif
     ffxDofGatherKernel(gather, kernel, parts, constants);
-    return ffxDofFinishGather(gather, kernel, parts, fillAreaWeight, result);
+    return ffxDofFinishGather(gather, kernel, parts, ownAreaWeight, result);
 }
 
 // Blurs tile `tile` on the path of `blurClass` (FFX_DOF_BLUR_CLASS_*); `dilated` is its DILATED_TILES texel.

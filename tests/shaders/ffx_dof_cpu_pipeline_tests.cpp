@@ -671,7 +671,8 @@ TEST_CASE("A small near object over a blurred far field leaves no edge of its si
     // pinhole silhouette is. Until the far layer beside such an object took its own surface behind the object
     // from the texels around (ffxDofVeilShare), it was the visible side's mean alone, unlike the hole fill of the
     // leaf's own texels: the output stepped by 0.13 and 0.09 across the silhouettes, a hard-edged ghost
-    // (docs/quality.md, near-and-far). Now 0.07 at most.
+    // (docs/quality.md, near-and-far); 0.071 and 0.065 with that alone, 0.057 and 0.044 since the leaf's hole fill
+    // takes what the far samples reaching it leave uncovered (ffxDofFinishGather).
     const uint32_t w = 160, h = 96;
     Scene scene = makeScene(w, h, glm::vec4(0.0f), -4.8f);
     const Rect leaf{70, 30, 84, 66};
@@ -694,7 +695,7 @@ TEST_CASE("A small near object over a blurred far field leaves no edge of its si
         for (int x = edge - 3; x < edge + 3; ++x)
             largestStep = std::max(largestStep, double(std::abs(out[48 * w + x + 1].x - out[48 * w + x].x)));
         INFO("largest step between neighbouring pixels across the silhouette at x = " << edge << ": " << largestStep);
-        CHECK(largestStep <= 0.14 * (bright - dark));
+        CHECK(largestStep <= 0.11 * (bright - dark));
     }
 }
 
