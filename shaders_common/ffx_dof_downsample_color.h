@@ -417,9 +417,10 @@ FFX_DOF_INLINE FfxDofHighlightSums ffxDofQuadrantHighlightSums(FfxUInt32 quadran
     return sums;
 }
 
-// Per wave, the dimmest far luminance and the dimmest luminance of the group's pixels and border (the floors its
-// far and near highlights stand on, ffxDofPackHighlightFloors).
-FFX_DOF_GROUPSHARED FfxFloat32x2 ffxDofSharedWaveFloors[FFX_DOF_GROUP_THREADS];
+// Per wave, over the group's pixels and border: the dimmest far luminance, the dimmest luminance, and the sum and
+// count of the far luminances (what the floors its far and near highlights stand on come from,
+// ffxDofFarHighlightFloor, ffxDofPackHighlightFloors).
+FFX_DOF_GROUPSHARED FfxFloat32x4 ffxDofSharedWaveFloors[FFX_DOF_GROUP_THREADS];
 
 // Scaled in 32-bit (and clamped to the half range) before any conversion to 16 bits.
 FFX_DOF_INLINE FfxFloat32x4 ffxDofLoadScaledInputColor(FfxUInt32x2 pixel, FfxFloat32 scale)
@@ -442,6 +443,12 @@ FFX_DOF_INLINE FfxFloat32x2 ffxDofRimSample(FfxFloat32x4 color, FfxUInt32x2 pixe
 FFX_DOF_INLINE FfxFloat32 ffxDofFarLuminance(FfxFloat32x2 rimSample)
 {
     return rimSample.y <= -FFX_DOF_IN_FOCUS_RADIUS ? rimSample.x : FFX_DOF_FLOAT32_MAX;
+}
+
+// (luminance, 1) of a far pixel, else 0: what the mean far luminance of the highlights' floor sums.
+FFX_DOF_INLINE FfxFloat32x2 ffxDofFarLuminanceSum(FfxFloat32x2 rimSample)
+{
+    return rimSample.y <= -FFX_DOF_IN_FOCUS_RADIUS ? FfxFloat32x2(rimSample.x, 1.0f) : FfxFloat32x2(0.0f, 0.0f);
 }
 
 // Cell `index` of the border ring of the rim grid: the top row, the bottom row, then the sides.
@@ -513,6 +520,8 @@ FFX_DOF_INLINE void ffxDofDownsampleColor(FfxUInt32x2 groupId, FfxUInt32 localIn
     FfxFloat32 dimmestFar = min(min(ffxDofFarLuminance(rim0), ffxDofFarLuminance(rim1)),
                                 min(ffxDofFarLuminance(rim2), ffxDofFarLuminance(rim3)));
     FfxFloat32 dimmest = min(min(rim0.x, rim1.x), min(rim2.x, rim3.x));
+    FfxFloat32x2 farSum = ffxDofFarLuminanceSum(rim0) + ffxDofFarLuminanceSum(rim1) + ffxDofFarLuminanceSum(rim2) +
+                          ffxDofFarLuminanceSum(rim3);
     FfxInt32x2 origin = FfxInt32x2(groupId * (2u * FfxUInt32(FFX_DOF_TILE_SIZE))) - FfxInt32x2(1, 1);
     FFX_DOF_LOOP
     for (FfxUInt32 border = localIndex; border < 4u * (FFX_DOF_RIM_SIDE - 1u); border += FFX_DOF_GROUP_THREADS)
@@ -524,11 +533,13 @@ FFX_DOF_INLINE void ffxDofDownsampleColor(FfxUInt32x2 groupId, FfxUInt32 localIn
         ffxDofSharedRimSample[borderCell.y * FFX_DOF_RIM_SIDE + borderCell.x] = bordering;
         dimmestFar = min(dimmestFar, ffxDofFarLuminance(bordering));
         dimmest = min(dimmest, bordering.x);
+        farSum += ffxDofFarLuminanceSum(bordering);
     }
     dimmestFar = ffxDofWaveMin(dimmestFar);
     dimmest = ffxDofWaveMin(dimmest);
+    farSum = FfxFloat32x2(ffxDofWaveSum(farSum.x), ffxDofWaveSum(farSum.y));
     if (ffxDofWaveIsFirstLane())
-        ffxDofSharedWaveFloors[ffxDofWaveIndex(localIndex)] = FfxFloat32x2(dimmestFar, dimmest);
+        ffxDofSharedWaveFloors[ffxDofWaveIndex(localIndex)] = FfxFloat32x4(dimmestFar, dimmest, farSum.x, farSum.y);
     ffxDofGroupBarrier();
     // The quad's 4 x 4 neighbourhood read once for its four pixels (16 group-shared reads instead of 36: on
     // lavapipe each is a loop over the lanes).
@@ -555,9 +566,15 @@ FFX_DOF_INLINE void ffxDofDownsampleColor(FfxUInt32x2 groupId, FfxUInt32 localIn
     // gives its light (a light split between both paths drew its rest from the layers 1.05 to 1.10 times too
     // bright, docs/technique.md); as the composite reads them back (ffxDofPackHighlightFloors).
     FfxFloat32x2 tileFloors = FfxFloat32x2(FFX_DOF_FLOAT32_MAX, FFX_DOF_FLOAT32_MAX);
+    FfxFloat32x2 tileFarSum = FfxFloat32x2(0.0f, 0.0f);
     FFX_DOF_LOOP
     for (FfxUInt32 wave = 0u; wave < ffxDofWaveCount(); ++wave)
-        tileFloors = min(tileFloors, ffxDofSharedWaveFloors[wave]);
+    {
+        FfxFloat32x4 waveFloors = ffxDofSharedWaveFloors[wave];
+        tileFloors = min(tileFloors, FfxFloat32x2(waveFloors.x, waveFloors.y));
+        tileFarSum += FfxFloat32x2(waveFloors.z, waveFloors.w);
+    }
+    tileFloors.x = ffxDofFarHighlightFloor(tileFloors.x, tileFarSum);
     FfxUInt32 packedFloors = ffxDofPackHighlightFloors(tileFloors);
     tileFloors = ffxDofUnpackHighlightFloors(packedFloors);
     FfxFloat32x4 shares =

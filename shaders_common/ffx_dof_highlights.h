@@ -98,6 +98,19 @@ FFX_DOF_INLINE FfxUInt32 ffxDofPackHighlightFloors(FfxFloat32x2 farNearFloors)
                                  FfxFloat32x2(FFX_DOF_HIGHLIGHT_NO_FLOOR, FFX_DOF_HIGHLIGHT_NO_FLOOR)));
 }
 FFX_DOF_INLINE FfxFloat32x2 ffxDofUnpackHighlightFloors(FfxUInt32 word) { return ffxDofUnpackHalf2(word); }
+// The floor far pixels stand on from the tile's (and border's) dimmest far luminance and (sum, count) of its far
+// luminances: at least their mean. A light is what is far brighter than the far field around it, and a bright
+// region that fills much of a tile is that far field, not a light: over the dimmest pixel alone, a sky above white
+// behind dark branches gave its light to the quadrants' discs wherever a branch darkened the tile, and each disc,
+// drawn behind the branch and hidden by it whole or not at all, left the branch's veil up to half as bright as the
+// thin lens's, with steps at the quadrants' borders (docs/quality.md, far-branches). Over the mean a light needs
+// twice the tile's mean luminance, which a region covering half of it never has; a light of a few pixels raises the
+// mean by its light over the tile's 324 pixels, and keeps nearly all of it above the floor.
+FFX_DOF_INLINE FfxFloat32 ffxDofFarHighlightFloor(FfxFloat32 dimmestFar, FfxFloat32x2 farLuminanceSum)
+{
+    return farLuminanceSum.y > 0.0f ? max(dimmestFar, farLuminanceSum.x / farLuminanceSum.y) : dimmestFar;
+}
+
 // The word of a tile whose pixels give no light (ffxDofTileMayHoldHighlights false).
 FFX_DOF_INLINE FfxUInt32 ffxDofNoHighlightFloors()
 {

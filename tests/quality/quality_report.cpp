@@ -852,7 +852,13 @@ int main(int argc, char** argv) {
                << number(result.inFocusMaxDifference * 255.0, "%.3f") << "/255 | "
                << (result.inFocusGate() ? "pass" : "**FAIL**") << " |\n"
                << "| halo band PSNR vs circular gather | >= " << decibels(result.gather.haloBand.psnr) << " dB | "
-               << decibels(result.effect.haloBand.psnr) << " dB | " << (result.haloGate() ? "pass" : "**FAIL**")
+               << decibels(result.effect.haloBand.psnr) << " dB | "
+               << (result.haloGate()
+                       ? "pass"
+                       : (gate.haloShortfall.empty() ? "**FAIL**"
+                          : result.effect.haloBand.psnr >= result.gather.haloBand.psnr - quality::kHaloShortfallLimitDb
+                              ? "known failure"
+                              : "**FAIL** (beyond the known failure)"))
                << " |\n"
                << "| PSNR vs circular gather | >= " << decibels(result.gather.psnr) << " dB | "
                << decibels(result.effect.psnr) << " dB | "
@@ -860,6 +866,8 @@ int main(int argc, char** argv) {
             fieldGateRow(md, "near field", result.effect.nearField, result.gather.nearField);
             fieldGateRow(md, "far field", result.effect.farField, result.gather.farField);
             md << "\nWhy this margin: " << gate.rationale << ".\n\n";
+            if (!gate.haloShortfall.empty())
+                md << "Halo band below the circular gather: " << gate.haloShortfall << ".\n\n";
             std::printf("%-16s psnr input %s, ffx-dof %s, gather %s dB (%.1f s)\n", gate.scene.c_str(),
                         decibels(result.input.psnr).c_str(), decibels(result.effect.psnr).c_str(),
                         decibels(result.gather.psnr).c_str(),

@@ -54,6 +54,20 @@ const std::vector<SceneGate>& sceneGates() {
          "small near objects, strongly blurred, over a blurred far field: their veils are faint and the far field "
          "behind them must show no edge where their pinhole silhouettes lie (docs/technique.md, \"The far field "
          "behind a small near object\")"},
+        {"far-branches", 24.5,
+         "thin dark branches in the far field against a sky brighter than display white that lies farther still: "
+         "the sky shows through their veils, which hold no step where a tile's bright pixels were taken for lights "
+         "(docs/technique.md, \"A bright far field is not a light\")",
+         true,
+         "two branches cross behind the in-focus sphere. Beside it the thin lens sees the branches go on behind "
+         "the sphere, which the pinhole input hides; ffx-dof fills the part of those far pixels' discs that the "
+         "sphere hides with the far field it sees around them, mostly sky, and draws the veil up to 0.2 brighter "
+         "there (0.94 against 0.77 at (171, 120)). The circular gather mixes the sphere's own colours in and comes "
+         "nearer by chance. The same limit as mid-lights' partly hidden lights: a post-process of the pinhole image "
+         "cannot know what an object in focus hides"},
+        {"far-steps", 21.5,
+         "large far objects in front of a farther high-contrast wall: far-field content nearer than the far field "
+         "around it, at the object's edges the wall's blur passes behind them"},
     };
     return gates;
 }

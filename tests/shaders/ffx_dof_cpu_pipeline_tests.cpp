@@ -1030,3 +1030,37 @@ TEST_CASE("A bright near patch keeps its light, and its shape against the thin l
         CHECK(rms <= measured[r] * 1.1);
     }
 }
+
+TEST_CASE("A thin far object over a far field above white is blurred as over the same field below it", "[pipeline]") {
+    // A dark branch 9 px wide at far radius 5.9 half-res px in front of a farther, uniform sky at radius 8; once with
+    // the sky at 0.5, once with every value 4.6 times as bright (the sky at 2.3, above white). Nothing here is a
+    // light, so the effect, linear in the colour, must give the same image scaled. Until a tile's far floor took its
+    // mean (ffxDofFarHighlightFloor) the bright sky gave its light to the highlights wherever the branch darkened a
+    // tile, each quadrant's disc hidden by the branch whole or not at all: the two differed by up to 0.33 of the dim
+    // case's value (0.013 since; the half-res images round the colour).
+    const uint32_t w = 160, h = 96;
+    const int branchFirst = 76, branchLast = 84;
+    const float gain = 4.6f;
+    std::vector<std::vector<glm::vec4>> outputs;
+    for (const float scale : {1.0f, gain}) {
+        Scene scene = makeScene(w, h, glm::vec4(0.5f * scale, 0.5f * scale, 0.5f * scale, 1.0f), -8.0f);
+        for (uint32_t y = 0; y < h; ++y)
+            for (int x = branchFirst; x <= branchLast; ++x) {
+                const size_t i = size_t(y) * w + uint32_t(x);
+                scene.color[i] = glm::vec4(glm::vec3(0.0109f * scale), 1.0f);
+                scene.depth[i] = 5.9f;
+            }
+        Settings settings;
+        settings.cocLimit = 10.0f;
+        outputs.push_back(ffxdoftest::runPipeline(scene, settings));
+    }
+    double largestDifference = 0.0;
+    for (uint32_t y = 16; y < h - 16; ++y)
+        for (uint32_t x = 40; x < 120; ++x) {
+            const size_t i = size_t(y) * w + x;
+            const double dim = outputs[0][i].y, bright = outputs[1][i].y / gain;
+            largestDifference = std::max(largestDifference, std::abs(bright - dim) / dim);
+        }
+    INFO("largest relative difference of the bright case (scaled back) from the dim one: " << largestDifference);
+    CHECK(largestDifference <= 0.02);
+}

@@ -127,6 +127,26 @@ TEST_CASE("The composite knows what pass 2 took of a pixel, but for a quad the i
           ffxDofHighlightShare(ffxDofLuminance32(light), -coc, floors.y, scale));
 }
 
+TEST_CASE("A far floor is at least the mean far luminance: a bright region filling half a tile gives no light",
+          "[highlights]") {
+    // A tile (with its border: 18 x 18 = 324 px) half sky at 2.3, half branch at 0.05: over the dimmest pixel the sky
+    // was a light (more than twice its floor); over the mean (1.175) it is not.
+    const float sky = 2.3f, branch = 0.05f;
+    const glm::vec2 halfAndHalf(162.0f * sky + 162.0f * branch, 324.0f);
+    const float floor = ffxDofFarHighlightFloor(branch, halfAndHalf);
+    CHECK(floor == Approx((sky + branch) * 0.5f));
+    CHECK(ffxDofHighlightShare(sky, -8.0f, branch, 1.0f) > 0.9f);
+    CHECK(ffxDofHighlightShare(sky, -8.0f, floor, 1.0f) == 0.0f);
+    // A light of 3 x 3 px at 100 on a floor of 0.05 raises the mean to 2.8: it keeps 97% of its light above it.
+    const glm::vec2 light(9.0f * 100.0f + 315.0f * 0.05f, 324.0f);
+    const float lightFloor = ffxDofFarHighlightFloor(0.05f, light);
+    CHECK(lightFloor == Approx((900.0f + 315.0f * 0.05f) / 324.0f));
+    CHECK(ffxDofHighlightShare(100.0f, -8.0f, lightFloor, 1.0f) == Approx(1.0f - lightFloor / 100.0f));
+    // The dimmest pixel where it lies above the mean (it cannot, but rounding may put it there), and no far pixel.
+    CHECK(ffxDofFarHighlightFloor(0.5f, glm::vec2(0.4f * 4.0f, 4.0f)) == 0.5f);
+    CHECK(ffxDofFarHighlightFloor(FFX_DOF_FLOAT32_MAX, glm::vec2(0.0f, 0.0f)) == FFX_DOF_FLOAT32_MAX);
+}
+
 TEST_CASE("A tile's two floors survive their word, and a tile without highlights gives no light", "[highlights]") {
     // Far floor in the low half, near floor in the high half, each a half: what pass 2 takes its shares over.
     const glm::vec2 floors(0.0371f, 2.5f);

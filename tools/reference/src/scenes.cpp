@@ -262,6 +262,40 @@ SceneSetup nearAndFar(uint32_t width, uint32_t height) {
     return setup;
 }
 
+SceneSetup farBranches(uint32_t width, uint32_t height) {
+    SceneSetup setup{"far-branches",
+                     "thin dark branches at 7 m against a bright sky at 60 m, focus at 2 m on a small sphere",
+                     {},
+                     baseCamera(width, height, 0.05, 2.0)};
+    Scene& scene = setup.scene;
+    scene.background = {1.6f, 1.8f, 2.2f};
+    scene.addQuad({0, 0, 60}, kRight * 80.0, kUp * 60.0, noise({0.8f, 1.0f, 1.4f}, {2.5f, 2.6f, 3.0f}, 3.0f));
+    const Texture bark = noise({0.04f, 0.03f, 0.02f}, {0.12f, 0.09f, 0.06f}, 0.05f);
+    const double widths[] = {0.015, 0.03, 0.06, 0.12};
+    for (int i = 0; i < 4; ++i) {
+        scene.addBox({-1.6 + 0.9 * i, 0.2, 7.0}, {widths[i] * 0.5, 3.0, 0.05}, bark);
+        scene.addBox({0.0, -1.2 + 0.7 * i, 7.2}, {3.0, widths[3 - i] * 0.5, 0.05}, bark);
+    }
+    scene.addSphere({0.15, -0.1, 2.0}, 0.1, checker({0.9f, 0.9f, 0.85f}, {0.2f, 0.3f, 0.7f}, 0.03f));
+    setApertureForBlur(setup.camera, 60.0, std::max(8.0, 0.05 * width));
+    return setup;
+}
+
+SceneSetup farSteps(uint32_t width, uint32_t height) {
+    SceneSetup setup{"far-steps",
+                     "textured boxes at 4 to 8 m in front of a busy wall at 40 m, focus at 2 m",
+                     {},
+                     baseCamera(width, height, 0.05, 2.0)};
+    Scene& scene = setup.scene;
+    scene.addQuad({0, 0, 40}, kRight * 60.0, kUp * 40.0, checker({0.1f, 0.1f, 0.15f}, {0.9f, 0.85f, 0.6f}, 1.2f));
+    scene.addBox({-1.5, 0.3, 5.0}, {0.8, 0.5, 0.2}, stripes({0.8f, 0.2f, 0.1f}, {0.2f, 0.1f, 0.05f}, 0.12f));
+    scene.addBox({1.2, -0.5, 4.0}, {0.4, 0.6, 0.2}, noise({0.1f, 0.5f, 0.2f}, {0.9f, 0.9f, 0.5f}, 0.1f));
+    scene.addBox({0.4, 1.2, 8.0}, {1.0, 0.4, 0.2}, bricks({0.3f, 0.3f, 0.6f}, {0.9f, 0.9f, 0.9f}, 0.2f));
+    scene.addSphere({-0.1, -0.15, 2.0}, 0.1, checker({0.9f, 0.9f, 0.85f}, {0.2f, 0.3f, 0.7f}, 0.03f));
+    setApertureForBlur(setup.camera, 40.0, std::max(8.0, 0.05 * width));
+    return setup;
+}
+
 struct SceneEntry {
     const char* name;
     std::function<SceneSetup(uint32_t, uint32_t)> make;
@@ -277,6 +311,8 @@ const std::vector<SceneEntry>& sceneCatalog() {
         {"floor", floorScene},
         {"bright-window", brightWindow},
         {"near-and-far", nearAndFar},
+        {"far-branches", farBranches},
+        {"far-steps", farSteps},
         {"point", singlePoint},
     };
     return catalog;
