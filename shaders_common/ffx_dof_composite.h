@@ -199,7 +199,7 @@ FFX_DOF_GROUPSHARED FfxDofFloat3 ffxDofSharedFar[FFX_DOF_FILTERED_SIDE * FFX_DOF
 FFX_DOF_GROUPSHARED FfxFloat32x2 ffxDofSharedAlpha[FFX_DOF_FILTERED_SIDE * FFX_DOF_FILTERED_SIDE];
 FFX_DOF_GROUPSHARED FfxFloat32 ffxDofSharedCoc[FFX_DOF_FILTERED_SIDE * FFX_DOF_FILTERED_SIDE];
 // Per tile of the 9 around the group's (ffxDofTileAround): its highlights' floors (ffxDofPackHighlightFloors, whose
-// high half's sign bit is free: ffxDofNoHighlightFloors for a tile that cannot hold highlights,
+// bit 31 is free: ffxDofNoHighlightFloors for a tile that cannot hold highlights,
 // ffxDofTileMayHoldHighlights) and, in bit 31, whether it may hold bright small sources (ffxDofSurveyTilesAround
 // with one load per invocation instead of nine per invocation).
 FFX_DOF_GROUPSHARED FfxUInt32 ffxDofSharedTilesAround[9];
@@ -396,7 +396,7 @@ FFX_DOF_INLINE FfxDofQuadNeighbourhood ffxDofNeighbourhoodLessHighlights(FfxDofQ
         if (!ffxDofCompositeInputIsFullRes(FfxUInt32x2(pixel), quad))
             continue;
         FfxInt32x2 tileAround = pixel / extent - FfxInt32x2(groupId) + FfxInt32x2(1, 1);
-        FfxFloat32x2 floors = ffxDofUnpackHighlightFloors(ffxDofSharedTilesAround[tileAround.y * 3 + tileAround.x] &
+        FfxFloat32x3 floors = ffxDofUnpackHighlightFloors(ffxDofSharedTilesAround[tileAround.y * 3 + tileAround.x] &
                                                           ~FFX_DOF_TILE_AROUND_SMALL_SOURCES_BIT);
         FfxFloat32 coc = ffxDofCocFromDepth(ffxDofLoadInputDepth(FfxUInt32x2(pixel)), constants.cocScale,
                                             constants.cocBias, constants.cocLimit);
@@ -1070,7 +1070,7 @@ FFX_DOF_INLINE void ffxDofComposite(FfxUInt32 compositeClass, FfxUInt32 listInde
             if (highlightsAround && ffxDofCompositeInputIsFullRes(FfxUInt32x2(pixel), quad))
             {
                 FfxInt32x2 tileAround = pixel / FfxInt32(extent) - FfxInt32x2(groupId) + FfxInt32x2(1, 1);
-                FfxFloat32x2 tileFloors = ffxDofUnpackHighlightFloors(
+                FfxFloat32x3 tileFloors = ffxDofUnpackHighlightFloors(
                     ffxDofSharedTilesAround[tileAround.y * 3 + tileAround.x] & ~FFX_DOF_TILE_AROUND_SMALL_SOURCES_BIT);
                 sampleColor *= 1.0f - ffxDofPixelHighlightShare(FfxUInt32x2(pixel), sampleColor, sampleCoc, tileFloors,
                                                                 scale, constants.fullSize);

@@ -418,8 +418,8 @@ FFX_DOF_INLINE FfxDofHighlightSums ffxDofQuadrantHighlightSums(FfxUInt32 quadran
 }
 
 // Per wave, over the group's pixels and border: the dimmest far luminance, the dimmest luminance, and the sum and
-// count of the far luminances (what the floors its far and near highlights stand on come from,
-// ffxDofFarHighlightFloor, ffxDofPackHighlightFloors).
+// count of the far luminances (the floors its far and near highlights stand on and the far surround,
+// ffxDofPackHighlightFloors).
 FFX_DOF_GROUPSHARED FfxFloat32x4 ffxDofSharedWaveFloors[FFX_DOF_GROUP_THREADS];
 
 // Scaled in 32-bit (and clamped to the half range) before any conversion to 16 bits.
@@ -445,7 +445,7 @@ FFX_DOF_INLINE FfxFloat32 ffxDofFarLuminance(FfxFloat32x2 rimSample)
     return rimSample.y <= -FFX_DOF_IN_FOCUS_RADIUS ? rimSample.x : FFX_DOF_FLOAT32_MAX;
 }
 
-// (luminance, 1) of a far pixel, else 0: what the mean far luminance of the highlights' floor sums.
+// (luminance, 1) of a far pixel, else 0: what the far surround of the highlights (ffxDofFarSurround) sums.
 FFX_DOF_INLINE FfxFloat32x2 ffxDofFarLuminanceSum(FfxFloat32x2 rimSample)
 {
     return rimSample.y <= -FFX_DOF_IN_FOCUS_RADIUS ? FfxFloat32x2(rimSample.x, 1.0f) : FfxFloat32x2(0.0f, 0.0f);
@@ -565,18 +565,18 @@ FFX_DOF_INLINE void ffxDofDownsampleColor(FfxUInt32x2 groupId, FfxUInt32 localIn
     // The floors: of the tile and its border (the waves' minima above), so that every pixel of a light within it
     // gives its light (a light split between both paths drew its rest from the layers 1.05 to 1.10 times too
     // bright, docs/technique.md); as the composite reads them back (ffxDofPackHighlightFloors).
-    FfxFloat32x2 tileFloors = FfxFloat32x2(FFX_DOF_FLOAT32_MAX, FFX_DOF_FLOAT32_MAX);
+    FfxFloat32x2 tileMinima = FfxFloat32x2(FFX_DOF_FLOAT32_MAX, FFX_DOF_FLOAT32_MAX);
     FfxFloat32x2 tileFarSum = FfxFloat32x2(0.0f, 0.0f);
     FFX_DOF_LOOP
     for (FfxUInt32 wave = 0u; wave < ffxDofWaveCount(); ++wave)
     {
         FfxFloat32x4 waveFloors = ffxDofSharedWaveFloors[wave];
-        tileFloors = min(tileFloors, FfxFloat32x2(waveFloors.x, waveFloors.y));
+        tileMinima = min(tileMinima, FfxFloat32x2(waveFloors.x, waveFloors.y));
         tileFarSum += FfxFloat32x2(waveFloors.z, waveFloors.w);
     }
-    tileFloors.x = ffxDofFarHighlightFloor(tileFloors.x, tileFarSum);
-    FfxUInt32 packedFloors = ffxDofPackHighlightFloors(tileFloors);
-    tileFloors = ffxDofUnpackHighlightFloors(packedFloors);
+    FfxUInt32 packedFloors =
+        ffxDofPackHighlightFloors(FfxFloat32x3(tileMinima.x, tileMinima.y, ffxDofFarSurround(tileFarSum)));
+    FfxFloat32x3 tileFloors = ffxDofUnpackHighlightFloors(packedFloors);
     FfxFloat32x4 shares =
         FfxFloat32x4(ffxDofHighlightShare(around[5].x, coc0, ffxDofHighlightFloor(tileFloors, coc0), scale),
                      ffxDofHighlightShare(around[6].x, coc1, ffxDofHighlightFloor(tileFloors, coc1), scale),

@@ -72,54 +72,94 @@ FFX_DOF_INLINE FfxFloat32 ffxDofHighlightRadiusRamp(FfxFloat32 coc)
 }
 
 // The share of its light a quad pixel of luminance `luminance` and radius `coc` gives to the full-resolution
-// path over a floor of `floorLuminance` (`scale`: the colour scale of the HDR range): what lies above that floor,
-// ramped in by the three thresholds above so that a light crossing one changes continuously.
-FFX_DOF_INLINE FfxFloat32 ffxDofHighlightShare(FfxFloat32 luminance, FfxFloat32 coc, FfxFloat32 floorLuminance,
+// path (`scale`: the colour scale of the HDR range), over a floor and among a surround (`floorAndSurround`,
+// ffxDofHighlightFloor): what lies above the floor, where the pixel is far brighter than the surround, ramped in by
+// the thresholds above so that a light crossing one changes continuously.
+//
+// The two differ for far pixels. What a far light gives is what it has above the dimmest far pixel around it (the
+// far field behind it), but whether it is a light at all is told by the far field's mean: a bright region that
+// fills much of a tile is that far field, not a light. Judged against the dimmest pixel alone, a sky above white
+// behind dark branches gave its light to the quadrants' discs wherever a branch darkened a tile, and each disc,
+// drawn behind the branch and hidden by it whole or not at all, left the branch's veil up to half as bright as the
+// thin lens's, with steps at the quadrants' borders (docs/quality.md, far-branches). Against the mean a light needs
+// twice the tile's mean luminance, which a region covering half of it never has; a light of a few pixels raises the
+// mean by its light over the tile's 324 pixels. Taken above the mean as well, a light lying across tiles of
+// different means split between the two paths unevenly, and issue 17's square lights kept 0.96 to 1.02 of their
+// energy instead of 1.00 (docs/technique.md, "A bright far field is not a light").
+FFX_DOF_INLINE FfxFloat32 ffxDofHighlightShare(FfxFloat32 luminance, FfxFloat32 coc, FfxFloat32x2 floorAndSurround,
                                                FfxFloat32 scale)
 {
     if (!(luminance > 0.0f))
         return 0.0f;
+    FfxFloat32 floorLuminance = floorAndSurround.x;
+    FfxFloat32 surround = max(floorAndSurround.y, floorLuminance);
     FfxFloat32 white = FFX_DOF_HIGHLIGHT_MIN_LUMINANCE * scale;
     FfxFloat32 bright = ffxDofSaturate(luminance / white - 1.0f);
-    FfxFloat32 contrast = ffxDofSaturate(luminance / max(FFX_DOF_HIGHLIGHT_CONTRAST * floorLuminance, 1e-30f) - 1.0f);
+    FfxFloat32 contrast = ffxDofSaturate(luminance / max(FFX_DOF_HIGHLIGHT_CONTRAST * surround, 1e-30f) - 1.0f);
     return bright * contrast * ffxDofHighlightRadiusRamp(coc) * ffxDofSaturate(1.0f - floorLuminance / luminance);
 }
 
-// A tile's two floors: far pixels stand on the dimmest far pixel of the tile and its border (what lies behind a
-// far light is the far field around it), near pixels on the dimmest pixel of any kind there (a near light stands
-// in front of whatever lies around it: an in-focus wall holds no far pixel). Stored as two halves in one word
-// of HIGHLIGHTS (far in the low half), and pass 2 gives light over the floors as stored, so that the composite,
-// which reads them back, takes the same shares to the bit. FFX_DOF_HIGHLIGHT_NO_FLOOR, the largest half, over
-// which no pixel gives light (the HDR range keeps them at FFX_DOF_COLOR_RANGE_LIMIT): none of that kind there.
+// A tile's floors: far pixels stand on the dimmest far pixel of the tile and its border (what lies behind a far
+// light is the far field around it) among the mean far luminance there (the surround, ffxDofHighlightShare); near
+// pixels on the dimmest pixel of any kind there (a near light stands in front of whatever lies around it: an
+// in-focus wall holds no far pixel), which is their surround as well. Stored in one word of HIGHLIGHTS, 10 bits
+// each (far floor, near floor, far surround; bits 30 and 31 free), and pass 2 gives light over the floors as
+// stored, so that the composite, which reads them back, takes the same shares to the bit.
+// FFX_DOF_HIGHLIGHT_NO_FLOOR, the largest half, over which no pixel gives light (the HDR range keeps them at
+// FFX_DOF_COLOR_RANGE_LIMIT): none of that kind there.
 #define FFX_DOF_HIGHLIGHT_NO_FLOOR 65504.0f
-FFX_DOF_INLINE FfxUInt32 ffxDofPackHighlightFloors(FfxFloat32x2 farNearFloors)
+// A floor in 10 bits: an unsigned float of 5 exponent and 5 mantissa bits (as B10G11R11's blue), its mantissa cut
+// (a floor lowered by at most 3%); below 2^-14 it is 0, and FFX_DOF_HIGHLIGHT_NO_FLOOR and above take the code
+// of all ones (every code of exponent 31 reads as FFX_DOF_HIGHLIGHT_NO_FLOOR). Decoded from its bits alone: no rounding
+// of any device's arithmetic in between.
+#define FFX_DOF_HIGHLIGHT_FLOOR_BITS 10u
+#define FFX_DOF_HIGHLIGHT_FLOOR_MASK 0x3ffu
+#define FFX_DOF_HIGHLIGHT_SMALLEST_FLOOR 6.103515625e-5f
+FFX_DOF_INLINE FfxUInt32 ffxDofEncodeHighlightFloor(FfxFloat32 value)
 {
-    return ffxDofPackHalf2(clamp(farNearFloors, FfxFloat32x2(0.0f, 0.0f),
-                                 FfxFloat32x2(FFX_DOF_HIGHLIGHT_NO_FLOOR, FFX_DOF_HIGHLIGHT_NO_FLOOR)));
+    if (!(value < FFX_DOF_HIGHLIGHT_NO_FLOOR))
+        return FFX_DOF_HIGHLIGHT_FLOOR_MASK;
+    if (!(value >= FFX_DOF_HIGHLIGHT_SMALLEST_FLOOR))
+        return 0u;
+    FfxUInt32 bits = ffxDofAsUInt(value);
+    // The float's biased exponent (127) less 112 is the 10-bit float's (15): 1 to 30 over the range kept.
+    return ((((bits >> 23u) & 0xffu) - 112u) << 5u) | ((bits >> 18u) & 31u);
 }
-FFX_DOF_INLINE FfxFloat32x2 ffxDofUnpackHighlightFloors(FfxUInt32 word) { return ffxDofUnpackHalf2(word); }
-// The floor far pixels stand on from the tile's (and border's) dimmest far luminance and (sum, count) of its far
-// luminances: at least their mean. A light is what is far brighter than the far field around it, and a bright
-// region that fills much of a tile is that far field, not a light: over the dimmest pixel alone, a sky above white
-// behind dark branches gave its light to the quadrants' discs wherever a branch darkened the tile, and each disc,
-// drawn behind the branch and hidden by it whole or not at all, left the branch's veil up to half as bright as the
-// thin lens's, with steps at the quadrants' borders (docs/quality.md, far-branches). Over the mean a light needs
-// twice the tile's mean luminance, which a region covering half of it never has; a light of a few pixels raises the
-// mean by its light over the tile's 324 pixels, and keeps nearly all of it above the floor.
-FFX_DOF_INLINE FfxFloat32 ffxDofFarHighlightFloor(FfxFloat32 dimmestFar, FfxFloat32x2 farLuminanceSum)
+FFX_DOF_INLINE FfxFloat32 ffxDofDecodeHighlightFloor(FfxUInt32 code)
 {
-    return farLuminanceSum.y > 0.0f ? max(dimmestFar, farLuminanceSum.x / farLuminanceSum.y) : dimmestFar;
+    FfxUInt32 exponent = code >> 5u;
+    if (exponent == 31u)
+        return FFX_DOF_HIGHLIGHT_NO_FLOOR;
+    return exponent == 0u ? 0.0f : ffxDofAsFloat(((exponent + 112u) << 23u) | ((code & 31u) << 18u));
+}
+// (far floor, near floor, far surround) to their word and back.
+FFX_DOF_INLINE FfxUInt32 ffxDofPackHighlightFloors(FfxFloat32x3 floors)
+{
+    return ffxDofEncodeHighlightFloor(floors.x) | (ffxDofEncodeHighlightFloor(floors.y) << 10u) |
+           (ffxDofEncodeHighlightFloor(floors.z) << 20u);
+}
+FFX_DOF_INLINE FfxFloat32x3 ffxDofUnpackHighlightFloors(FfxUInt32 word)
+{
+    return FfxFloat32x3(ffxDofDecodeHighlightFloor(word & FFX_DOF_HIGHLIGHT_FLOOR_MASK),
+                        ffxDofDecodeHighlightFloor((word >> 10u) & FFX_DOF_HIGHLIGHT_FLOOR_MASK),
+                        ffxDofDecodeHighlightFloor((word >> 20u) & FFX_DOF_HIGHLIGHT_FLOOR_MASK));
+}
+// The mean of the far luminances (sum, count) of a tile and its border, or 0 without any: the far surround.
+FFX_DOF_INLINE FfxFloat32 ffxDofFarSurround(FfxFloat32x2 farLuminanceSum)
+{
+    return farLuminanceSum.y > 0.0f ? farLuminanceSum.x / farLuminanceSum.y : 0.0f;
 }
 
 // The word of a tile whose pixels give no light (ffxDofTileMayHoldHighlights false).
 FFX_DOF_INLINE FfxUInt32 ffxDofNoHighlightFloors()
 {
-    return ffxDofPackHighlightFloors(FfxFloat32x2(FFX_DOF_HIGHLIGHT_NO_FLOOR, FFX_DOF_HIGHLIGHT_NO_FLOOR));
+    return ffxDofPackHighlightFloors(
+        FfxFloat32x3(FFX_DOF_HIGHLIGHT_NO_FLOOR, FFX_DOF_HIGHLIGHT_NO_FLOOR, FFX_DOF_HIGHLIGHT_NO_FLOOR));
 }
-// The floor a pixel of radius `coc` stands on.
-FFX_DOF_INLINE FfxFloat32 ffxDofHighlightFloor(FfxFloat32x2 farNearFloors, FfxFloat32 coc)
+// The floor and surround a pixel of radius `coc` stands on and among.
+FFX_DOF_INLINE FfxFloat32x2 ffxDofHighlightFloor(FfxFloat32x3 floors, FfxFloat32 coc)
 {
-    return coc > 0.0f ? farNearFloors.y : farNearFloors.x;
+    return coc > 0.0f ? FfxFloat32x2(floors.y, floors.y) : FfxFloat32x2(floors.x, floors.z);
 }
 
 // Whether the image's edge cuts the quad of full-res pixel `pixel`: such a quad repeats its edge pixels, which
@@ -130,17 +170,17 @@ FFX_DOF_INLINE FfxBoolean ffxDofQuadCutByEdge(FfxUInt32x2 pixel, FfxUInt32x2 ful
 }
 
 // ffxDofHighlightShare of full-res pixel `pixel` of scaled colour `color` and radius `coc` (half-res px) in a
-// tile of floors `farNearFloors`, as pass 2 takes it (but for the radius: pass 2 gives a light's anti-aliased
-// rim pixels the light's radius, ffxDofLightRimCocInQuad, which needs their neighbours; the two differ only
-// where one of the radii lies below FFX_DOF_HIGHLIGHT_FULL_RADIUS): none where the image's edge cuts the
-// pixel's quad (its edge pixels repeated stay in the layers). What the composite's full-resolution gathers
-// leave of a pixel's light, the rest being drawn as a highlight.
+// tile of floors `floors` (ffxDofUnpackHighlightFloors), as pass 2 takes it (but for the radius: pass 2 gives a light's
+// anti-aliased rim pixels the light's radius, ffxDofLightRimCocInQuad, which needs their neighbours; the two differ
+// only where one of the radii lies below FFX_DOF_HIGHLIGHT_FULL_RADIUS): none where the image's edge cuts the pixel's
+// quad (its edge pixels repeated stay in the layers). What the composite's full-resolution gathers leave of a pixel's
+// light, the rest being drawn as a highlight.
 FFX_DOF_INLINE FfxFloat32 ffxDofPixelHighlightShare(FfxUInt32x2 pixel, FfxFloat32x3 color, FfxFloat32 coc,
-                                                    FfxFloat32x2 farNearFloors, FfxFloat32 scale, FfxUInt32x2 fullSize)
+                                                    FfxFloat32x3 floors, FfxFloat32 scale, FfxUInt32x2 fullSize)
 {
     if (ffxDofQuadCutByEdge(pixel, fullSize))
         return 0.0f;
-    return ffxDofHighlightShare(ffxDofLuminance32(color), coc, ffxDofHighlightFloor(farNearFloors, coc), scale);
+    return ffxDofHighlightShare(ffxDofLuminance32(color), coc, ffxDofHighlightFloor(floors, coc), scale);
 }
 
 // A light of the full-resolution path: where it lies (full-res px from its tile's top-left corner), its

@@ -1034,10 +1034,10 @@ TEST_CASE("A bright near patch keeps its light, and its shape against the thin l
 TEST_CASE("A thin far object over a far field above white is blurred as over the same field below it", "[pipeline]") {
     // A dark branch 9 px wide at far radius 5.9 half-res px in front of a farther, uniform sky at radius 8; once with
     // the sky at 0.5, once with every value 4.6 times as bright (the sky at 2.3, above white). Nothing here is a
-    // light, so the effect, linear in the colour, must give the same image scaled. Until a tile's far floor took its
-    // mean (ffxDofFarHighlightFloor) the bright sky gave its light to the highlights wherever the branch darkened a
-    // tile, each quadrant's disc hidden by the branch whole or not at all: the two differed by up to 0.33 of the dim
-    // case's value (0.013 since; the half-res images round the colour).
+    // light, so the effect, linear in the colour, must give the same image scaled. Until a far pixel was judged a
+    // light against its tile's mean far luminance (ffxDofHighlightShare) the bright sky gave its light to the
+    // highlights wherever the branch darkened a tile, each quadrant's disc hidden by the branch whole or not at all:
+    // the two differed by up to 0.33 of the dim case's value (0.013 since; the half-res images round the colour).
     const uint32_t w = 160, h = 96;
     const int branchFirst = 76, branchLast = 84;
     const float gain = 4.6f;

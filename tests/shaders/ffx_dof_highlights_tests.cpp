@@ -18,6 +18,13 @@ FfxDofHighlight makeHighlight(glm::vec2 position, float radius, float spread, gl
     highlight.energy = energy;
     return highlight;
 }
+
+// ffxDofHighlightShare over a floor that is its own surround (every near pixel's, and a far pixel's on a uniform far
+// field).
+float shareOverFloor(float luminance, float coc, float floor, float scale) {
+    return ffxDofHighlightShare(luminance, coc, glm::vec2(floor, floor), scale);
+}
+
 }  // namespace
 
 TEST_CASE("RGB9E5 keeps a colour within half a step of its largest channel", "[highlights]") {
@@ -72,28 +79,27 @@ TEST_CASE("A pixel gives light above its floor, only where it is bright, far bri
           "[highlights]") {
     const float scale = 1.0f, floor = 0.05f, far = -FFX_DOF_HIGHLIGHT_FULL_RADIUS;
     // Fully past every threshold: what lies above the floor.
-    CHECK(ffxDofHighlightShare(50.0f, far, floor, scale) == Approx(1.0f - floor / 50.0f));
+    CHECK(shareOverFloor(50.0f, far, floor, scale) == Approx(1.0f - floor / 50.0f));
     // Not above white, not brighter than the floor by the contrast, not beyond the radius: nothing.
-    CHECK(ffxDofHighlightShare(FFX_DOF_HIGHLIGHT_MIN_LUMINANCE, far, 0.0f, scale) == 0.0f);
-    CHECK(ffxDofHighlightShare(FFX_DOF_HIGHLIGHT_CONTRAST * 10.0f, far, 10.0f, scale) == 0.0f);
-    CHECK(ffxDofHighlightShare(50.0f, -FFX_DOF_HIGHLIGHT_MIN_RADIUS, floor, scale) == 0.0f);
-    CHECK(ffxDofHighlightShare(50.0f, FFX_DOF_NEAR_HIGHLIGHT_MIN_RADIUS, floor, scale) == 0.0f);
-    CHECK(ffxDofHighlightShare(50.0f, FFX_DOF_NEAR_HIGHLIGHT_FULL_RADIUS, floor, scale) ==
-          Approx(1.0f - floor / 50.0f));
-    CHECK(ffxDofHighlightShare(0.0f, far, 0.0f, scale) == 0.0f);
+    CHECK(shareOverFloor(FFX_DOF_HIGHLIGHT_MIN_LUMINANCE, far, 0.0f, scale) == 0.0f);
+    CHECK(shareOverFloor(FFX_DOF_HIGHLIGHT_CONTRAST * 10.0f, far, 10.0f, scale) == 0.0f);
+    CHECK(shareOverFloor(50.0f, -FFX_DOF_HIGHLIGHT_MIN_RADIUS, floor, scale) == 0.0f);
+    CHECK(shareOverFloor(50.0f, FFX_DOF_NEAR_HIGHLIGHT_MIN_RADIUS, floor, scale) == 0.0f);
+    CHECK(shareOverFloor(50.0f, FFX_DOF_NEAR_HIGHLIGHT_FULL_RADIUS, floor, scale) == Approx(1.0f - floor / 50.0f));
+    CHECK(shareOverFloor(0.0f, far, 0.0f, scale) == 0.0f);
     // White is in the input's units: the HDR range's scale moves it with the colour.
-    CHECK(ffxDofHighlightShare(1.5f * 0.25f, far, 0.0f, 0.25f) == Approx(0.5f));
+    CHECK(shareOverFloor(1.5f * 0.25f, far, 0.0f, 0.25f) == Approx(0.5f));
     // Each ramp is continuous and rises with what it ramps.
     float previous = 0.0f;
     for (float luminance = 0.5f; luminance < 8.0f; luminance += 0.01f) {
-        const float share = ffxDofHighlightShare(luminance, far, 0.5f, scale);
+        const float share = shareOverFloor(luminance, far, 0.5f, scale);
         REQUIRE(share >= previous - 1e-6f);
         REQUIRE(share - previous <= 0.02f);
         previous = share;
     }
     previous = 0.0f;
     for (float radius = 0.0f; radius < 4.0f; radius += 0.01f) {
-        const float share = ffxDofHighlightShare(50.0f, -radius, floor, scale);
+        const float share = shareOverFloor(50.0f, -radius, floor, scale);
         REQUIRE(share >= previous - 1e-6f);
         REQUIRE(share - previous <= 0.03f);
         previous = share;
@@ -106,65 +112,91 @@ TEST_CASE("The highlights take all of a bright far pixel's light above its floor
     // gathered at full resolution): a bright point on black must leave them entirely there.
     CHECK(ffxDofOwnGatherShare(-FFX_DOF_HIGHLIGHT_FULL_RADIUS) == Approx(1.0f));
     CHECK(ffxDofOwnGatherShare(-(FFX_DOF_HIGHLIGHT_FULL_RADIUS + 0.25f)) < 1.0f);
-    CHECK(ffxDofHighlightShare(50.0f, -FFX_DOF_HIGHLIGHT_FULL_RADIUS, 0.0f, 1.0f) == Approx(1.0f));
-    CHECK(ffxDofHighlightShare(50.0f, -FFX_DOF_HIGHLIGHT_MIN_RADIUS, 0.0f, 1.0f) == 0.0f);
+    CHECK(shareOverFloor(50.0f, -FFX_DOF_HIGHLIGHT_FULL_RADIUS, 0.0f, 1.0f) == Approx(1.0f));
+    CHECK(shareOverFloor(50.0f, -FFX_DOF_HIGHLIGHT_MIN_RADIUS, 0.0f, 1.0f) == 0.0f);
 }
 
 TEST_CASE("The composite knows what pass 2 took of a pixel, but for a quad the image's edge cuts", "[highlights]") {
     const glm::uvec2 size(33u, 20u);
     const glm::vec3 light(40.0f, 60.0f, 20.0f);
     const float coc = -2.5f, floor = 0.1f, scale = 0.5f;
-    const float taken = ffxDofHighlightShare(ffxDofLuminance32(light), coc, floor, scale);
+    const float taken = shareOverFloor(ffxDofLuminance32(light), coc, floor, scale);
     REQUIRE(taken > 0.5f);
-    // The far floor (the low half) for a far pixel.
-    const glm::vec2 floors(floor, 7.0f);
+    // The far floor (the low 10 bits) for a far pixel, among its surround (the high 10 bits, here below it).
+    const glm::vec3 floors(floor, 7.0f, 0.05f);
     CHECK(ffxDofPixelHighlightShare(glm::uvec2(31u, 19u), light, coc, floors, scale, size) == taken);
     // Column 32 is the last, alone in its quad; rows 18 and 19 make the last quad row.
     CHECK(ffxDofPixelHighlightShare(glm::uvec2(32u, 4u), light, coc, floors, scale, size) == 0.0f);
     CHECK(ffxDofPixelHighlightShare(glm::uvec2(10u, 19u), light, coc, floors, scale, size) == taken);
     // The near floor for a near pixel.
     CHECK(ffxDofPixelHighlightShare(glm::uvec2(10u, 19u), light, -coc, floors, scale, size) ==
-          ffxDofHighlightShare(ffxDofLuminance32(light), -coc, floors.y, scale));
+          shareOverFloor(ffxDofLuminance32(light), -coc, floors.y, scale));
 }
 
-TEST_CASE("A far floor is at least the mean far luminance: a bright region filling half a tile gives no light",
-          "[highlights]") {
-    // A tile (with its border: 18 x 18 = 324 px) half sky at 2.3, half branch at 0.05: over the dimmest pixel the sky
-    // was a light (more than twice its floor); over the mean (1.175) it is not.
+TEST_CASE("A far pixel is a light by its far surround, and gives what it has above its floor", "[highlights]") {
+    // A tile (with its border: 18 x 18 = 324 px) half sky at 2.3, half branch at 0.05: against the dimmest pixel the
+    // sky was a light (more than twice it); against the mean (1.175) it is not.
     const float sky = 2.3f, branch = 0.05f;
-    const glm::vec2 halfAndHalf(162.0f * sky + 162.0f * branch, 324.0f);
-    const float floor = ffxDofFarHighlightFloor(branch, halfAndHalf);
-    CHECK(floor == Approx((sky + branch) * 0.5f));
-    CHECK(ffxDofHighlightShare(sky, -8.0f, branch, 1.0f) > 0.9f);
-    CHECK(ffxDofHighlightShare(sky, -8.0f, floor, 1.0f) == 0.0f);
-    // A light of 3 x 3 px at 100 on a floor of 0.05 raises the mean to 2.8: it keeps 97% of its light above it.
-    const glm::vec2 light(9.0f * 100.0f + 315.0f * 0.05f, 324.0f);
-    const float lightFloor = ffxDofFarHighlightFloor(0.05f, light);
-    CHECK(lightFloor == Approx((900.0f + 315.0f * 0.05f) / 324.0f));
-    CHECK(ffxDofHighlightShare(100.0f, -8.0f, lightFloor, 1.0f) == Approx(1.0f - lightFloor / 100.0f));
-    // The dimmest pixel where it lies above the mean (it cannot, but rounding may put it there), and no far pixel.
-    CHECK(ffxDofFarHighlightFloor(0.5f, glm::vec2(0.4f * 4.0f, 4.0f)) == 0.5f);
-    CHECK(ffxDofFarHighlightFloor(FFX_DOF_FLOAT32_MAX, glm::vec2(0.0f, 0.0f)) == FFX_DOF_FLOAT32_MAX);
+    const float surround = ffxDofFarSurround(glm::vec2(162.0f * sky + 162.0f * branch, 324.0f));
+    CHECK(surround == Approx((sky + branch) * 0.5f));
+    CHECK(shareOverFloor(sky, -8.0f, branch, 1.0f) > 0.9f);
+    CHECK(ffxDofHighlightShare(sky, -8.0f, glm::vec2(branch, surround), 1.0f) == 0.0f);
+    // A light of 3 x 3 px at 100 on 0.05 raises the mean to 2.8, far below half its light: it gives all it has
+    // above the floor, as on a uniform far field.
+    const float lightSurround = ffxDofFarSurround(glm::vec2(9.0f * 100.0f + 315.0f * 0.05f, 324.0f));
+    CHECK(lightSurround == Approx((900.0f + 315.0f * 0.05f) / 324.0f));
+    CHECK(ffxDofHighlightShare(100.0f, -8.0f, glm::vec2(0.05f, lightSurround), 1.0f) ==
+          shareOverFloor(100.0f, -8.0f, 0.05f, 1.0f));
+    // A surround below the floor (rounding may put the mean there) is the floor; no far pixel: none.
+    CHECK(ffxDofHighlightShare(3.0f, -8.0f, glm::vec2(1.0f, 0.5f), 1.0f) == shareOverFloor(3.0f, -8.0f, 1.0f, 1.0f));
+    CHECK(ffxDofFarSurround(glm::vec2(0.0f, 0.0f)) == 0.0f);
+    // A near pixel's surround is its floor.
+    CHECK(ffxDofHighlightFloor(glm::vec3(0.1f, 0.2f, 0.3f), 3.0f) == glm::vec2(0.2f, 0.2f));
+    CHECK(ffxDofHighlightFloor(glm::vec3(0.1f, 0.2f, 0.3f), -3.0f) == glm::vec2(0.1f, 0.3f));
 }
 
-TEST_CASE("A tile's two floors survive their word, and a tile without highlights gives no light", "[highlights]") {
-    // Far floor in the low half, near floor in the high half, each a half: what pass 2 takes its shares over.
-    const glm::vec2 floors(0.0371f, 2.5f);
-    const glm::vec2 back = ffxDofUnpackHighlightFloors(ffxDofPackHighlightFloors(floors));
-    CHECK(back.x == Approx(floors.x).epsilon(1.0 / 2048.0));
-    CHECK(back.y == Approx(floors.y).epsilon(1.0 / 2048.0));
+TEST_CASE("A tile's floors survive their word, and a tile without highlights gives no light", "[highlights]") {
+    // Far floor, near floor, far surround, 10 bits each (5 of exponent, 5 of mantissa, cut): what pass 2 takes its
+    // shares over, each lowered by less than one step of 1/32.
+    const glm::vec3 floors(0.0371f, 2.5f, 1300.0f);
+    const glm::vec3 back = ffxDofUnpackHighlightFloors(ffxDofPackHighlightFloors(floors));
+    for (int k = 0; k < 3; ++k) {
+        CHECK(back[k] <= floors[k]);
+        CHECK(back[k] > floors[k] * (1.0f - 1.0f / 32.0f));
+    }
     // Read back, the same word again: the composite takes pass 2's shares to the bit.
     CHECK(ffxDofPackHighlightFloors(back) == ffxDofPackHighlightFloors(floors));
-    CHECK(ffxDofHighlightFloor(back, -3.0f) == back.x);
-    CHECK(ffxDofHighlightFloor(back, 3.0f) == back.y);
-    // No far pixel (FLT_MAX) clamps to the largest half, over which no pixel of the HDR range gives light; the sign
-    // bit of the high half stays free for the composite's flag.
-    const uint32_t none = ffxDofPackHighlightFloors(glm::vec2(FFX_DOF_FLOAT32_MAX, FFX_DOF_FLOAT32_MAX));
+    CHECK(ffxDofUnpackHighlightFloors(ffxDofPackHighlightFloors(back)) == back);
+    // Every code the encoding gives (0, exponents 1 to 30, all ones) decodes to a value that encodes to it again, and
+    // the values rise with the codes; the rest (exponent 0 but code 0, exponent 31) read as their neighbours.
+    float previous = 0.0f;
+    for (uint32_t code = 0u; code <= FFX_DOF_HIGHLIGHT_FLOOR_MASK; ++code) {
+        const float value = ffxDofDecodeHighlightFloor(code);
+        const uint32_t exponent = code >> 5u;
+        if (code == 0u || (exponent >= 1u && exponent <= 30u) || code == FFX_DOF_HIGHLIGHT_FLOOR_MASK) {
+            REQUIRE(ffxDofEncodeHighlightFloor(value) == code);
+            if (code != 0u) REQUIRE(value > previous);
+            previous = value;
+        } else {
+            REQUIRE(value == (exponent == 0u ? 0.0f : FFX_DOF_HIGHLIGHT_NO_FLOOR));
+        }
+    }
+    // Below the smallest step a floor is 0, negative or NaN ones too; zero stays zero.
+    CHECK(ffxDofDecodeHighlightFloor(ffxDofEncodeHighlightFloor(FFX_DOF_HIGHLIGHT_SMALLEST_FLOOR * 0.99f)) == 0.0f);
+    CHECK(ffxDofEncodeHighlightFloor(-1.0f) == 0u);
+    CHECK(ffxDofDecodeHighlightFloor(ffxDofEncodeHighlightFloor(FFX_DOF_HIGHLIGHT_SMALLEST_FLOOR)) ==
+          FFX_DOF_HIGHLIGHT_SMALLEST_FLOOR);
+    // No pixel of a kind (FLT_MAX) is the reserved code, which reads back as FFX_DOF_HIGHLIGHT_NO_FLOOR, over which no
+    // pixel of the HDR range gives light; bits 30 and 31 stay free for the composite's flag.
+    const uint32_t none =
+        ffxDofPackHighlightFloors(glm::vec3(FFX_DOF_FLOAT32_MAX, FFX_DOF_FLOAT32_MAX, FFX_DOF_FLOAT32_MAX));
     CHECK(none == ffxDofNoHighlightFloors());
-    CHECK((none & 0x80000000u) == 0u);
-    CHECK(ffxDofUnpackHighlightFloors(none).x == FFX_DOF_HIGHLIGHT_NO_FLOOR);
-    CHECK(ffxDofHighlightShare(FFX_DOF_COLOR_RANGE_LIMIT, -5.0f, FFX_DOF_HIGHLIGHT_NO_FLOOR, 1.0f) == 0.0f);
-    CHECK(ffxDofHighlightShare(FFX_DOF_COLOR_RANGE_LIMIT, 5.0f, FFX_DOF_HIGHLIGHT_NO_FLOOR, 1.0f) == 0.0f);
+    CHECK((none & 0xc0000000u) == 0u);
+    CHECK(ffxDofUnpackHighlightFloors(none) == glm::vec3(FFX_DOF_HIGHLIGHT_NO_FLOOR));
+    CHECK(ffxDofEncodeHighlightFloor(std::nanf("")) == FFX_DOF_HIGHLIGHT_FLOOR_MASK);
+    CHECK(ffxDofDecodeHighlightFloor(ffxDofEncodeHighlightFloor(64000.0f)) < FFX_DOF_HIGHLIGHT_NO_FLOOR);
+    CHECK(shareOverFloor(FFX_DOF_COLOR_RANGE_LIMIT, -5.0f, FFX_DOF_HIGHLIGHT_NO_FLOOR, 1.0f) == 0.0f);
+    CHECK(shareOverFloor(FFX_DOF_COLOR_RANGE_LIMIT, 5.0f, FFX_DOF_HIGHLIGHT_NO_FLOOR, 1.0f) == 0.0f);
 }
 
 TEST_CASE("A highlight is near where more than half of its light is", "[highlights]") {
