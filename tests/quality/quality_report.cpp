@@ -802,6 +802,15 @@ int main(int argc, char** argv) {
               "not gone: across a leaf over a background step of 0.6 the output still steps by 0.057 where it "
               "stepped by 0.13 (tests/shaders, \"A small near object over a blurred far field leaves no edge of its "
               "silhouette\").\n\n"
+           << "far-branches (2026-12-01): dark far branches in front of a farther sky above white. A far pixel gave "
+              "its light to the full-resolution highlights where it was more than twice the dimmest far pixel of its "
+              "tile, so wherever a branch darkened a tile the sky there became \"lights\", drawn behind the branch "
+              "and hidden by it a quadrant at a time: the branch's veil came out half as bright as the truth's, with "
+              "steps. Whether a far pixel is a light is now judged against the tile's mean far luminance "
+              "(docs/technique.md, \"A bright far field is not a light\"): far-branches 32.87 -> 36.53 dB (its far "
+              "field 33.35 -> 37.99; its halo band 34.05 -> 28.69, below the gather's 29.09, where the branches pass "
+              "behind the in-focus sphere: the reason is under its figures), mid-lights 29.93 -> 29.92, bright-window "
+              "32.68 -> 32.66, every other scene unchanged (this report, and with f46cf03's shaders_common).\n\n"
            << "Pictures, left to right: input (pinhole), ffx-dof, truth, |ffx-dof - truth| x 4, circular gather. "
               "8-bit sRGB, values above 1 clipped.\n\n";
         for (const quality::SceneGate& gate : quality::sceneGates()) {
