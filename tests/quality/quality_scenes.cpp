@@ -62,7 +62,8 @@ const std::vector<SceneGate>& sceneGates() {
          "two branches cross behind the in-focus sphere. Beside it the thin lens sees the branches go on behind "
          "the sphere, which the pinhole input hides; ffx-dof fills the part of those far pixels' discs that the "
          "sphere hides with the far field it sees around them, mostly sky, and draws the veil up to 0.3 brighter "
-         "there (green 1.06 against 0.77 at (172, 120)). The circular gather mixes the sphere's own colours in and comes "
+         "there (green 1.06 against 0.77 at (172, 120)). The circular gather mixes the sphere's own colours in and "
+         "comes "
          "nearer by chance. The same limit as mid-lights' partly hidden lights: a post-process of the pinhole image "
          "cannot know what an object in focus hides"},
         {"far-steps", 21.5,
