@@ -810,7 +810,10 @@ int main(int argc, char** argv) {
               "(docs/technique.md, \"A bright far field is not a light\"): far-branches 32.87 -> 36.53 dB (its far "
               "field 33.35 -> 37.99; its halo band 34.05 -> 28.69, below the gather's 29.09, where the branches pass "
               "behind the in-focus sphere: the reason is under its figures), mid-lights 29.93 -> 29.92, bright-window "
-              "32.68 -> 32.66, every other scene unchanged (this report, and with f46cf03's shaders_common).\n\n"
+              "32.68 -> 32.66, every other scene unchanged (this report, and with f46cf03's shaders_common). "
+              "lights-through-branches (2026-12-01) shows what the highlights' blocker test misses: a branch in front "
+              "of a light is a band across its whole disc in the thin lens, a notch where the branch lies here "
+              "(docs/technique.md, \"What hides a highlight\").\n\n"
            << "Pictures, left to right: input (pinhole), ffx-dof, truth, |ffx-dof - truth| x 4, circular gather. "
               "8-bit sRGB, values above 1 clipped.\n\n";
         for (const quality::SceneGate& gate : quality::sceneGates()) {

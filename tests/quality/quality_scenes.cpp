@@ -66,6 +66,12 @@ const std::vector<SceneGate>& sceneGates() {
          "comes "
          "nearer by chance. The same limit as mid-lights' partly hidden lights: a post-process of the pinhole image "
          "cannot know what an object in focus hides"},
+        {"lights-through-branches", 6.5,
+         "lights of 1 to 3 px far behind dark far branches. The thin lens draws a branch in front of a light as a "
+         "dark band across its whole disc, where the rays from the disc's pixels to the light pass the branch; the "
+         "composite hides a highlight only at pixels whose own surface lies in front of the light "
+         "(ffxDofHighlightBlockerPoint), so here the band is a notch where the branch itself is, and a light the "
+         "branch hides from the pinhole camera is missing (docs/technique.md, \"What hides a highlight\")"},
         {"far-steps", 21.5,
          "large far objects in front of a farther high-contrast wall: far-field content nearer than the far field "
          "around it, at the object's edges the wall's blur passes behind them"},

@@ -281,6 +281,41 @@ SceneSetup farBranches(uint32_t width, uint32_t height) {
     return setup;
 }
 
+// Lights far away seen through far branches: a light's disc crossed by a branch in front of it shows the branch's
+// blurred shadow where the thin lens's rays to the light pass the branch, and nowhere else.
+SceneSetup lightsThroughBranches(uint32_t width, uint32_t height) {
+    SceneSetup setup{"lights-through-branches",
+                     "lights of 1 to 3 px at 25 and 50 m behind dark branches at 6 m, dusk sky at 60 m, focus at 2 m",
+                     {},
+                     baseCamera(width, height, 0.05, 2.0)};
+    Camera& camera = setup.camera;
+    Scene& scene = setup.scene;
+    scene.background = {0.05f, 0.06f, 0.12f};
+    scene.addQuad({0, 0, 60}, kRight * 80.0, kUp * 60.0, noise({0.03f, 0.04f, 0.09f}, {0.12f, 0.1f, 0.2f}, 4.0f));
+    const Texture bark = noise({0.02f, 0.015f, 0.01f}, {0.06f, 0.045f, 0.03f}, 0.05f);
+    const double widths[] = {0.02, 0.04, 0.08};
+    for (int i = 0; i < 3; ++i) {
+        scene.addBox({-1.2 + 1.1 * i, 0.0, 6.0}, {widths[i] * 0.5, 3.0, 0.05}, bark);
+        scene.addBox({0.0, -0.6 + 0.6 * i, 6.1}, {3.0, widths[2 - i] * 0.5, 0.05}, bark);
+    }
+    const double halfWidth = 0.5 * camera.sensorWidth / camera.imageDistance();  // at depth 1
+    const double halfHeight = halfWidth * height / width;
+    auto atPixel = [&](double px, double py, double z) {
+        return glm::dvec3((2.0 * (std::floor(px) + 0.5) / width - 1.0) * halfWidth * z,
+                          (1.0 - 2.0 * (std::floor(py) + 0.5) / height) * halfHeight * z, z);
+    };
+    for (int i = 0; i < 14; ++i) {
+        const double z = i % 2 == 0 ? 50.0 : 25.0;
+        const double px = width * (0.08 + 0.84 * (i / 13.0)), py = height * (0.15 + 0.7 * latticeValue(i, 7));
+        const double pixels = 0.5 + 0.5 * (i % 3);
+        const float emission = i % 3 == 0 ? 500.0f : (i % 3 == 1 ? 100.0f : 30.0f);
+        scene.addEmitter(atPixel(px, py, z), emitterRadiusForPixels(camera, z, pixels), kLightColors[i % 4], emission);
+    }
+    scene.addSphere({0.35, 0.25, 2.0}, 0.08, checker({0.9f, 0.9f, 0.85f}, {0.2f, 0.3f, 0.7f}, 0.03f));
+    setApertureForBlur(camera, 60.0, std::max(8.0, 0.05 * width));
+    return setup;
+}
+
 SceneSetup farSteps(uint32_t width, uint32_t height) {
     SceneSetup setup{"far-steps",
                      "textured boxes at 4 to 8 m in front of a busy wall at 40 m, focus at 2 m",
@@ -313,6 +348,7 @@ const std::vector<SceneEntry>& sceneCatalog() {
         {"near-and-far", nearAndFar},
         {"far-branches", farBranches},
         {"far-steps", farSteps},
+        {"lights-through-branches", lightsThroughBranches},
         {"point", singlePoint},
     };
     return catalog;
