@@ -66,6 +66,20 @@ double emitterRadiusForPixels(const Camera& camera, double viewDepth, double pix
     return pixels / camera.pixelsPerSensorUnit() * viewDepth / camera.imageDistance();
 }
 
+// The point at view depth Z that the pinhole camera sees at the centre of pixel (px, py) (each rounded down to its
+// pixel). An emitter placed there is in the depth buffer, which is traced through pixel centres only: between
+// them a light would be missing from it (blurred with the background's radius), a mismatch of the input, not of
+// the effect.
+// Half the width the pinhole camera sees at view depth 1.
+double halfWidthAtUnitDepth(const Camera& camera) { return 0.5 * camera.sensorWidth / camera.imageDistance(); }
+
+glm::dvec3 pixelCentreAt(const Camera& camera, double px, double py, double z) {
+    const double halfWidth = halfWidthAtUnitDepth(camera);
+    const double halfHeight = halfWidth * camera.height / camera.width;
+    return glm::dvec3((2.0 * (std::floor(px) + 0.5) / camera.width - 1.0) * halfWidth * z,
+                      (1.0 - 2.0 * (std::floor(py) + 0.5) / camera.height) * halfHeight * z, z);
+}
+
 const glm::dvec3 kRight{1, 0, 0}, kUp{0, 1, 0}, kForward{0, 0, 1};
 // The tints of the highlight scenes' lights (warm, cool, red, green), cycled.
 const glm::vec3 kLightColors[] = {{1.0f, 0.8f, 0.5f}, {0.6f, 0.8f, 1.0f}, {1.0f, 0.4f, 0.3f}, {0.7f, 1.0f, 0.6f}};
@@ -124,30 +138,23 @@ SceneSetup midLights(uint32_t width, uint32_t height) {
     scene.addBox({0.12, -0.05, 2.0}, {0.08, 0.12, 0.05}, checker({0.9f, 0.85f, 0.8f}, {0.2f, 0.3f, 0.5f}, 0.04f));
     // Depths give radii of about 3 to 27 px against the background's 30 (the aperture below); the
     // lights' pinhole radii are 0.5 to 2 px, their values up to 1000. Each light is centred on a pixel
-    // centre: the pinhole depth is traced through pixel centres only, so a light between them would be
-    // missing from the depth buffer (blurred with the background's radius), a mismatch of the input,
-    // not of the effect.
+    // centre (pixelCentreAt).
     const double depths[] = {2.2, 2.6, 3.5, 5.0, 8.0, 15.0};
-    const double halfWidth = 0.5 * camera.sensorWidth / camera.imageDistance();  // at depth 1
-    const double halfHeight = halfWidth * height / width;
-    auto atPixel = [&](double px, double py, double z) {
-        return glm::dvec3((2.0 * (std::floor(px) + 0.5) / width - 1.0) * halfWidth * z,
-                          (1.0 - 2.0 * (std::floor(py) + 0.5) / height) * halfHeight * z, z);
-    };
     for (int i = 0; i < 12; ++i) {
         const double z = depths[i % 6];
         const double px = width * (0.1 + 0.8 * (i / 11.0)), py = height * (0.2 + 0.6 * latticeValue(i, 3));
         const double pixels = 0.5 + 0.5 * (i % 4);
         const float emission = i % 3 == 0 ? 1000.0f : (i % 3 == 1 ? 200.0f : 40.0f);
-        scene.addEmitter(atPixel(px, py, z), emitterRadiusForPixels(camera, z, pixels), kLightColors[i % 4], emission);
+        scene.addEmitter(pixelCentreAt(camera, px, py, z), emitterRadiusForPixels(camera, z, pixels),
+                         kLightColors[i % 4], emission);
     }
     // Two lights whose discs are partly hidden by the box: centred on the pixel just right of its
     // right edge, 1.5 px wide, one at 3 m and one at 10 m.
-    const double edgePixel = (0.20 / (halfWidth * 1.95) + 1.0) * 0.5 * width;
-    scene.addEmitter(atPixel(edgePixel + 1.0, 0.5 * height, 3.0), emitterRadiusForPixels(camera, 3.0, 1.5),
-                     kLightColors[0], 300.0f);
-    scene.addEmitter(atPixel(edgePixel + 1.0, 0.6 * height, 10.0), emitterRadiusForPixels(camera, 10.0, 1.5),
-                     kLightColors[1], 300.0f);
+    const double edgePixel = (0.20 / (halfWidthAtUnitDepth(camera) * 1.95) + 1.0) * 0.5 * width;
+    scene.addEmitter(pixelCentreAt(camera, edgePixel + 1.0, 0.5 * height, 3.0),
+                     emitterRadiusForPixels(camera, 3.0, 1.5), kLightColors[0], 300.0f);
+    scene.addEmitter(pixelCentreAt(camera, edgePixel + 1.0, 0.6 * height, 10.0),
+                     emitterRadiusForPixels(camera, 10.0, 1.5), kLightColors[1], 300.0f);
     setApertureForBlur(camera, 40.0, std::max(8.0, 0.09 * width));
     return setup;
 }
@@ -298,18 +305,13 @@ SceneSetup lightsThroughBranches(uint32_t width, uint32_t height) {
         scene.addBox({-1.2 + 1.1 * i, 0.0, 6.0}, {widths[i] * 0.5, 3.0, 0.05}, bark);
         scene.addBox({0.0, -0.6 + 0.6 * i, 6.1}, {3.0, widths[2 - i] * 0.5, 0.05}, bark);
     }
-    const double halfWidth = 0.5 * camera.sensorWidth / camera.imageDistance();  // at depth 1
-    const double halfHeight = halfWidth * height / width;
-    auto atPixel = [&](double px, double py, double z) {
-        return glm::dvec3((2.0 * (std::floor(px) + 0.5) / width - 1.0) * halfWidth * z,
-                          (1.0 - 2.0 * (std::floor(py) + 0.5) / height) * halfHeight * z, z);
-    };
     for (int i = 0; i < 14; ++i) {
         const double z = i % 2 == 0 ? 50.0 : 25.0;
         const double px = width * (0.08 + 0.84 * (i / 13.0)), py = height * (0.15 + 0.7 * latticeValue(i, 7));
         const double pixels = 0.5 + 0.5 * (i % 3);
         const float emission = i % 3 == 0 ? 500.0f : (i % 3 == 1 ? 100.0f : 30.0f);
-        scene.addEmitter(atPixel(px, py, z), emitterRadiusForPixels(camera, z, pixels), kLightColors[i % 4], emission);
+        scene.addEmitter(pixelCentreAt(camera, px, py, z), emitterRadiusForPixels(camera, z, pixels),
+                         kLightColors[i % 4], emission);
     }
     scene.addSphere({0.35, 0.25, 2.0}, 0.08, checker({0.9f, 0.9f, 0.85f}, {0.2f, 0.3f, 0.7f}, 0.03f));
     setApertureForBlur(camera, 60.0, std::max(8.0, 0.05 * width));
