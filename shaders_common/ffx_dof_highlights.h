@@ -109,7 +109,7 @@ FFX_DOF_INLINE FfxFloat32 ffxDofHighlightShare(FfxFloat32 luminance, FfxFloat32 
 // FFX_DOF_COLOR_RANGE_LIMIT): none of that kind there.
 #define FFX_DOF_HIGHLIGHT_NO_FLOOR 65504.0f
 // A floor in 10 bits: an unsigned float of 5 exponent and 5 mantissa bits (as B10G11R11's blue), its mantissa cut
-// (a floor lowered by at most 3%); below 2^-14 it is 0, and FFX_DOF_HIGHLIGHT_NO_FLOOR and above take the code
+// (a floor lowered by less than 1/32); below 2^-14 it is 0, and FFX_DOF_HIGHLIGHT_NO_FLOOR and above take the code
 // of all ones (every code of exponent 31 reads as FFX_DOF_HIGHLIGHT_NO_FLOOR). Decoded from its bits alone: no rounding
 // of any device's arithmetic in between.
 #define FFX_DOF_HIGHLIGHT_FLOOR_BITS 10u
@@ -135,14 +135,16 @@ FFX_DOF_INLINE FfxFloat32 ffxDofDecodeHighlightFloor(FfxUInt32 code)
 // (far floor, near floor, far surround) to their word and back.
 FFX_DOF_INLINE FfxUInt32 ffxDofPackHighlightFloors(FfxFloat32x3 floors)
 {
-    return ffxDofEncodeHighlightFloor(floors.x) | (ffxDofEncodeHighlightFloor(floors.y) << 10u) |
-           (ffxDofEncodeHighlightFloor(floors.z) << 20u);
+    return ffxDofEncodeHighlightFloor(floors.x) |
+           (ffxDofEncodeHighlightFloor(floors.y) << FFX_DOF_HIGHLIGHT_FLOOR_BITS) |
+           (ffxDofEncodeHighlightFloor(floors.z) << (2u * FFX_DOF_HIGHLIGHT_FLOOR_BITS));
 }
 FFX_DOF_INLINE FfxFloat32x3 ffxDofUnpackHighlightFloors(FfxUInt32 word)
 {
-    return FfxFloat32x3(ffxDofDecodeHighlightFloor(word & FFX_DOF_HIGHLIGHT_FLOOR_MASK),
-                        ffxDofDecodeHighlightFloor((word >> 10u) & FFX_DOF_HIGHLIGHT_FLOOR_MASK),
-                        ffxDofDecodeHighlightFloor((word >> 20u) & FFX_DOF_HIGHLIGHT_FLOOR_MASK));
+    return FfxFloat32x3(
+        ffxDofDecodeHighlightFloor(word & FFX_DOF_HIGHLIGHT_FLOOR_MASK),
+        ffxDofDecodeHighlightFloor((word >> FFX_DOF_HIGHLIGHT_FLOOR_BITS) & FFX_DOF_HIGHLIGHT_FLOOR_MASK),
+        ffxDofDecodeHighlightFloor((word >> (2u * FFX_DOF_HIGHLIGHT_FLOOR_BITS)) & FFX_DOF_HIGHLIGHT_FLOOR_MASK));
 }
 // The mean of the far luminances (sum, count) of a tile and its border, or 0 without any: the far surround.
 FFX_DOF_INLINE FfxFloat32 ffxDofFarSurround(FfxFloat32x2 farLuminanceSum)
