@@ -292,22 +292,17 @@ FFX_DOF_INLINE FfxFloat32 ffxDofCoarserMipForSpacing(FfxFloat32 spacing)
     return clamp(ceil(log2(max(spacing, 1.0f))), 0.0f, FfxFloat32(FFX_DOF_OPTION_MAX_MIP - 1));
 }
 
-// Largest colour channel (input units) in the 3 x 3 tiles around a texel up to which its kernel may take
-// the coarser MIP. Small bright lights want the finer texels: with every far kernel at the coarser MIP a
-// scene of small lights (mid-lights at 960x540) lost 4.9 dB, 1.8 dB with far-only tiles alone.
-#define FFX_DOF_COARSER_MIP_MAX_PEAK 1.0f
-
 // Whether a texel's kernel reads the coarser MIP (ffxDofCoarserMipForSpacing) rather than the nearest
 // (ffxDofMipForSpacing): a far texel in a tile that no near-field radius reaches (`dilated`: its tile's
 // DILATED_TILES texel; near objects, thin ones too, keep the finer texels: a 2 px bar at radius 24
-// doubled its veil from the coarser ones), no channel above FFX_DOF_COARSER_MIP_MAX_PEAK in the 3 x 3
-// tiles around it (`peakAround`), and everything the kernel reads, its walk beyond the kernel included,
+// doubled its veil from the coarser ones), no light in the 3 x 3 tiles around it (`lightsAround`: bright small
+// sources or highlights, FFX_DOF_LISTED_TILE_*), and everything the kernel reads, its walk beyond the kernel included,
 // inside the image with a margin of a texel of the coarser MIP and one of its merged rings' MIP (the
 // image continued by copies of its edge texels, and a MIP whose size was rounded down that misses the
 // last rows, extrapolate coarser there: busy-background's bottom 16 rows lost 2.6 dB).
 FFX_DOF_INLINE FfxBoolean ffxDofKernelTakesCoarserMip(FfxFloat32x2 center, FfxFloat32 centerCoc,
                                                       FfxFloat32 kernelRadius, FfxFloat32x4 dilated,
-                                                      FfxFloat32 peakAround, FfxFloat32 coarserMip,
+                                                      FfxBoolean lightsAround, FfxFloat32 coarserMip,
                                                       FfxDofConstants constants)
 {
     FfxFloat32 texel = exp2(coarserMip);
@@ -319,8 +314,8 @@ FFX_DOF_INLINE FfxBoolean ffxDofKernelTakesCoarserMip(FfxFloat32x2 center, FfxFl
     // the kernel's MIP, and from the coarser one a triangle's point over a sloped far field kept 0.957 of
     // its energy (the CPU test "A shaped far point through the passes" asks 0.97).
     FfxBoolean round = FFX_DOF_OPTION_APERTURE_SHAPES == 0;
-    return round && centerCoc <= -FFX_DOF_IN_FOCUS_RADIUS && dilated.y < FFX_DOF_NEAR_THRESHOLD &&
-           peakAround <= FFX_DOF_COARSER_MIP_MAX_PEAK && inside;
+    return round && centerCoc <= -FFX_DOF_IN_FOCUS_RADIUS && dilated.y < FFX_DOF_NEAR_THRESHOLD && !lightsAround &&
+           inside;
 }
 
 // Random sub-pixel kernel origin for one pixel and frame, in half-res px.
@@ -513,7 +508,7 @@ struct FfxDofKernel
     FfxBoolean centerIsNear;
     FfxDofPixelAperture aperture;  // the bokeh shape this texel sees
     FfxFloat32 ownGatherShare;     // ffxDofOwnGatherShare of the texel's own radius, where the tile draws
-                                   // small sources at full resolution (ffxDofSurveyTilesAround), else 0
+                                   // small sources at full resolution (FFX_DOF_LISTED_TILE_SMALL_SOURCES), else 0
     FfxFloat32 smallSourceCut;     // 1 where ffxDofSmallSourceShare leaves small sources out, else 0
 };
 
@@ -1063,10 +1058,11 @@ FFX_DOF_INLINE FfxDofGatherParts ffxDofBlurClassParts(FfxUInt32 blurClass, FfxBo
     return ffxDofMakeGatherParts(true, true, false, shaped);
 }
 
-// The blur of one half-res texel; `dilated` is its tile's DILATED_TILES texel from pass 3, `blurClass`
-// the path (ffxDofBlurTileClass; the CPU tests also force the mixed path to compare).
-FFX_DOF_INLINE FfxDofBlurResult ffxDofBlurTexel(FfxUInt32x2 texel, FfxFloat32x4 dilated, FfxUInt32 blurClass,
-                                                FfxDofConstants constants)
+// The blur of one half-res texel; `dilated` is its tile's DILATED_TILES texel from pass 3, `tileFlags` what dilate
+// listed with the tile (FFX_DOF_LISTED_TILE_*), `blurClass` the path (ffxDofBlurTileClass; the CPU tests also force
+// the mixed path to compare).
+FFX_DOF_INLINE FfxDofBlurResult ffxDofBlurTexel(FfxUInt32x2 texel, FfxFloat32x4 dilated, FfxUInt32 tileFlags,
+                                                FfxUInt32 blurClass, FfxDofConstants constants)
 {
     FfxDofBlurResult result;
     result.nearColor = FfxDofFloat3(0.0f, 0.0f, 0.0f);
@@ -1088,11 +1084,10 @@ FFX_DOF_INLINE FfxDofBlurResult ffxDofBlurTexel(FfxUInt32x2 texel, FfxFloat32x4 
     kernel.centerIsNear = kernel.centerCoc >= FFX_DOF_NEAR_THRESHOLD;
     kernel.spacing = kernelRadius / FfxFloat32(kernel.rings);
     kernel.center = FfxFloat32x2(texel) + FfxFloat32x2(0.5f, 0.5f);
-    FfxDofTilesAround around = ffxDofSurveyTilesAround(texel / FfxUInt32(FFX_DOF_TILE_SIZE), constants.tileCount);
     FfxFloat32 mipSpacing = kernel.spacing * ffxDofApertureRingSpacingScale(constants);
     FfxFloat32 coarserMip = ffxDofCoarserMipForSpacing(mipSpacing);
     kernel.baseMip = FfxUInt32(ffxDofKernelTakesCoarserMip(kernel.center, kernel.centerCoc, kernelRadius, dilated,
-                                                           around.peak, coarserMip, constants)
+                                                           tileFlags != 0u, coarserMip, constants)
                                    ? coarserMip
                                    : ffxDofMipForSpacing(mipSpacing));
     kernel.mergeResolved = ffxDofMergedRingsResolve(dilated, kernel.baseMip);
@@ -1109,7 +1104,8 @@ FFX_DOF_INLINE FfxDofBlurResult ffxDofBlurTexel(FfxUInt32x2 texel, FfxFloat32x4 
     kernel.aperture = ffxDofRoundAperture();
     kernel.origin = kernel.center + ffxDofKernelJitter(texel, constants.frameIndex);
     // Near texels have no layer in front of their own surface to leave small sources out of.
-    FfxBoolean drawsSmallSources = !kernel.centerIsNear && around.drawsSmallSources;
+    FfxBoolean drawsSmallSources =
+        !kernel.centerIsNear && (tileFlags & FfxUInt32(FFX_DOF_LISTED_TILE_SMALL_SOURCES)) != 0u;
     kernel.ownGatherShare = drawsSmallSources ? ffxDofOwnGatherShare(kernel.centerCoc) : 0.0f;
     kernel.smallSourceCut = drawsSmallSources ? 1.0f : 0.0f;
 
@@ -1151,10 +1147,11 @@ FFX_DOF_INLINE FfxDofBlurResult ffxDofBlurTexel(FfxUInt32x2 texel, FfxFloat32x4 
     return ffxDofFinishGather(gather, kernel, parts, ownAreaWeight, result);
 }
 
-// Blurs tile `tile` on the path of `blurClass` (FFX_DOF_BLUR_CLASS_*); `dilated` is its DILATED_TILES texel.
-FFX_DOF_INLINE void ffxDofBlurTile(FfxUInt32x2 tile, FfxUInt32 localIndex, FfxFloat32x4 dilated, FfxUInt32 blurClass)
+// Blurs the tile of list entry `listedTile` (ffxDofPackListedTile) on the path of `blurClass` (FFX_DOF_BLUR_CLASS_*).
+FFX_DOF_INLINE void ffxDofBlurTile(FfxUInt32 listedTile, FfxUInt32 localIndex, FfxUInt32 blurClass)
 {
     FfxDofConstants constants = ffxDofGetConstants();
+    FfxUInt32x2 tile = ffxDofUnpackListedTile(listedTile);
     // Dilate has read the global radius; the next dispatch's pass 1 needs it at 0. The workgroup of tile
     // (0, 0) resets it: every tile is in one list, and any list may be empty.
     if (tile.x == 0u && tile.y == 0u && localIndex == 0u)
@@ -1162,7 +1159,8 @@ FFX_DOF_INLINE void ffxDofBlurTile(FfxUInt32x2 tile, FfxUInt32 localIndex, FfxFl
     FfxUInt32x2 texel = tile * FfxUInt32(FFX_DOF_TILE_SIZE) + ffxDofLocalCoord(localIndex);
     if (texel.x >= constants.halfSize.x || texel.y >= constants.halfSize.y)
         return;
-    FfxDofBlurResult result = ffxDofBlurTexel(texel, dilated, blurClass, constants);
+    FfxDofBlurResult result =
+        ffxDofBlurTexel(texel, ffxDofLoadDilatedTile(tile), ffxDofListedTileFlags(listedTile), blurClass, constants);
     ffxDofStoreNearColor(texel, ffxDofRoundForPackedColor(result.nearColor));
     ffxDofStoreFarColor(texel, ffxDofRoundForPackedColor(result.farColor));
     ffxDofStoreLayerAlpha(texel, result.alpha);
@@ -1173,9 +1171,9 @@ FFX_DOF_INLINE void ffxDofBlurTile(FfxUInt32x2 tile, FfxUInt32 localIndex, FfxFl
 FFX_DOF_INLINE void ffxDofBlur(FfxUInt32 blurClass, FfxUInt32 listIndex, FfxUInt32 localIndex)
 {
     FfxUInt32x2 tileCount = ffxDofGetConstants().tileCount;
-    FfxUInt32x2 tile =
-        ffxDofListedTile(FfxUInt32(FFX_DOF_BLUR_TILE_LIST_FIRST) + blurClass, listIndex, tileCount.x * tileCount.y);
-    ffxDofBlurTile(tile, localIndex, ffxDofLoadDilatedTile(tile), blurClass);
+    ffxDofBlurTile(
+        ffxDofListedTileWord(FfxUInt32(FFX_DOF_BLUR_TILE_LIST_FIRST) + blurClass, listIndex, tileCount.x * tileCount.y),
+        localIndex, blurClass);
 }
 
 #endif  // FFX_DOF_BLUR_H

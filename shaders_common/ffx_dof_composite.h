@@ -55,7 +55,6 @@ FfxDofFloat3 ffxDofLoadFarColor(FfxInt32x2 texel);
 FfxFloat32x2 ffxDofLoadLayerAlpha(FfxInt32x2 texel);
 void ffxDofStoreOutput(FfxUInt32x2 pixel, FfxFloat32x4 color);
 FfxFloat32 ffxDofLoadColorScale();
-FfxUInt32 ffxDofLoadHighlightWord(FfxUInt32 word);
 #endif
 
 // ---- Tuning constants -------------------------------------------------------------------------------
@@ -198,10 +197,10 @@ FFX_DOF_GROUPSHARED FfxDofFloat3 ffxDofSharedNear[FFX_DOF_FILTERED_SIDE * FFX_DO
 FFX_DOF_GROUPSHARED FfxDofFloat3 ffxDofSharedFar[FFX_DOF_FILTERED_SIDE * FFX_DOF_FILTERED_SIDE];
 FFX_DOF_GROUPSHARED FfxFloat32x2 ffxDofSharedAlpha[FFX_DOF_FILTERED_SIDE * FFX_DOF_FILTERED_SIDE];
 FFX_DOF_GROUPSHARED FfxFloat32 ffxDofSharedCoc[FFX_DOF_FILTERED_SIDE * FFX_DOF_FILTERED_SIDE];
-// Per tile of the 9 around the group's (ffxDofTileAround): its highlights' floors (ffxDofPackHighlightFloors, whose
-// bit 31 is free: ffxDofNoHighlightFloors for a tile that cannot hold highlights,
-// ffxDofTileMayHoldHighlights) and, in bit 31, whether it may hold bright small sources (ffxDofSurveyTilesAround
-// with one load per invocation instead of nine per invocation).
+// Per tile of the 9 around the group's (ffxDofTileAround): its highlights' floors (ffxDofLoadGivenHighlightFloors,
+// whose bit 31 is free: ffxDofNoHighlightFloors for a tile whose pixels gave no light) and, in bit 31, whether it may
+// hold bright small sources (ffxDofTileMayHoldBrightSmallSources; dilate's survey of the same tiles decided the
+// tile's class).
 FFX_DOF_GROUPSHARED FfxUInt32 ffxDofSharedTilesAround[9];
 #define FFX_DOF_TILE_AROUND_SMALL_SOURCES_BIT 0x80000000u
 // Which tiles of the highlights' window hold one (ffxDofTileHoldsHighlights), a bit each in window order, and
@@ -683,15 +682,10 @@ FFX_DOF_INLINE FfxBoolean ffxDofPixelGathersOwnSurface(FfxBoolean ownSurfaceTile
 
 // ---- Far highlights ----------------------------------------------------------------------------------
 
-// Whether `tile` holds a highlight (in any of its quadrants' slots).
+// Whether `tile` holds a highlight (in any of its quadrants' slots): its pixels gave light.
 FFX_DOF_INLINE FfxBoolean ffxDofTileHoldsHighlights(FfxUInt32x2 tile, FfxUInt32x2 tileCount)
 {
-    FfxUInt32 word = ffxDofHighlightWord(tile, 0u, tileCount);
-    FfxUInt32 energies = 0u;
-    FFX_DOF_UNROLL
-    for (FfxUInt32 slot = 0u; slot < FfxUInt32(FFX_DOF_HIGHLIGHT_SLOTS); ++slot)
-        energies |= ffxDofLoadHighlightWord(word + slot * FfxUInt32(FFX_DOF_HIGHLIGHT_WORDS));
-    return energies != 0u;
+    return ffxDofHighlightFloorsGaveLight(ffxDofLoadHighlightWord(ffxDofHighlightFloorWord(tile, tileCount)));
 }
 
 // The window of tiles whose highlights may reach a pixel of `tile` (ffxDofHighlightTileRange), clipped to the
@@ -948,8 +942,9 @@ FFX_DOF_INLINE FfxBoolean ffxDofComposePixel(FfxDofUpsampleTaps taps, FfxFloat32
 FFX_DOF_INLINE void ffxDofComposite(FfxUInt32 compositeClass, FfxUInt32 listIndex, FfxUInt32 localIndex)
 {
     FfxDofConstants constants = ffxDofGetFocusedConstants();
-    FfxUInt32x2 groupId = ffxDofListedTile(FfxUInt32(FFX_DOF_COMPOSITE_TILE_LIST_FIRST) + compositeClass, listIndex,
-                                           constants.tileCount.x * constants.tileCount.y);
+    FfxUInt32x2 groupId =
+        ffxDofUnpackListedTile(ffxDofListedTileWord(FfxUInt32(FFX_DOF_COMPOSITE_TILE_LIST_FIRST) + compositeClass,
+                                                    listIndex, constants.tileCount.x * constants.tileCount.y));
     FfxUInt32 extent = FfxUInt32(FFX_DOF_COMPOSITE_GROUP_EXTENT);
     FfxUInt32x2 quad = groupId * extent + ffxDofLocalCoord(localIndex) * 2u;
     if (compositeClass == FfxUInt32(FFX_DOF_COMPOSITE_CLASS_COPY))
@@ -989,9 +984,7 @@ FFX_DOF_INLINE void ffxDofComposite(FfxUInt32 compositeClass, FfxUInt32 listInde
     {
         FfxUInt32x2 around = ffxDofTileAround(groupId, localIndex, constants.tileCount);
         FfxFloat32x3 rangeAndPeak = ffxDofLoadTileRangeAndPeak(around);
-        FfxUInt32 tileFloors = ffxDofTileMayHoldHighlights(rangeAndPeak)
-                                   ? ffxDofLoadHighlightWord(ffxDofHighlightFloorWord(around, constants.tileCount))
-                                   : ffxDofNoHighlightFloors();
+        FfxUInt32 tileFloors = ffxDofLoadGivenHighlightFloors(around, rangeAndPeak, constants.tileCount);
         ffxDofSharedTilesAround[localIndex] =
             (tileFloors & ~FFX_DOF_TILE_AROUND_SMALL_SOURCES_BIT) |
             (ffxDofTileMayHoldBrightSmallSources(rangeAndPeak) ? FFX_DOF_TILE_AROUND_SMALL_SOURCES_BIT : 0u);

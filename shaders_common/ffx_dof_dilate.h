@@ -74,7 +74,7 @@ FFX_DOF_INLINE FfxFloat32 ffxDofKernelFootprintRadius(FfxFloat32 kernelRadius, F
 
 // The dilated (far, near) range of `centerTile` given the radius every tile spreads.
 // `extent` (ffxDofApertureExtent): how far a disc reaches over its radius. `reachedByHighlights`: whether the
-// near or far discs of a tile that may hold highlights (ffxDofTileMayHoldHighlights) reach it.
+// near or far discs of a tile whose pixels gave light to the highlights (ffxDofLoadGivenHighlightFloors) reach it.
 FFX_DOF_INLINE FfxFloat32x2 ffxDofDilateTile(FfxUInt32x2 centerTile, FfxUInt32x2 tileCount, FfxFloat32 globalMaxRadius,
                                              FfxFloat32 extent, FFX_DOF_OUT(FfxBoolean) reachedByHighlights)
 {
@@ -94,16 +94,15 @@ FFX_DOF_INLINE FfxFloat32x2 ffxDofDilateTile(FfxUInt32x2 centerTile, FfxUInt32x2
         {
             FfxFloat32x3 tile = ffxDofLoadTileRangeAndPeak(FfxUInt32x2(FfxUInt32(x), FfxUInt32(y)));
             FfxFloat32 distance = ffxDofTileGapDistance(FfxInt32x2(x, y) - center);
-            if (ffxDofTileReaches(-tile.x * extent, distance))
-            {
+            FfxBoolean farReaches = ffxDofTileReaches(-tile.x * extent, distance);
+            FfxBoolean nearReaches = ffxDofTileReaches(tile.y * extent, distance);
+            if (farReaches)
                 farCoc = min(farCoc, tile.x);
-                reachedByHighlights = reachedByHighlights || ffxDofTileMayHoldHighlights(tile);
-            }
-            if (ffxDofTileReaches(tile.y * extent, distance))
-            {
+            if (nearReaches)
                 nearCoc = max(nearCoc, tile.y);
-                reachedByHighlights = reachedByHighlights || ffxDofTileMayHoldHighlights(tile);
-            }
+            if ((farReaches || nearReaches) && !reachedByHighlights)
+                reachedByHighlights = ffxDofHighlightFloorsGaveLight(
+                    ffxDofLoadGivenHighlightFloors(FfxUInt32x2(FfxUInt32(x), FfxUInt32(y)), tile, tileCount));
         }
     }
     return FfxFloat32x2(farCoc, nearCoc);
@@ -148,6 +147,24 @@ FFX_DOF_INLINE FfxUInt32x2 ffxDofDilateBlock(FfxUInt32x2 groupId, FfxUInt32x2 ti
     return FfxUInt32x2(transposed % blocks.x, transposed / blocks.x);
 }
 
+// What the blur needs to know of the 3 x 3 tiles around `tile` (FFX_DOF_LISTED_TILE_*: a source or a highlight's
+// light reaches at most 2 FFX_DOF_FAR_LAYER_ONLY_RADIUS + 0.5 full-res px beyond its pixel, less than a tile).
+FFX_DOF_INLINE FfxUInt32 ffxDofSurveyTilesAround(FfxUInt32x2 tile, FfxUInt32x2 tileCount)
+{
+    FfxUInt32 flags = 0u;
+    FFX_DOF_UNROLL
+    for (FfxUInt32 k = 0u; k < 9u; ++k)
+    {
+        FfxUInt32x2 around = ffxDofTileAround(tile, k, tileCount);
+        FfxFloat32x3 rangeAndPeak = ffxDofLoadTileRangeAndPeak(around);
+        if (ffxDofTileMayHoldBrightSmallSources(rangeAndPeak))
+            flags |= FfxUInt32(FFX_DOF_LISTED_TILE_SMALL_SOURCES);
+        if (ffxDofHighlightFloorsGaveLight(ffxDofLoadGivenHighlightFloors(around, rangeAndPeak, tileCount)))
+            flags |= FfxUInt32(FFX_DOF_LISTED_TILE_LIGHTS);
+    }
+    return flags;
+}
+
 // Lists `packedTile` under `list`: the next entry of the list (its count in TILE_LIST_ARGS).
 FFX_DOF_INLINE void ffxDofListTile(FfxUInt32 list, FfxUInt32 packedTile, FfxUInt32 tilesPerList)
 {
@@ -174,12 +191,14 @@ FFX_DOF_INLINE void ffxDofDilate(FfxUInt32x2 groupId, FfxUInt32 localIndex)
     FfxFloat32x4 dilated = FfxFloat32x4(farNear, ffxDofFootprintRange(tile, constants.tileCount, footprint));
     ffxDofStoreDilatedTile(tile, dilated);
     FfxUInt32 tilesPerList = constants.tileCount.x * constants.tileCount.y;
-    FfxUInt32 packedTile = ffxDofPackListedTile(tile);
-    ffxDofListTile(FfxUInt32(FFX_DOF_BLUR_TILE_LIST_FIRST) + ffxDofBlurTileClass(dilated), packedTile, tilesPerList);
-    FfxUInt32 compositeClass = ffxDofCompositeTileClass(
-        ffxDofLoadTile(tile), farNear.y,
-        ffxDofSurveyTilesAround(tile, constants.tileCount).drawsSmallSources || reachedByHighlights);
-    ffxDofListTile(FfxUInt32(FFX_DOF_COMPOSITE_TILE_LIST_FIRST) + compositeClass, packedTile, tilesPerList);
+    FfxUInt32 around = ffxDofSurveyTilesAround(tile, constants.tileCount);
+    ffxDofListTile(FfxUInt32(FFX_DOF_BLUR_TILE_LIST_FIRST) + ffxDofBlurTileClass(dilated),
+                   ffxDofPackListedTile(tile, around), tilesPerList);
+    FfxBoolean drawsSmallSources = (around & FfxUInt32(FFX_DOF_LISTED_TILE_SMALL_SOURCES)) != 0u;
+    FfxUInt32 compositeClass =
+        ffxDofCompositeTileClass(ffxDofLoadTile(tile), farNear.y, drawsSmallSources || reachedByHighlights);
+    ffxDofListTile(FfxUInt32(FFX_DOF_COMPOSITE_TILE_LIST_FIRST) + compositeClass, ffxDofPackListedTile(tile, 0u),
+                   tilesPerList);
 }
 
 #endif  // FFX_DOF_DILATE_H

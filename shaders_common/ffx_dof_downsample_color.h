@@ -661,9 +661,11 @@ FFX_DOF_INLINE void ffxDofDownsampleColor(FfxUInt32x2 groupId, FfxUInt32 localIn
         ffxDofStoreHighlightWord(word + 1u, packed.y);
         ffxDofStoreHighlightWord(word + 2u, packed.z);
     }
-    // The floors, from which the composite knows what the tile's pixels gave (ffxDofPixelHighlightShare).
+    // The floors, from which the composite knows what the tile's pixels gave (ffxDofPixelHighlightShare), and
+    // whether they gave any.
     if (localIndex == FfxUInt32(FFX_DOF_HIGHLIGHT_SLOTS))
-        ffxDofStoreHighlightWord(ffxDofHighlightFloorWord(groupId, constants.tileCount), packedFloors);
+        ffxDofStoreHighlightWord(ffxDofHighlightFloorWord(groupId, constants.tileCount),
+                                 packedFloors | (ffxDofSharedHighlightAny != 0u ? FFX_DOF_HIGHLIGHT_GIVEN_BIT : 0u));
 }
 
 #endif  // FFX_DOF_DOWNSAMPLE_COLOR_H

@@ -103,8 +103,8 @@ FFX_DOF_INLINE FfxFloat32 ffxDofHighlightShare(FfxFloat32 luminance, FfxFloat32 
 // light is the far field around it) among the mean far luminance there (the surround, ffxDofHighlightShare); near
 // pixels on the dimmest pixel of any kind there (a near light stands in front of whatever lies around it: an
 // in-focus wall holds no far pixel), which is their surround as well. Stored in one word of HIGHLIGHTS, 10 bits
-// each (far floor, near floor, far surround; bits 30 and 31 free), and pass 2 gives light over the floors as
-// stored, so that the composite, which reads them back, takes the same shares to the bit.
+// each (far floor, near floor, far surround; bit 30 FFX_DOF_HIGHLIGHT_GIVEN_BIT, bit 31 free), and pass 2 gives
+// light over the floors as stored, so that the composite, which reads them back, takes the same shares to the bit.
 // FFX_DOF_HIGHLIGHT_NO_FLOOR, the largest half, over which no pixel gives light (the HDR range keeps them at
 // FFX_DOF_COLOR_RANGE_LIMIT): none of that kind there.
 #define FFX_DOF_HIGHLIGHT_NO_FLOOR 65504.0f
@@ -152,7 +152,18 @@ FFX_DOF_INLINE FfxFloat32 ffxDofFarSurround(FfxFloat32x2 farLuminanceSum)
     return farLuminanceSum.y > 0.0f ? farLuminanceSum.x / farLuminanceSum.y : 0.0f;
 }
 
-// The word of a tile whose pixels give no light (ffxDofTileMayHoldHighlights false).
+// Set in a tile's word of floors where its pixels gave light (a slot of the tile holds some): dilate and the composite
+// tell from this one bit, not from the colour peak, which tiles' highlights are drawn. A sky above white behind dark
+// branches gives none (ffxDofHighlightShare), and judged by its peak every tile such a tile's discs could reach
+// took the composite's full-resolution path and the blur's finer MIP: the scene's composite took 3.6 and its blur
+// 1.9 times as long as without (docs/performance.md, "A sky above white takes the cheap paths").
+#define FFX_DOF_HIGHLIGHT_GIVEN_BIT 0x40000000u
+FFX_DOF_INLINE FfxBoolean ffxDofHighlightFloorsGaveLight(FfxUInt32 word)
+{
+    return (word & FFX_DOF_HIGHLIGHT_GIVEN_BIT) != 0u;
+}
+
+// The word of a tile whose pixels give no light (ffxDofTileMayHoldHighlights false, or none gave any).
 FFX_DOF_INLINE FfxUInt32 ffxDofNoHighlightFloors()
 {
     return ffxDofPackHighlightFloors(
@@ -407,6 +418,23 @@ FFX_DOF_INLINE FfxBoolean ffxDofTileMayHoldHighlights(FfxFloat32x3 rangeAndPeak)
     return rangeAndPeak.z > FFX_DOF_HIGHLIGHT_MIN_LUMINANCE &&
            (rangeAndPeak.x < -FFX_DOF_HIGHLIGHT_MIN_RADIUS || rangeAndPeak.y > FFX_DOF_NEAR_HIGHLIGHT_MIN_RADIUS);
 }
+
+#if defined(FFX_CPU)
+FfxUInt32 ffxDofLoadHighlightWord(FfxUInt32 word);
+#endif
+// Only where the pass reads HIGHLIGHTS: a GLSL or HLSL function may not call an accessor its pass lacks.
+#if defined(FFX_CPU) || FFX_DOF_USES_HIGHLIGHTS
+// The word of floors of `tile` (of TILES texel `rangeAndPeak`) where its pixels gave light to the highlights, else
+// ffxDofNoHighlightFloors(): its colour peak first, which spares most tiles the load.
+FFX_DOF_INLINE FfxUInt32 ffxDofLoadGivenHighlightFloors(FfxUInt32x2 tile, FfxFloat32x3 rangeAndPeak,
+                                                        FfxUInt32x2 tileCount)
+{
+    if (!ffxDofTileMayHoldHighlights(rangeAndPeak))
+        return ffxDofNoHighlightFloors();
+    FfxUInt32 word = ffxDofLoadHighlightWord(ffxDofHighlightFloorWord(tile, tileCount));
+    return ffxDofHighlightFloorsGaveLight(word) ? word : ffxDofNoHighlightFloors();
+}
+#endif
 
 // Tiles of the composite's window whose highlights it draws, a bit each in group-shared memory: up to 32 words,
 // a window of 1024 tiles (ffxDofHighlightTileRange up to 15: radii up to 118 half-res px; farther highlights

@@ -20,12 +20,12 @@
 #define FFX_DOF_USES_RW_HIGHLIGHTS 1
 #elif defined(FFX_DOF_PASS_DILATE)
 #define FFX_DOF_USES_TILES 1
+#define FFX_DOF_USES_HIGHLIGHTS 1  // which tiles gave light to them (FFX_DOF_HIGHLIGHT_GIVEN_BIT)
 #define FFX_DOF_USES_RW_DILATED_TILES 1
 #define FFX_DOF_USES_GLOBALS 1
 #define FFX_DOF_USES_RW_TILE_LIST_ARGS 1
 #define FFX_DOF_USES_RW_TILE_LISTS 1
 #elif defined(FFX_DOF_PASS_BLUR)
-#define FFX_DOF_USES_TILES 1  // the colour peaks of ffx_dof_small_sources.h
 #define FFX_DOF_USES_HALF_COLOR 1
 #define FFX_DOF_USES_HALF_COC 1
 #define FFX_DOF_USES_COARSE_MIPS 1

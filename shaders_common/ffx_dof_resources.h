@@ -48,7 +48,8 @@
 //                  blur and the composite are dispatched from them (one indirect dispatch per list of
 //                  theirs), and never bind it.
 //   TILE_LISTS     storage buffer, FFX_DOF_TILE_LIST_ARRAYS x tiles uint words: the tiles dilate put in
-//                  each list (x | y << 16), in no order; lists 2a and 2a + 1 share array a, one from each
+//                  each list (x | y << 16 | flags << 30, ffxDofPackListedTile: x below 65536, y below
+//                  FFX_DOF_LISTED_TILE_Y_LIMIT), in no order; lists 2a and 2a + 1 share array a, one from each
 //                  end (ffxDofTileListWord). The blur's or composite's workgroup i of a list works on the
 //                  list's tile i.
 //   HIGHLIGHTS     storage buffer, tiles x FFX_DOF_HIGHLIGHT_TILE_WORDS uint words: per tile the near and
@@ -135,8 +136,9 @@
 #define FFX_DOF_BLUR_TILE_LIST_FIRST 0
 #define FFX_DOF_COMPOSITE_TILE_LIST_FIRST 6
 #define FFX_DOF_TILE_LIST_COUNT 9
-#define FFX_DOF_TILE_LIST_ARRAYS 5      // arrays of one word per tile in TILE_LISTS: ceil(lists / 2)
-#define FFX_DOF_TILE_LIST_ARGS_WORDS 4  // words per list in TILE_LIST_ARGS
+#define FFX_DOF_TILE_LIST_ARRAYS 5         // arrays of one word per tile in TILE_LISTS: ceil(lists / 2)
+#define FFX_DOF_TILE_LIST_ARGS_WORDS 4     // words per list in TILE_LIST_ARGS
+#define FFX_DOF_LISTED_TILE_Y_LIMIT 16384  // tile rows a TILE_LISTS word holds (14 bits)
 #if FFX_DOF_BLUR_TILE_LIST_FIRST % 2 != 0 || FFX_DOF_COMPOSITE_TILE_LIST_FIRST % 2 != 0 ||          \
     FFX_DOF_COMPOSITE_TILE_LIST_FIRST < FFX_DOF_BLUR_TILE_LIST_FIRST + FFX_DOF_BLUR_CLASS_COUNT ||  \
     FFX_DOF_TILE_LIST_COUNT != FFX_DOF_COMPOSITE_TILE_LIST_FIRST + FFX_DOF_COMPOSITE_CLASS_COUNT || \

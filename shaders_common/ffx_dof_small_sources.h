@@ -42,29 +42,4 @@ FFX_DOF_INLINE FfxUInt32x2 ffxDofTileAround(FfxUInt32x2 tile, FfxUInt32 k, FfxUI
                              FfxInt32x2(0, 0), FfxInt32x2(tileCount) - FfxInt32x2(1, 1)));
 }
 
-// What the blur takes from the 3 x 3 tiles around a texel's (one read of each): whether its texels draw
-// small bright far sources at full resolution, when the tile or one of the 8 around it may hold one (a
-// source reaches at most 2 FFX_DOF_FAR_LAYER_ONLY_RADIUS + 0.5 full-res px, less than a tile; the
-// composite asks the same of its 9 tiles in group-shared memory), and their colour peak
-// (ffxDofKernelTakesCoarserMip).
-struct FfxDofTilesAround
-{
-    FfxBoolean drawsSmallSources;  // ffxDofTileMayHoldBrightSmallSources of any of them
-    FfxFloat32 peak;               // the largest colour channel in them (input units)
-};
-FFX_DOF_INLINE FfxDofTilesAround ffxDofSurveyTilesAround(FfxUInt32x2 tile, FfxUInt32x2 tileCount)
-{
-    FfxDofTilesAround around;
-    around.drawsSmallSources = false;
-    around.peak = 0.0f;
-    FFX_DOF_UNROLL
-    for (FfxUInt32 k = 0u; k < 9u; ++k)
-    {
-        FfxFloat32x3 rangeAndPeak = ffxDofLoadTileRangeAndPeak(ffxDofTileAround(tile, k, tileCount));
-        around.drawsSmallSources = around.drawsSmallSources || ffxDofTileMayHoldBrightSmallSources(rangeAndPeak);
-        around.peak = max(around.peak, rangeAndPeak.z);
-    }
-    return around;
-}
-
 #endif  // FFX_DOF_SMALL_SOURCES_H

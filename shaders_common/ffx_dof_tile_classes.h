@@ -62,7 +62,7 @@ FFX_DOF_INLINE FfxBoolean ffxDofTileKeepsInput(FfxFloat32x2 tile, FfxFloat32 dil
     return max(abs(tile.x), abs(tile.y)) < FFX_DOF_IN_FOCUS_RADIUS && dilatedNear < FFX_DOF_NEAR_THRESHOLD;
 }
 
-// The composite's class of a tile: `drawsLights` whether it draws small sources (ffxDofSurveyTilesAround's) or
+// The composite's class of a tile: `drawsLights` whether it draws small sources (FFX_DOF_LISTED_TILE_SMALL_SOURCES) or
 // highlights (ffx_dof_highlights.h) at full resolution.
 FFX_DOF_INLINE FfxUInt32 ffxDofCompositeTileClass(FfxFloat32x2 tile, FfxFloat32 dilatedNear, FfxBoolean drawsLights)
 {
@@ -75,9 +75,26 @@ FFX_DOF_INLINE FfxUInt32 ffxDofCompositeTileClass(FfxFloat32x2 tile, FfxFloat32 
 
 // ---- The lists ----------------------------------------------------------------------------------
 
-// A tile as one word of TILE_LISTS, and back (tile coordinates stay below 65536).
-FFX_DOF_INLINE FfxUInt32 ffxDofPackListedTile(FfxUInt32x2 tile) { return tile.x | (tile.y << 16u); }
-FFX_DOF_INLINE FfxUInt32x2 ffxDofUnpackListedTile(FfxUInt32 word) { return FfxUInt32x2(word & 0xffffu, word >> 16u); }
+// A tile as one word of TILE_LISTS, and back: x in bits 0 to 15, y in bits 16 to 29 (below
+// FFX_DOF_LISTED_TILE_Y_LIMIT; the SDK checks that the largest image's tiles fit) and in bits 30 and 31 what dilate
+// tells the pass of the tiles around it beyond their DILATED_TILES texel (FFX_DOF_LISTED_TILE_*), decided once per tile
+// instead of once per invocation.
+#define FFX_DOF_LISTED_TILE_FLAGS_SHIFT 30u
+// The blur's flags. The tile or one of the 8 around may hold bright small far sources, which the composite draws
+// at full resolution (ffxDofTileMayHoldBrightSmallSources): the blur leaves them out of its layers.
+#define FFX_DOF_LISTED_TILE_SMALL_SOURCES 1u
+// ... or gave light to the highlights (ffxDofLoadGivenHighlightFloors): the far kernels keep the finer MIP
+// (ffxDofKernelTakesCoarserMip).
+#define FFX_DOF_LISTED_TILE_LIGHTS 2u
+FFX_DOF_INLINE FfxUInt32 ffxDofPackListedTile(FfxUInt32x2 tile, FfxUInt32 flags)
+{
+    return tile.x | (tile.y << 16u) | (flags << FFX_DOF_LISTED_TILE_FLAGS_SHIFT);
+}
+FFX_DOF_INLINE FfxUInt32x2 ffxDofUnpackListedTile(FfxUInt32 word)
+{
+    return FfxUInt32x2(word & 0xffffu, (word >> 16u) & FfxUInt32(FFX_DOF_LISTED_TILE_Y_LIMIT - 1));
+}
+FFX_DOF_INLINE FfxUInt32 ffxDofListedTileFlags(FfxUInt32 word) { return word >> FFX_DOF_LISTED_TILE_FLAGS_SHIFT; }
 
 // The word of TILE_LISTS that holds entry `index` of list `list`, for `tilesPerList` tiles. Lists share
 // arrays of one word per tile in pairs, list 2a from the front of array a and list 2a + 1 from its back:
@@ -90,12 +107,13 @@ FFX_DOF_INLINE FfxUInt32 ffxDofTileListWord(FfxUInt32 list, FfxUInt32 index, Ffx
     return (list & 1u) == 0u ? arrayStart + index : arrayStart + tilesPerList - 1u - index;
 }
 
-// The tile a workgroup of an indirect dispatch over `list` works on (`listIndex`: its workgroup index).
-// Only where the pass reads the lists: a GLSL or HLSL function may not call an accessor its pass lacks.
+// The entry (ffxDofPackListedTile) a workgroup of an indirect dispatch over `list` works on (`listIndex`: its
+// workgroup index). Only where the pass reads the lists: a GLSL or HLSL function may not call an accessor its pass
+// lacks.
 #if defined(FFX_CPU) || FFX_DOF_USES_TILE_LISTS
-FFX_DOF_INLINE FfxUInt32x2 ffxDofListedTile(FfxUInt32 list, FfxUInt32 listIndex, FfxUInt32 tilesPerList)
+FFX_DOF_INLINE FfxUInt32 ffxDofListedTileWord(FfxUInt32 list, FfxUInt32 listIndex, FfxUInt32 tilesPerList)
 {
-    return ffxDofUnpackListedTile(ffxDofLoadTileListWord(ffxDofTileListWord(list, listIndex, tilesPerList)));
+    return ffxDofLoadTileListWord(ffxDofTileListWord(list, listIndex, tilesPerList));
 }
 #endif
 

@@ -93,6 +93,9 @@ constexpr uint32_t tileListArgsOffset(uint32_t list) { return list * FFX_DOF_TIL
 constexpr uint32_t tileListsWordCount(uint32_t tileCountX, uint32_t tileCountY) {
     return FFX_DOF_TILE_LIST_ARRAYS * tileCountX * tileCountY;
 }
+// Tiles each way of the largest image the context accepts: what a TILE_LISTS word must hold.
+constexpr uint32_t kMaxTileCount = (FFX_DOF_MAX_RESOLUTION / 2 + FFX_DOF_TILE_SIZE - 1) / FFX_DOF_TILE_SIZE;
+static_assert(kMaxTileCount <= FFX_DOF_LISTED_TILE_Y_LIMIT, "a TILE_LISTS word holds the largest image's tile rows");
 // HIGHLIGHTS (FFX_DOF_UAV_BUFFER_HIGHLIGHTS): FFX_DOF_HIGHLIGHT_SLOTS highlights of FFX_DOF_HIGHLIGHT_WORDS
 // words and the word of the two floors (far, near) per tile.
 constexpr uint32_t highlightsWordCount(uint32_t tileCountX, uint32_t tileCountY) {

@@ -719,7 +719,7 @@ TEST_CASE("The coarser MIP of far kernels: texels no smaller than the ring spaci
     }
 }
 
-TEST_CASE("Which kernels read the coarser MIP: far, nothing near or bright around, inside the image", "[kernel]") {
+TEST_CASE("Which kernels read the coarser MIP: far, nothing near and no light around, inside the image", "[kernel]") {
     FfxDofConstants constants{};
     constants.halfSize = FfxUInt32x2(480, 270);
     constants.anamorphicRatio = 1.0f;
@@ -728,23 +728,24 @@ TEST_CASE("Which kernels read the coarser MIP: far, nothing near or bright aroun
     const FfxFloat32x2 middle(240.5f, 135.5f);
     const float radius = 11.5f;
     const float coarser = ffxDofCoarserMipForSpacing(radius / 10.0f);
-    CHECK(ffxDofKernelTakesCoarserMip(middle, -radius, radius, farTile, 0.9f, coarser, constants));
-    // A near or in-focus texel, a near radius reaching the tile, a bright tile around: the nearest MIP.
-    CHECK_FALSE(ffxDofKernelTakesCoarserMip(middle, radius, radius, farTile, 0.9f, coarser, constants));
-    CHECK_FALSE(ffxDofKernelTakesCoarserMip(middle, -0.4f, radius, farTile, 0.9f, coarser, constants));
-    CHECK_FALSE(ffxDofKernelTakesCoarserMip(middle, -radius, radius, FfxFloat32x4(-12.0f, 8.0f, -12.0f, 8.0f), 0.9f,
+    CHECK(ffxDofKernelTakesCoarserMip(middle, -radius, radius, farTile, false, coarser, constants));
+    // A near or in-focus texel, a near radius reaching the tile, a light in the tiles around (FFX_DOF_LISTED_TILE_*):
+    // the nearest MIP.
+    CHECK_FALSE(ffxDofKernelTakesCoarserMip(middle, radius, radius, farTile, false, coarser, constants));
+    CHECK_FALSE(ffxDofKernelTakesCoarserMip(middle, -0.4f, radius, farTile, false, coarser, constants));
+    CHECK_FALSE(ffxDofKernelTakesCoarserMip(middle, -radius, radius, FfxFloat32x4(-12.0f, 8.0f, -12.0f, 8.0f), false,
                                             coarser, constants));
-    CHECK_FALSE(ffxDofKernelTakesCoarserMip(middle, -radius, radius, farTile, 1.5f, coarser, constants));
+    CHECK_FALSE(ffxDofKernelTakesCoarserMip(middle, -radius, radius, farTile, true, coarser, constants));
     // Everything it reads inside the image, the walk beyond the kernel (the tile's far reach) and a texel
     // of the coarser MIP and of its merged rings' MIP included: not within that of any border.
     const float reach = 12.0f + std::exp2(coarser) * (1.0f + std::exp2(float(FFX_DOF_RING_MERGE_LOG)));
     for (const FfxFloat32x2 nearBorder :
          {FfxFloat32x2(reach - 0.5f, 135.5f), FfxFloat32x2(240.5f, reach - 0.5f),
           FfxFloat32x2(480.0f - reach + 0.5f, 135.5f), FfxFloat32x2(240.5f, 270.0f - reach + 0.5f)})
-        CHECK_FALSE(ffxDofKernelTakesCoarserMip(nearBorder, -radius, radius, farTile, 0.9f, coarser, constants));
+        CHECK_FALSE(ffxDofKernelTakesCoarserMip(nearBorder, -radius, radius, farTile, false, coarser, constants));
     for (const FfxFloat32x2 inside : {FfxFloat32x2(reach, 135.5f), FfxFloat32x2(240.5f, reach),
                                       FfxFloat32x2(480.0f - reach, 135.5f), FfxFloat32x2(240.5f, 270.0f - reach)})
-        CHECK(ffxDofKernelTakesCoarserMip(inside, -radius, radius, farTile, 0.9f, coarser, constants));
+        CHECK(ffxDofKernelTakesCoarserMip(inside, -radius, radius, farTile, false, coarser, constants));
 }
 
 TEST_CASE("A coarse outermost ring reads every texel whose light the kernel reaches, the walk beyond it the rest",
@@ -1309,11 +1310,20 @@ TEST_CASE("Composite classes: a copy where every pixel keeps its input, full res
     // Every pixel a copy tile holds keeps its input in the full composition: in focus, no near opacity.
     CHECK(ffxDofTileKeepsInput(inFocus, 0.0f));
     CHECK_FALSE(ffxDofTileKeepsInput(inFocus, FFX_DOF_NEAR_THRESHOLD));
-    // A listed tile comes back as it went in, up to the largest tile coordinate of a 16-bit field.
-    for (const FfxUInt32x2 tile :
-         {FfxUInt32x2(0u, 0u), FfxUInt32x2(119u, 67u), FfxUInt32x2(65535u, 1u), FfxUInt32x2(3u, 65535u)}) {
-        CHECK(ffxDofUnpackListedTile(ffxDofPackListedTile(tile)) == tile);
+    // A listed tile and its flags come back as they went in, up to the largest tile coordinates of their fields
+    // (x 16 bits, y 14; the SDK's static_assert keeps the largest image's tiles within them).
+    const uint32_t lastRow = FFX_DOF_LISTED_TILE_Y_LIMIT - 1u;
+    for (const FfxUInt32x2 tile : {FfxUInt32x2(0u, 0u), FfxUInt32x2(119u, 67u), FfxUInt32x2(65535u, 1u),
+                                   FfxUInt32x2(3u, lastRow), FfxUInt32x2(65535u, lastRow)}) {
+        for (uint32_t flags = 0; flags < 4u; ++flags) {
+            INFO("tile " << tile.x << ", " << tile.y << ", flags " << flags);
+            const FfxUInt32 word = ffxDofPackListedTile(tile, flags);
+            CHECK(ffxDofUnpackListedTile(word) == tile);
+            CHECK(ffxDofListedTileFlags(word) == flags);
+        }
     }
+    CHECK(ffxDofListedTileFlags(ffxDofPackListedTile(FfxUInt32x2(5u, 7u), FFX_DOF_LISTED_TILE_SMALL_SOURCES)) ==
+          FFX_DOF_LISTED_TILE_SMALL_SOURCES);
 }
 
 TEST_CASE("sRGB encoding", "[composite]") {

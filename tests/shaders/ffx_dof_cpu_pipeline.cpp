@@ -330,10 +330,10 @@ std::vector<glm::vec4> runPipeline(const Scene& scene, const Settings& settings,
                          ffxDofBlur(blurClass, listIndex, local);
                          return;
                      }
-                     const FfxUInt32x2 tile =
-                         ffxDofListedTile(FFX_DOF_BLUR_TILE_LIST_FIRST + blurClass, listIndex,
-                                          g_state->constants.tileCount.x * g_state->constants.tileCount.y);
-                     ffxDofBlurTile(tile, local, ffxDofLoadDilatedTile(tile), FFX_DOF_BLUR_CLASS_MIXED);
+                     ffxDofBlurTile(
+                         ffxDofListedTileWord(FFX_DOF_BLUR_TILE_LIST_FIRST + blurClass, listIndex,
+                                              g_state->constants.tileCount.x * g_state->constants.tileCount.y),
+                         local, FFX_DOF_BLUR_CLASS_MIXED);
                  });
     runTileLists(FFX_DOF_COMPOSITE_TILE_LIST_FIRST, FFX_DOF_COMPOSITE_CLASS_COUNT,
                  [](FfxUInt32 compositeClass, FfxUInt32 listIndex, FfxUInt32 local) {
@@ -351,6 +351,26 @@ std::vector<glm::vec4> runPipeline(const Scene& scene, const Settings& settings,
         layers->tileClasses.clear();
         for (const glm::vec4& dilated : state.dilatedTiles.texels)
             layers->tileClasses.push_back(ffxDofBlurTileClass(dilated));
+        // What dilate listed: each list's entries, from the counts it left in TILE_LIST_ARGS.
+        const uint32_t tileCount = k.tileCount.x * k.tileCount.y;
+        layers->blurTileFlags.assign(tileCount, 0u);
+        layers->compositeClasses.assign(tileCount, 0u);
+        auto forEachListed = [&state, &k, tileCount](uint32_t list, auto&& visit) {
+            const uint32_t entries = state.tileListArgs[list * FFX_DOF_TILE_LIST_ARGS_WORDS].load();
+            for (uint32_t index = 0; index < entries; ++index) {
+                const FfxUInt32 word = state.tileLists.at(ffxDofTileListWord(list, index, tileCount));
+                const FfxUInt32x2 tile = ffxDofUnpackListedTile(word);
+                visit(size_t(tile.y) * k.tileCount.x + tile.x, word);
+            }
+        };
+        for (uint32_t blurClass = 0; blurClass < FFX_DOF_BLUR_CLASS_COUNT; ++blurClass)
+            forEachListed(FFX_DOF_BLUR_TILE_LIST_FIRST + blurClass, [layers](size_t tile, FfxUInt32 word) {
+                layers->blurTileFlags[tile] = ffxDofListedTileFlags(word);
+            });
+        for (uint32_t compositeClass = 0; compositeClass < FFX_DOF_COMPOSITE_CLASS_COUNT; ++compositeClass)
+            forEachListed(
+                FFX_DOF_COMPOSITE_TILE_LIST_FIRST + compositeClass,
+                [layers, compositeClass](size_t tile, FfxUInt32) { layers->compositeClasses[tile] = compositeClass; });
         layers->coc0 = state.halfCoc.texels;
         layers->nearColor = state.nearColor.texels;
         layers->farColor = state.farColor.texels;

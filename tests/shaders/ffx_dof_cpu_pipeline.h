@@ -33,11 +33,13 @@ struct Settings {
 
 struct Layers {
     uint32_t halfWidth = 0, halfHeight = 0, tilesX = 0, tilesY = 0;
-    std::vector<glm::vec2> tiles;         // pass 1
-    std::vector<float> tileColorPeaks;    // pass 1: TILES' z
-    std::vector<glm::vec4> dilatedTiles;  // pass 3: far, near, footprint min, footprint max
-    std::vector<uint32_t> tileClasses;    // pass 4: FFX_DOF_BLUR_CLASS_* of each tile (as classified)
-    std::vector<float> coc0;              // MIP 0 of COC_MIPS
+    std::vector<glm::vec2> tiles;            // pass 1
+    std::vector<float> tileColorPeaks;       // pass 1: TILES' z
+    std::vector<glm::vec4> dilatedTiles;     // pass 3: far, near, footprint min, footprint max
+    std::vector<uint32_t> tileClasses;       // pass 4: FFX_DOF_BLUR_CLASS_* of each tile (as classified)
+    std::vector<uint32_t> blurTileFlags;     // pass 3: FFX_DOF_LISTED_TILE_* of each tile's blur list entry
+    std::vector<uint32_t> compositeClasses;  // pass 3: FFX_DOF_COMPOSITE_CLASS_* of each tile (the list it is in)
+    std::vector<float> coc0;                 // MIP 0 of COC_MIPS
     std::vector<glm::vec3> nearColor, farColor;
     std::vector<glm::vec2> layerAlpha;
     float globalMaxRadius = 0.0f;        // GLOBALS after pass 1

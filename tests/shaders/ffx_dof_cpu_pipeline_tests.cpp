@@ -1064,3 +1064,43 @@ TEST_CASE("A thin far object over a far field above white is blurred as over the
     INFO("largest relative difference of the bright case (scaled back) from the dim one: " << largestDifference);
     CHECK(largestDifference <= 0.02);
 }
+
+TEST_CASE("A far field above white without lights takes the cheap paths; a light there only around itself",
+          "[pipeline]") {
+    // A sky from 1.8 to 2.8 (above white, no pixel twice its surround) at far radius 6 half-res px: nothing in it is
+    // a light, and nothing in it is below FFX_DOF_FAR_LAYER_ONLY_RADIUS. Until dilate asked which tiles' pixels gave
+    // light (FFX_DOF_HIGHLIGHT_GIVEN_BIT) instead of which have a channel above white, every tile took the
+    // composite's full-resolution path and every far kernel the finer MIP (docs/performance.md, "A sky above white
+    // takes the cheap paths").
+    const uint32_t w = 256, h = 160;
+    const float skyRadius = 6.0f;
+    Scene sky = makeScene(w, h, glm::vec4(0.0f), -skyRadius);
+    for (uint32_t y = 0; y < h; ++y)
+        for (uint32_t x = 0; x < w; ++x) sky.color[size_t(y) * w + x] = glm::vec4(glm::vec3(1.8f + x / float(w)), 1.0f);
+    Settings settings;
+    settings.cocLimit = 10.0f;
+    Layers layers;
+    ffxdoftest::runPipeline(sky, settings, &layers);
+    REQUIRE(layers.compositeClasses.size() == size_t(layers.tilesX) * layers.tilesY);
+    for (size_t tile = 0; tile < layers.compositeClasses.size(); ++tile) {
+        INFO("tile " << tile % layers.tilesX << ", " << tile / layers.tilesX);
+        REQUIRE(layers.tileColorPeaks[tile] > 1.0f);
+        CHECK(layers.compositeClasses[tile] == uint32_t(FFX_DOF_COMPOSITE_CLASS_LAYERS));
+        CHECK(layers.blurTileFlags[tile] == 0u);
+    }
+
+    // A light of 3 x 3 px of 50 at the sky's radius, in tile (8, 5): the 3 x 3 tiles around it keep the finer MIP,
+    // the composite draws it where its disc (12 full-res px and dilate's margin) reaches, and nowhere farther.
+    const glm::ivec2 lightTile(8, 5);
+    const Scene lit = withLight(sky, glm::ivec2(lightTile.x * 16 + 4, lightTile.y * 16 + 4), 50.0f, -skyRadius, 3);
+    ffxdoftest::runPipeline(lit, settings, &layers);
+    for (uint32_t ty = 0; ty < layers.tilesY; ++ty)
+        for (uint32_t tx = 0; tx < layers.tilesX; ++tx) {
+            INFO("tile " << tx << ", " << ty);
+            const size_t tile = size_t(ty) * layers.tilesX + tx;
+            const int away = std::max(std::abs(int(tx) - lightTile.x), std::abs(int(ty) - lightTile.y));
+            CHECK(layers.blurTileFlags[tile] == (away <= 1 ? uint32_t(FFX_DOF_LISTED_TILE_LIGHTS) : 0u));
+            if (away == 0) CHECK(layers.compositeClasses[tile] == uint32_t(FFX_DOF_COMPOSITE_CLASS_FULL_RES));
+            if (away >= 3) CHECK(layers.compositeClasses[tile] == uint32_t(FFX_DOF_COMPOSITE_CLASS_LAYERS));
+        }
+}
