@@ -814,6 +814,11 @@ int main(int argc, char** argv) {
               "lights-through-branches (2026-12-01) shows what the highlights' blocker test misses: a branch in front "
               "of a light is a band across its whole disc in the thin lens, a notch where the branch lies here "
               "(docs/technique.md, \"What hides a highlight\").\n\n"
+           << "near-leaves-sky (2026-12-01): dark near leaves against a sky above white, the near field's side of "
+              "far-branches. It passes its gates with 63cce1a's shaders, which ask which tiles gave light to the "
+              "highlights, where they asked which hold a channel above white, to choose the composite's and the "
+              "blur's paths (docs/technique.md, \"A sky above white takes the cheap paths\"); with them this "
+              "report's figures and pictures of every other scene came out bit for bit the same.\n\n"
            << "Pictures, left to right: input (pinhole), ffx-dof, truth, |ffx-dof - truth| x 4, circular gather. "
               "8-bit sRGB, values above 1 clipped.\n\n";
         for (const quality::SceneGate& gate : quality::sceneGates()) {

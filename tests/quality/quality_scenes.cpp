@@ -72,6 +72,10 @@ const std::vector<SceneGate>& sceneGates() {
          "composite hides a highlight only at pixels whose own surface lies in front of the light "
          "(ffxDofHighlightBlockerPoint), so here the band is a notch where the branch itself is, and a light the "
          "branch hides from the pinhole camera is missing (docs/technique.md, \"What hides a highlight\")"},
+        {"near-leaves-sky", 22.0,
+         "dark near leaves, strongly blurred, against a sky above white: their veils must let the bright sky "
+         "through as the thin lens does, and the sky, brighter than display white, must not be taken for lights "
+         "(docs/technique.md, \"A sky above white takes the cheap paths\")"},
         {"far-steps", 21.5,
          "large far objects in front of a farther high-contrast wall: far-field content nearer than the far field "
          "around it, at the object's edges the wall's blur passes behind them"},

@@ -318,6 +318,28 @@ SceneSetup lightsThroughBranches(uint32_t width, uint32_t height) {
     return setup;
 }
 
+SceneSetup nearLeavesSky(uint32_t width, uint32_t height) {
+    SceneSetup setup{"near-leaves-sky",
+                     "dark leaves at 0.7 to 1.1 m against a sky above white at 60 m, focus at 3 m on two small boxes",
+                     {},
+                     baseCamera(width, height, 0.035, 3.0)};
+    Scene& scene = setup.scene;
+    scene.background = {1.6f, 1.8f, 2.2f};
+    scene.addQuad({0, 0, 60}, kRight * 80.0, kUp * 60.0, noise({0.9f, 1.1f, 1.5f}, {2.2f, 2.4f, 3.0f}, 3.0f));
+    scene.addBox({0.35, 0.05, 3.0}, {0.1, 0.12, 0.1}, checker({0.9f, 0.9f, 0.9f}, {0.7f, 0.1f, 0.1f}, 0.04f));
+    // In focus and out of every leaf's reach, for the in-focus gate.
+    scene.addBox({1.1, -0.25, 3.0}, {0.1, 0.15, 0.1}, stripes({0.9f, 0.8f, 0.2f}, {0.1f, 0.1f, 0.3f}, 0.03f));
+    for (int i = 0; i < 8; ++i) {
+        const double z = 0.7 + 0.05 * i;
+        const double x = -0.3 + 0.05 * i + 0.03 * std::sin(i * 2.3);
+        const double y = -0.22 + 0.35 * latticeValue(i, 11);
+        scene.addBox({x, y, z}, {0.01 + 0.012 * (i % 3), 0.04 + 0.03 * (i % 2), 0.01},
+                     noise({0.02f, 0.06f, 0.02f}, {0.08f, 0.2f, 0.06f}, 0.02f));
+    }
+    setApertureForBlur(setup.camera, 60.0, std::max(6.0, 0.03 * width));
+    return setup;
+}
+
 SceneSetup farSteps(uint32_t width, uint32_t height) {
     SceneSetup setup{"far-steps",
                      "textured boxes at 4 to 8 m in front of a busy wall at 40 m, focus at 2 m",
@@ -350,6 +372,7 @@ const std::vector<SceneEntry>& sceneCatalog() {
         {"near-and-far", nearAndFar},
         {"far-branches", farBranches},
         {"far-steps", farSteps},
+        {"near-leaves-sky", nearLeavesSky},
         {"lights-through-branches", lightsThroughBranches},
         {"point", singlePoint},
     };
