@@ -150,8 +150,15 @@ TEST_CASE("A far pixel is a light by its far surround, and gives what it has abo
     // A surround below the floor (rounding may put the mean there) is the floor; no far pixel: none.
     CHECK(ffxDofHighlightShare(3.0f, -8.0f, glm::vec2(1.0f, 0.5f), 1.0f) == shareOverFloor(3.0f, -8.0f, 1.0f, 1.0f));
     CHECK(ffxDofFarSurround(glm::vec2(0.0f, 0.0f)) == 0.0f);
-    // A near pixel's surround is its floor.
-    CHECK(ffxDofHighlightFloor(glm::vec3(0.1f, 0.2f, 0.3f), 3.0f) == glm::vec2(0.2f, 0.2f));
+    // A near pixel's surround is its floor, or the far surround where that is larger.
+    CHECK(ffxDofHighlightFloor(glm::vec3(0.1f, 0.2f, 0.1f), 3.0f) == glm::vec2(0.2f, 0.2f));
+    CHECK(ffxDofHighlightFloor(glm::vec3(0.1f, 0.2f, 0.3f), 3.0f) == glm::vec2(0.2f, 0.3f));
+    // A near leaf's rim pixel, half leaf (0.05) and half sky (2.3), over that sky: no light against the sky's mean; a
+    // near speck of 50 there is one, and gives what it has above the leaf.
+    const glm::vec3 leafOverSky(0.05f, 0.05f, 2.3f);
+    CHECK(ffxDofHighlightShare(0.5f * (0.05f + 2.3f), 3.0f, ffxDofHighlightFloor(leafOverSky, 3.0f), 1.0f) == 0.0f);
+    CHECK(ffxDofHighlightShare(50.0f, 3.0f, ffxDofHighlightFloor(leafOverSky, 3.0f), 1.0f) ==
+          shareOverFloor(50.0f, 3.0f, 0.05f, 1.0f));
     CHECK(ffxDofHighlightFloor(glm::vec3(0.1f, 0.2f, 0.3f), -3.0f) == glm::vec2(0.1f, 0.3f));
 }
 
