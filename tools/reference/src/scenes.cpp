@@ -242,6 +242,27 @@ SceneSetup brightWindow(uint32_t width, uint32_t height) {
     return setup;
 }
 
+// A row of leaves (thin boxes) in front of the camera: leaf i lies at depth zFirst + i zStep, at x = xFirst + i xStep
+// + 0.03 sin(i wobble) and y = yFirst + ySpread latticeValue(i, latticeSeed), with half sizes (width + widthStep (i
+// mod 3), height + heightStep (i mod 2), 0.01).
+struct LeafRow {
+    int count = 0;
+    double zFirst = 0.0, zStep = 0.0;
+    double xFirst = 0.0, xStep = 0.0, wobble = 0.0;
+    double yFirst = 0.0, ySpread = 0.0;
+    int latticeSeed = 0;
+    double width = 0.0, widthStep = 0.0, height = 0.0, heightStep = 0.0;
+};
+void addLeaves(Scene& scene, const LeafRow& row, const Texture& texture) {
+    for (int i = 0; i < row.count; ++i) {
+        const double z = row.zFirst + row.zStep * i;
+        const double x = row.xFirst + row.xStep * i + 0.03 * std::sin(i * row.wobble);
+        const double y = row.yFirst + row.ySpread * latticeValue(i, row.latticeSeed);
+        scene.addBox({x, y, z}, {row.width + row.widthStep * (i % 3), row.height + row.heightStep * (i % 2), 0.01},
+                     texture);
+    }
+}
+
 // Small near objects (leaves) blurred 2.7 to 6.5 times as much as the far field behind them (26 to 63 px against
 // 9.6 at 320 x 180), nothing but a small box in focus: faint veils whose pinhole silhouettes must not show
 // (issue 17's thin near objects, over a far field rather than an in-focus wall).
@@ -256,15 +277,10 @@ SceneSetup nearAndFar(uint32_t width, uint32_t height) {
     scene.addBox({0.3, -0.1, 4.0}, {0.15, 0.2, 0.15}, checker({0.9f, 0.9f, 0.9f}, {0.7f, 0.1f, 0.1f}, 0.05f));
     // In focus and out of every leaf's reach, for the in-focus gate.
     scene.addBox({1.5, 0.2, 4.0}, {0.15, 0.25, 0.15}, stripes({0.9f, 0.8f, 0.2f}, {0.1f, 0.1f, 0.3f}, 0.04f));
-    for (int i = 0; i < 9; ++i) {
-        const double z = 0.6 + 0.075 * i;
-        // Inside the frame (its half width is 0.51 z; beyond it the thin lens sees what the input does not) and
-        // in its left half.
-        const double x = -0.26 + 0.03 * i + 0.03 * std::sin(i * 1.7);
-        const double y = -0.25 + 0.3 * latticeValue(i, 5);
-        scene.addBox({x, y, z}, {0.012 + 0.01 * (i % 3), 0.05 + 0.03 * (i % 2), 0.01},
-                     noise({0.05f, 0.3f, 0.05f}, {0.3f, 0.6f, 0.2f}, 0.02f));
-    }
+    // Inside the frame (its half width is 0.51 z; beyond it the thin lens sees what the input does not) and in its
+    // left half.
+    addLeaves(scene, {9, 0.6, 0.075, -0.26, 0.03, 1.7, -0.25, 0.3, 5, 0.012, 0.01, 0.05, 0.03},
+              noise({0.05f, 0.3f, 0.05f}, {0.3f, 0.6f, 0.2f}, 0.02f));
     setApertureForBlur(setup.camera, 30.0, std::max(6.0, 0.03 * width));
     return setup;
 }
@@ -329,13 +345,8 @@ SceneSetup nearLeavesSky(uint32_t width, uint32_t height) {
     scene.addBox({0.35, 0.05, 3.0}, {0.1, 0.12, 0.1}, checker({0.9f, 0.9f, 0.9f}, {0.7f, 0.1f, 0.1f}, 0.04f));
     // In focus and out of every leaf's reach, for the in-focus gate.
     scene.addBox({1.1, -0.25, 3.0}, {0.1, 0.15, 0.1}, stripes({0.9f, 0.8f, 0.2f}, {0.1f, 0.1f, 0.3f}, 0.03f));
-    for (int i = 0; i < 8; ++i) {
-        const double z = 0.7 + 0.05 * i;
-        const double x = -0.3 + 0.05 * i + 0.03 * std::sin(i * 2.3);
-        const double y = -0.22 + 0.35 * latticeValue(i, 11);
-        scene.addBox({x, y, z}, {0.01 + 0.012 * (i % 3), 0.04 + 0.03 * (i % 2), 0.01},
-                     noise({0.02f, 0.06f, 0.02f}, {0.08f, 0.2f, 0.06f}, 0.02f));
-    }
+    addLeaves(scene, {8, 0.7, 0.05, -0.3, 0.05, 2.3, -0.22, 0.35, 11, 0.01, 0.012, 0.04, 0.03},
+              noise({0.02f, 0.06f, 0.02f}, {0.08f, 0.2f, 0.06f}, 0.02f));
     setApertureForBlur(setup.camera, 60.0, std::max(6.0, 0.03 * width));
     return setup;
 }
