@@ -197,12 +197,9 @@ FFX_DOF_GROUPSHARED FfxDofFloat3 ffxDofSharedNear[FFX_DOF_FILTERED_SIDE * FFX_DO
 FFX_DOF_GROUPSHARED FfxDofFloat3 ffxDofSharedFar[FFX_DOF_FILTERED_SIDE * FFX_DOF_FILTERED_SIDE];
 FFX_DOF_GROUPSHARED FfxFloat32x2 ffxDofSharedAlpha[FFX_DOF_FILTERED_SIDE * FFX_DOF_FILTERED_SIDE];
 FFX_DOF_GROUPSHARED FfxFloat32 ffxDofSharedCoc[FFX_DOF_FILTERED_SIDE * FFX_DOF_FILTERED_SIDE];
-// Per tile of the 9 around the group's (ffxDofTileAround): its highlights' floors (ffxDofLoadGivenHighlightFloors,
-// whose bit 31 is free: ffxDofNoHighlightFloors for a tile whose pixels gave no light) and, in bit 31, whether it may
-// hold bright small sources (ffxDofTileMayHoldBrightSmallSources; dilate's survey of the same tiles decided the
-// tile's class).
+// Per tile of the 9 around the group's (ffxDofTileAround): its highlights' floors (ffxDofLoadGivenHighlightFloors:
+// ffxDofNoHighlightFloors for a tile whose pixels gave no light).
 FFX_DOF_GROUPSHARED FfxUInt32 ffxDofSharedTilesAround[9];
-#define FFX_DOF_TILE_AROUND_SMALL_SOURCES_BIT 0x80000000u
 // Which tiles of the highlights' window hold one (ffxDofTileHoldsHighlights), a bit each in window order, and
 // whether any does.
 FFX_DOF_GROUPSHARED FfxUInt32 ffxDofSharedHighlightTiles[FFX_DOF_HIGHLIGHT_WINDOW_WORDS];
@@ -395,8 +392,7 @@ FFX_DOF_INLINE FfxDofQuadNeighbourhood ffxDofNeighbourhoodLessHighlights(FfxDofQ
         if (!ffxDofCompositeInputIsFullRes(FfxUInt32x2(pixel), quad))
             continue;
         FfxInt32x2 tileAround = pixel / extent - FfxInt32x2(groupId) + FfxInt32x2(1, 1);
-        FfxFloat32x3 floors = ffxDofUnpackHighlightFloors(ffxDofSharedTilesAround[tileAround.y * 3 + tileAround.x] &
-                                                          ~FFX_DOF_TILE_AROUND_SMALL_SOURCES_BIT);
+        FfxFloat32x3 floors = ffxDofUnpackHighlightFloors(ffxDofSharedTilesAround[tileAround.y * 3 + tileAround.x]);
         FfxFloat32 coc = ffxDofCocFromDepth(ffxDofLoadInputDepth(FfxUInt32x2(pixel)), constants.cocScale,
                                             constants.cocBias, constants.cocLimit);
         FfxFloat32x4 color = neighbourhood.color[k];
@@ -942,9 +938,9 @@ FFX_DOF_INLINE FfxBoolean ffxDofComposePixel(FfxDofUpsampleTaps taps, FfxFloat32
 FFX_DOF_INLINE void ffxDofComposite(FfxUInt32 compositeClass, FfxUInt32 listIndex, FfxUInt32 localIndex)
 {
     FfxDofConstants constants = ffxDofGetFocusedConstants();
-    FfxUInt32x2 groupId =
-        ffxDofUnpackListedTile(ffxDofListedTileWord(FfxUInt32(FFX_DOF_COMPOSITE_TILE_LIST_FIRST) + compositeClass,
-                                                    listIndex, constants.tileCount.x * constants.tileCount.y));
+    FfxUInt32 listedTile = ffxDofListedTileWord(FfxUInt32(FFX_DOF_COMPOSITE_TILE_LIST_FIRST) + compositeClass,
+                                                listIndex, constants.tileCount.x * constants.tileCount.y);
+    FfxUInt32x2 groupId = ffxDofUnpackListedTile(listedTile);
     FfxUInt32 extent = FfxUInt32(FFX_DOF_COMPOSITE_GROUP_EXTENT);
     FfxUInt32x2 quad = groupId * extent + ffxDofLocalCoord(localIndex) * 2u;
     if (compositeClass == FfxUInt32(FFX_DOF_COMPOSITE_CLASS_COPY))
@@ -984,10 +980,7 @@ FFX_DOF_INLINE void ffxDofComposite(FfxUInt32 compositeClass, FfxUInt32 listInde
     {
         FfxUInt32x2 around = ffxDofTileAround(groupId, localIndex, constants.tileCount);
         FfxFloat32x3 rangeAndPeak = ffxDofLoadTileRangeAndPeak(around);
-        FfxUInt32 tileFloors = ffxDofLoadGivenHighlightFloors(around, rangeAndPeak, constants.tileCount);
-        ffxDofSharedTilesAround[localIndex] =
-            (tileFloors & ~FFX_DOF_TILE_AROUND_SMALL_SOURCES_BIT) |
-            (ffxDofTileMayHoldBrightSmallSources(rangeAndPeak) ? FFX_DOF_TILE_AROUND_SMALL_SOURCES_BIT : 0u);
+        ffxDofSharedTilesAround[localIndex] = ffxDofLoadGivenHighlightFloors(around, rangeAndPeak, constants.tileCount);
     }
     FfxInt32x2 tileOrigin = FfxInt32x2(groupId * FfxUInt32(FFX_DOF_TILE_SIZE));
     for (FfxUInt32 index = localIndex; index < FfxUInt32(FFX_DOF_RAW_SIDE * FFX_DOF_RAW_SIDE);
@@ -1009,7 +1002,6 @@ FFX_DOF_INLINE void ffxDofComposite(FfxUInt32 compositeClass, FfxUInt32 listInde
     // The full-res neighbourhood of the own-surface gather, after the barrier above: in place, the
     // input of the group's own tile is read from group-shared memory (ffxDofCompositeInput).
     FfxBoolean ownSurfaceTile = fullResTile && ffxDofTileGathersOwnSurface(tile);
-    FfxUInt32 smallSourceTiles = 0u;
     // Whether a pixel of the full-res neighbourhood may have given light to the highlights (the same for the
     // whole group: its pixels skip the share where none does).
     FfxBoolean highlightsAround = false;
@@ -1017,14 +1009,11 @@ FFX_DOF_INLINE void ffxDofComposite(FfxUInt32 compositeClass, FfxUInt32 listInde
     {
         FFX_DOF_UNROLL
         for (FfxUInt32 k = 0u; k < 9u; ++k)
-        {
-            FfxUInt32 tileAround = ffxDofSharedTilesAround[k];
-            smallSourceTiles |= tileAround;
-            highlightsAround =
-                highlightsAround || (tileAround & ~FFX_DOF_TILE_AROUND_SMALL_SOURCES_BIT) != ffxDofNoHighlightFloors();
-        }
+            highlightsAround = highlightsAround || ffxDofSharedTilesAround[k] != ffxDofNoHighlightFloors();
     }
-    FfxBoolean smallSourceTile = (smallSourceTiles & FFX_DOF_TILE_AROUND_SMALL_SOURCES_BIT) != 0u;
+    // Dilate's survey of the same 9 tiles (ffxDofSurveyTilesAround), which chose the class.
+    FfxBoolean smallSourceTile =
+        fullResTile && (ffxDofListedTileFlags(listedTile) & FfxUInt32(FFX_DOF_LISTED_TILE_SMALL_SOURCES)) != 0u;
     // Which tiles in the highlights' window hold one, a tile an invocation (known after the next barrier).
     if (fullResTile)
     {
@@ -1063,8 +1052,8 @@ FFX_DOF_INLINE void ffxDofComposite(FfxUInt32 compositeClass, FfxUInt32 listInde
             if (highlightsAround && ffxDofCompositeInputIsFullRes(FfxUInt32x2(pixel), quad))
             {
                 FfxInt32x2 tileAround = pixel / FfxInt32(extent) - FfxInt32x2(groupId) + FfxInt32x2(1, 1);
-                FfxFloat32x3 tileFloors = ffxDofUnpackHighlightFloors(
-                    ffxDofSharedTilesAround[tileAround.y * 3 + tileAround.x] & ~FFX_DOF_TILE_AROUND_SMALL_SOURCES_BIT);
+                FfxFloat32x3 tileFloors =
+                    ffxDofUnpackHighlightFloors(ffxDofSharedTilesAround[tileAround.y * 3 + tileAround.x]);
                 sampleColor *= 1.0f - ffxDofPixelHighlightShare(FfxUInt32x2(pixel), sampleColor, sampleCoc, tileFloors,
                                                                 scale, constants.fullSize);
             }

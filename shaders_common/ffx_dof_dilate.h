@@ -147,8 +147,9 @@ FFX_DOF_INLINE FfxUInt32x2 ffxDofDilateBlock(FfxUInt32x2 groupId, FfxUInt32x2 ti
     return FfxUInt32x2(transposed % blocks.x, transposed / blocks.x);
 }
 
-// What the blur needs to know of the 3 x 3 tiles around `tile` (FFX_DOF_LISTED_TILE_*: a source or a highlight's
-// light reaches at most 2 FFX_DOF_FAR_LAYER_ONLY_RADIUS + 0.5 full-res px beyond its pixel, less than a tile).
+// What the blur and the composite need to know of the 3 x 3 tiles around `tile` (FFX_DOF_LISTED_TILE_*: a source or a
+// highlight's light reaches at most 2 FFX_DOF_FAR_LAYER_ONLY_RADIUS + 0.5 full-res px beyond its pixel, less than a
+// tile).
 FFX_DOF_INLINE FfxUInt32 ffxDofSurveyTilesAround(FfxUInt32x2 tile, FfxUInt32x2 tileCount)
 {
     FfxUInt32 flags = 0u;
@@ -197,7 +198,7 @@ FFX_DOF_INLINE void ffxDofDilate(FfxUInt32x2 groupId, FfxUInt32 localIndex)
     FfxBoolean drawsSmallSources = (around & FfxUInt32(FFX_DOF_LISTED_TILE_SMALL_SOURCES)) != 0u;
     FfxUInt32 compositeClass =
         ffxDofCompositeTileClass(ffxDofLoadTile(tile), farNear.y, drawsSmallSources || reachedByHighlights);
-    ffxDofListTile(FfxUInt32(FFX_DOF_COMPOSITE_TILE_LIST_FIRST) + compositeClass, ffxDofPackListedTile(tile, 0u),
+    ffxDofListTile(FfxUInt32(FFX_DOF_COMPOSITE_TILE_LIST_FIRST) + compositeClass, ffxDofPackListedTile(tile, around),
                    tilesPerList);
 }
 

@@ -103,9 +103,9 @@ FFX_DOF_INLINE FfxFloat32 ffxDofHighlightShare(FfxFloat32 luminance, FfxFloat32 
 // light is the far field around it) among the mean far luminance there (the surround, ffxDofHighlightShare); near
 // pixels on the dimmest pixel of any kind there (a near light stands in front of whatever lies around it: an
 // in-focus wall holds no far pixel), among the larger of that and the far surround (ffxDofHighlightFloor). Stored in
-// one word of HIGHLIGHTS, 10 bits
-// each (far floor, near floor, far surround; bit 30 FFX_DOF_HIGHLIGHT_GIVEN_BIT, bit 31 free), and pass 2 gives
-// light over the floors as stored, so that the composite, which reads them back, takes the same shares to the bit.
+// one word of HIGHLIGHTS, 10 bits each (far floor, near floor, far surround; bit 30 FFX_DOF_HIGHLIGHT_GIVEN_BIT, bit
+// 31 free), and pass 2 gives light over the floors as stored, so that the composite, which reads them back, takes the
+// same shares to the bit.
 // FFX_DOF_HIGHLIGHT_NO_FLOOR, the largest half, over which no pixel gives light (the HDR range keeps them at
 // FFX_DOF_COLOR_RANGE_LIMIT): none of that kind there.
 #define FFX_DOF_HIGHLIGHT_NO_FLOOR 65504.0f

@@ -80,8 +80,8 @@ FFX_DOF_INLINE FfxUInt32 ffxDofCompositeTileClass(FfxFloat32x2 tile, FfxFloat32 
 // tells the pass of the tiles around it beyond their DILATED_TILES texel (FFX_DOF_LISTED_TILE_*), decided once per tile
 // instead of once per invocation.
 #define FFX_DOF_LISTED_TILE_FLAGS_SHIFT 30u
-// The blur's flags. The tile or one of the 8 around may hold bright small far sources, which the composite draws
-// at full resolution (ffxDofTileMayHoldBrightSmallSources): the blur leaves them out of its layers.
+// The flags, in both passes' entries. The tile or one of the 8 around may hold bright small far sources, which the
+// composite draws at full resolution (ffxDofTileMayHoldBrightSmallSources) and the blur leaves out of its layers.
 #define FFX_DOF_LISTED_TILE_SMALL_SOURCES 1u
 // ... or gave light to the highlights (ffxDofLoadGivenHighlightFloors): the far kernels keep the finer MIP
 // (ffxDofKernelTakesCoarserMip).
