@@ -10,7 +10,8 @@
 // path: the composite's full-res gather loops over 13 x 13 pixels, which made it 1.4 times as long
 // over a band of small radii where it ran everywhere (docs/performance.md).
 //
-// Both passes decide per tile and from the same texels, so what one leaves out the other draws.
+// Dilate decides it once per tile for both passes (ffxDofSurveyTilesAround, in their list entries), so what one
+// leaves out the other draws.
 #ifndef FFX_DOF_SMALL_SOURCES_H
 #define FFX_DOF_SMALL_SOURCES_H
 
