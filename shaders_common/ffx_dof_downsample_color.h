@@ -421,6 +421,9 @@ FFX_DOF_INLINE FfxDofHighlightSums ffxDofQuadrantHighlightSums(FfxUInt32 quadran
 // count of the far luminances (the floors its far and near highlights stand on and the far surround,
 // ffxDofPackHighlightFloors).
 FFX_DOF_GROUPSHARED FfxFloat32x4 ffxDofSharedWaveFloors[FFX_DOF_GROUP_THREADS];
+// Per wave, the far pixels' sums of ffxDofFarBrightnessSample (whether the tile is a bright far field behind nearer
+// far content).
+FFX_DOF_GROUPSHARED FfxFloat32x4 ffxDofSharedWaveFarBrightness[FFX_DOF_GROUP_THREADS];
 
 // Scaled in 32-bit (and clamped to the half range) before any conversion to 16 bits.
 FFX_DOF_INLINE FfxFloat32x4 ffxDofLoadScaledInputColor(FfxUInt32x2 pixel, FfxFloat32 scale)
@@ -428,17 +431,17 @@ FFX_DOF_INLINE FfxFloat32x4 ffxDofLoadScaledInputColor(FfxUInt32x2 pixel, FfxFlo
     return ffxDofScaleColor(ffxDofLoadInputColor(pixel), scale);
 }
 
-FFX_DOF_INLINE FfxFloat32 ffxDofLoadInputCoc(FfxUInt32x2 pixel, FfxDofConstants constants)
-{
-    return ffxDofCocFromDepth(ffxDofLoadInputDepth(pixel), constants.cocScale, constants.cocBias, constants.cocLimit);
-}
-
-// A pixel's (luminance, radius) for the rim grid, and the luminance where it is in the far field (else the largest
-// float): what the highlights' floor takes.
-FFX_DOF_INLINE FfxFloat32x2 ffxDofRimSample(FfxFloat32x4 color, FfxUInt32x2 pixel, FfxDofConstants constants)
+// A pixel's (luminance, radius) for the rim grid, from its colour and depth, and the luminance where it is in the far
+// field (else the largest float): what the highlights' floor takes.
+FFX_DOF_INLINE FfxFloat32x2 ffxDofRimSample(FfxFloat32x4 color, FfxFloat32 depth, FfxDofConstants constants)
 {
     return FfxFloat32x2(ffxDofLuminance32(FfxFloat32x3(color.x, color.y, color.z)),
-                        ffxDofLoadInputCoc(pixel, constants));
+                        ffxDofCocFromDepth(depth, constants.cocScale, constants.cocBias, constants.cocLimit));
+}
+// A pixel's radius before the limit clamps it: the depth order of far pixels that the limit gives one radius.
+FFX_DOF_INLINE FfxFloat32 ffxDofUnclampedCoc(FfxFloat32 depth, FfxDofConstants constants)
+{
+    return depth * constants.cocScale + constants.cocBias;
 }
 FFX_DOF_INLINE FfxFloat32 ffxDofFarLuminance(FfxFloat32x2 rimSample)
 {
@@ -505,10 +508,14 @@ FFX_DOF_INLINE void ffxDofDownsampleColor(FfxUInt32x2 groupId, FfxUInt32 localIn
 
     // The light rims need each pixel's 8 neighbours: the group's pixels and a border of one.
     FfxUInt32x2 cell = local * 2u + FfxUInt32x2(1u, 1u);
-    FfxFloat32x2 rim0 = ffxDofRimSample(input0, pixel0, constants);
-    FfxFloat32x2 rim1 = ffxDofRimSample(input1, pixel1, constants);
-    FfxFloat32x2 rim2 = ffxDofRimSample(input2, pixel2, constants);
-    FfxFloat32x2 rim3 = ffxDofRimSample(input3, pixel3, constants);
+    FfxFloat32 depth0 = ffxDofLoadInputDepth(pixel0);
+    FfxFloat32 depth1 = ffxDofLoadInputDepth(pixel1);
+    FfxFloat32 depth2 = ffxDofLoadInputDepth(pixel2);
+    FfxFloat32 depth3 = ffxDofLoadInputDepth(pixel3);
+    FfxFloat32x2 rim0 = ffxDofRimSample(input0, depth0, constants);
+    FfxFloat32x2 rim1 = ffxDofRimSample(input1, depth1, constants);
+    FfxFloat32x2 rim2 = ffxDofRimSample(input2, depth2, constants);
+    FfxFloat32x2 rim3 = ffxDofRimSample(input3, depth3, constants);
     ffxDofSharedRimSample[cell.y * FFX_DOF_RIM_SIDE + cell.x] = rim0;
     ffxDofSharedRimSample[cell.y * FFX_DOF_RIM_SIDE + cell.x + 1u] = rim1;
     ffxDofSharedRimSample[(cell.y + 1u) * FFX_DOF_RIM_SIDE + cell.x] = rim2;
@@ -522,6 +529,11 @@ FFX_DOF_INLINE void ffxDofDownsampleColor(FfxUInt32x2 groupId, FfxUInt32 localIn
     FfxFloat32 dimmest = min(min(rim0.x, rim1.x), min(rim2.x, rim3.x));
     FfxFloat32x2 farSum = ffxDofFarLuminanceSum(rim0) + ffxDofFarLuminanceSum(rim1) + ffxDofFarLuminanceSum(rim2) +
                           ffxDofFarLuminanceSum(rim3);
+    FfxFloat32 white = FFX_DOF_HIGHLIGHT_MIN_LUMINANCE * scale;
+    FfxFloat32x4 farBrightness = ffxDofFarBrightnessSample(rim0, ffxDofUnclampedCoc(depth0, constants), white) +
+                                 ffxDofFarBrightnessSample(rim1, ffxDofUnclampedCoc(depth1, constants), white) +
+                                 ffxDofFarBrightnessSample(rim2, ffxDofUnclampedCoc(depth2, constants), white) +
+                                 ffxDofFarBrightnessSample(rim3, ffxDofUnclampedCoc(depth3, constants), white);
     FfxInt32x2 origin = FfxInt32x2(groupId * (2u * FfxUInt32(FFX_DOF_TILE_SIZE))) - FfxInt32x2(1, 1);
     FFX_DOF_LOOP
     for (FfxUInt32 border = localIndex; border < 4u * (FFX_DOF_RIM_SIDE - 1u); border += FFX_DOF_GROUP_THREADS)
@@ -529,17 +541,23 @@ FFX_DOF_INLINE void ffxDofDownsampleColor(FfxUInt32x2 groupId, FfxUInt32 localIn
         FfxUInt32x2 borderCell = ffxDofRimBorderCell(border);
         FfxUInt32x2 pixel =
             FfxUInt32x2(clamp(origin + FfxInt32x2(borderCell), FfxInt32x2(0, 0), FfxInt32x2(lastPixel)));
-        FfxFloat32x2 bordering = ffxDofRimSample(ffxDofLoadScaledInputColor(pixel, scale), pixel, constants);
+        FfxFloat32 borderingDepth = ffxDofLoadInputDepth(pixel);
+        FfxFloat32x2 bordering = ffxDofRimSample(ffxDofLoadScaledInputColor(pixel, scale), borderingDepth, constants);
         ffxDofSharedRimSample[borderCell.y * FFX_DOF_RIM_SIDE + borderCell.x] = bordering;
         dimmestFar = min(dimmestFar, ffxDofFarLuminance(bordering));
         dimmest = min(dimmest, bordering.x);
         farSum += ffxDofFarLuminanceSum(bordering);
+        farBrightness += ffxDofFarBrightnessSample(bordering, ffxDofUnclampedCoc(borderingDepth, constants), white);
     }
     dimmestFar = ffxDofWaveMin(dimmestFar);
     dimmest = ffxDofWaveMin(dimmest);
     farSum = FfxFloat32x2(ffxDofWaveSum(farSum.x), ffxDofWaveSum(farSum.y));
+    farBrightness = ffxDofWaveSum(farBrightness);
     if (ffxDofWaveIsFirstLane())
+    {
         ffxDofSharedWaveFloors[ffxDofWaveIndex(localIndex)] = FfxFloat32x4(dimmestFar, dimmest, farSum.x, farSum.y);
+        ffxDofSharedWaveFarBrightness[ffxDofWaveIndex(localIndex)] = farBrightness;
+    }
     ffxDofGroupBarrier();
     // The quad's 4 x 4 neighbourhood read once for its four pixels (16 group-shared reads instead of 36: on
     // lavapipe each is a loop over the lanes).
@@ -567,13 +585,18 @@ FFX_DOF_INLINE void ffxDofDownsampleColor(FfxUInt32x2 groupId, FfxUInt32 localIn
     // bright, docs/technique.md); as the composite reads them back (ffxDofPackHighlightFloors).
     FfxFloat32x2 tileMinima = FfxFloat32x2(FFX_DOF_FLOAT32_MAX, FFX_DOF_FLOAT32_MAX);
     FfxFloat32x2 tileFarSum = FfxFloat32x2(0.0f, 0.0f);
+    FfxFloat32x4 tileFarBrightness = FfxFloat32x4(0.0f, 0.0f, 0.0f, 0.0f);
     FFX_DOF_LOOP
     for (FfxUInt32 wave = 0u; wave < ffxDofWaveCount(); ++wave)
     {
         FfxFloat32x4 waveFloors = ffxDofSharedWaveFloors[wave];
         tileMinima = min(tileMinima, FfxFloat32x2(waveFloors.x, waveFloors.y));
         tileFarSum += FfxFloat32x2(waveFloors.z, waveFloors.w);
+        tileFarBrightness += ffxDofSharedWaveFarBrightness[wave];
     }
+    // A bright far field behind nearer far content gives no far light: its far floor is none.
+    if (ffxDofBrightFieldBehind(tileFarBrightness))
+        tileMinima.x = FFX_DOF_HIGHLIGHT_NO_FLOOR;
     FfxUInt32 packedFloors =
         ffxDofPackHighlightFloors(FfxFloat32x3(tileMinima.x, tileMinima.y, ffxDofFarSurround(tileFarSum)));
     FfxFloat32x3 tileFloors = ffxDofUnpackHighlightFloors(packedFloors);

@@ -153,6 +153,37 @@ FFX_DOF_INLINE FfxFloat32 ffxDofFarSurround(FfxFloat32x2 farLuminanceSum)
     return farLuminanceSum.y > 0.0f ? farLuminanceSum.x / farLuminanceSum.y : 0.0f;
 }
 
+// ---- A bright far field behind nearer far content ------------------------------------------------
+
+// A sky brighter than display white seen between dark far branches nearer than it: where the branches cover more than
+// half of a tile, the sky there is twice the tile's mean and gives light, and every tile its discs reach drew those
+// discs at full resolution: the composite of the scene far-branches took 3.2 times the floor's (docs/technique.md, "A
+// bright far field behind nearer far content"). A light lies in front of what surrounds it, or at its depth; a bright
+// far field showing through nearer far content lies behind it. So a tile gives no far light where its far pixels
+// above white cover at least FFX_DOF_BRIGHT_FIELD_MIN_SHARE of its far pixels (and its border's) and lie on average
+// more than FFX_DOF_BRIGHT_FIELD_DEPTH_GAP half-res px of radius behind the other far pixels: a light of up to 4 x 4
+// px behind branches stays a light.
+#define FFX_DOF_BRIGHT_FIELD_MIN_SHARE 0.0625f
+#define FFX_DOF_BRIGHT_FIELD_DEPTH_GAP 1.0f
+// What a far pixel of (luminance, radius) `rimSample` adds to its tile's (bright count, bright radius sum, other count,
+// other radius sum), `white` display white in the scaled input's units; nothing for a pixel not in the far field. The
+// sums take its radius before the limit clamps it (`unclampedCoc`): far branches and the sky behind them often share
+// the limit's radius.
+FFX_DOF_INLINE FfxFloat32x4 ffxDofFarBrightnessSample(FfxFloat32x2 rimSample, FfxFloat32 unclampedCoc, FfxFloat32 white)
+{
+    if (!(rimSample.y <= -FFX_DOF_IN_FOCUS_RADIUS))
+        return FfxFloat32x4(0.0f, 0.0f, 0.0f, 0.0f);
+    return rimSample.x > white ? FfxFloat32x4(1.0f, unclampedCoc, 0.0f, 0.0f)
+                               : FfxFloat32x4(0.0f, 0.0f, 1.0f, unclampedCoc);
+}
+// Whether a tile of such sums is a bright far field behind nearer far content, which gives no far light.
+FFX_DOF_INLINE FfxBoolean ffxDofBrightFieldBehind(FfxFloat32x4 sums)
+{
+    if (!(sums.x > 0.0f && sums.z > 0.0f) || sums.x < FFX_DOF_BRIGHT_FIELD_MIN_SHARE * (sums.x + sums.z))
+        return false;
+    return sums.y / sums.x < sums.w / sums.z - FFX_DOF_BRIGHT_FIELD_DEPTH_GAP;
+}
+
 // Set in a tile's word of floors where its pixels gave light (a slot of the tile holds some): dilate and the composite
 // tell from this one bit, not from the colour peak, which tiles' highlights are drawn. A sky above white behind dark
 // branches gives none (ffxDofHighlightShare), and judged by its peak every tile such a tile's discs could reach

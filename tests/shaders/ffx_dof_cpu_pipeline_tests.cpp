@@ -1065,7 +1065,7 @@ TEST_CASE("A thin far object over a far field above white is blurred as over the
     CHECK(largestDifference <= 0.02);
 }
 
-TEST_CASE("A far field above white without lights takes the cheap paths; a light there only around itself",
+TEST_CASE("A far field above white without lights takes the cheap paths, a light there only around itself",
           "[pipeline]") {
     // A sky from 1.8 to 2.8 (above white, no pixel twice its surround) at far radius 6 half-res px: nothing in it is
     // a light, and nothing in it is below FFX_DOF_FAR_LAYER_ONLY_RADIUS. Until dilate asked which tiles' pixels gave
@@ -1103,6 +1103,48 @@ TEST_CASE("A far field above white without lights takes the cheap paths; a light
             if (away == 0) CHECK(layers.compositeClasses[tile] == uint32_t(FFX_DOF_COMPOSITE_CLASS_FULL_RES));
             if (away >= 3) CHECK(layers.compositeClasses[tile] == uint32_t(FFX_DOF_COMPOSITE_CLASS_LAYERS));
         }
+}
+
+TEST_CASE("A sky above white between nearer dark far branches is no light, bright bars in front of a dark field are",
+          "[pipeline]") {
+    // Dark bars of 12 px every 16 px at far radius 5 half-res px in front of a sky of 2.3 at radius 9: each tile is a
+    // quarter sky, which is more than twice the tile's mean far luminance, and until a bright far field behind nearer
+    // far content gave no light (ffxDofBrightFieldBehind) every tile gave light and every tile its discs reached took
+    // the composite's full-resolution path (far-branches at 1080p: 3.4 times as long; docs/performance.md, "A bright
+    // far field behind nearer far content"). The same with the limit at 4 half-res px, which gives both one radius:
+    // the depth order is taken before the limit. With the depths swapped the bright bars lie in front of the dark
+    // field, as lights do, and give light.
+    const uint32_t w = 256, h = 160;
+    auto barsScene = [&](float skyRadius, float barRadius) {
+        Scene scene = makeScene(w, h, glm::vec4(2.3f, 2.3f, 2.3f, 1.0f), -skyRadius);
+        for (uint32_t y = 0; y < h; ++y)
+            for (uint32_t x = 0; x < w; ++x)
+                if (x % 16u >= 2u && x % 16u < 14u) {
+                    const size_t i = size_t(y) * w + x;
+                    scene.color[i] = glm::vec4(glm::vec3(0.05f), 1.0f);
+                    scene.depth[i] = barRadius;  // radius = -depth: far
+                }
+        return scene;
+    };
+    auto tilesGivingLight = [&](const Scene& scene, float cocLimit) {
+        Settings settings;
+        settings.cocLimit = cocLimit;
+        Layers layers;
+        ffxdoftest::runPipeline(scene, settings, &layers);
+        size_t count = 0;
+        for (const uint32_t flags : layers.blurTileFlags)
+            if ((flags & uint32_t(FFX_DOF_LISTED_TILE_LIGHTS)) != 0u) ++count;
+        size_t fullRes = 0;
+        for (const uint32_t compositeClass : layers.compositeClasses)
+            if (compositeClass == uint32_t(FFX_DOF_COMPOSITE_CLASS_FULL_RES)) ++fullRes;
+        INFO("tiles " << layers.blurTileFlags.size() << ", with lights around " << count << ", full resolution "
+                      << fullRes);
+        if (count == 0) CHECK(fullRes == 0);
+        return count;
+    };
+    CHECK(tilesGivingLight(barsScene(9.0f, 5.0f), 10.0f) == 0);
+    CHECK(tilesGivingLight(barsScene(9.0f, 5.0f), 4.0f) == 0);
+    CHECK(tilesGivingLight(barsScene(5.0f, 9.0f), 10.0f) > 0);
 }
 
 TEST_CASE("A dark near object's anti-aliased rim over a sky above white is no near light", "[pipeline]") {

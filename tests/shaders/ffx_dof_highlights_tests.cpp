@@ -46,7 +46,7 @@ TEST_CASE("RGB9E5 keeps a colour within half a step of its largest channel", "[h
 }
 
 TEST_CASE(
-    "A packed highlight keeps its place, radius, axis, spread and energy within their steps; an empty slot is "
+    "A packed highlight keeps its place, radius, axis, spread and energy within their steps, an empty slot is "
     "zero",
     "[highlights]") {
     std::mt19937 rng(5);
@@ -131,6 +131,27 @@ TEST_CASE("The composite knows what pass 2 took of a pixel, but for a quad the i
     // The near floor for a near pixel.
     CHECK(ffxDofPixelHighlightShare(glm::uvec2(10u, 19u), light, -coc, floors, scale, size) ==
           shareOverFloor(ffxDofLuminance32(light), -coc, floors.y, scale));
+}
+
+TEST_CASE("A bright far field behind nearer far content gives no far light", "[highlights]") {
+    // Far pixels above white (here 1) count as bright, with the radius their depth gives before the limit.
+    const float white = 1.0f;
+    CHECK(ffxDofFarBrightnessSample(glm::vec2(2.3f, -5.0f), -12.0f, white) == glm::vec4(1.0f, -12.0f, 0.0f, 0.0f));
+    CHECK(ffxDofFarBrightnessSample(glm::vec2(0.05f, -5.0f), -7.0f, white) == glm::vec4(0.0f, 0.0f, 1.0f, -7.0f));
+    CHECK(ffxDofFarBrightnessSample(glm::vec2(2.3f, -0.25f), -0.25f, white) == glm::vec4(0.0f));
+    CHECK(ffxDofFarBrightnessSample(glm::vec2(2.3f, 4.0f), 4.0f, white) == glm::vec4(0.0f));
+    // A tile of 324 px, a quarter sky at radius -12 behind branches at -7: a field. In front of them, or at their
+    // depth but for less than FFX_DOF_BRIGHT_FIELD_DEPTH_GAP: lights.
+    CHECK(ffxDofBrightFieldBehind(glm::vec4(81.0f, 81.0f * -12.0f, 243.0f, 243.0f * -7.0f)));
+    CHECK_FALSE(ffxDofBrightFieldBehind(glm::vec4(81.0f, 81.0f * -7.0f, 243.0f, 243.0f * -12.0f)));
+    CHECK_FALSE(ffxDofBrightFieldBehind(glm::vec4(81.0f, 81.0f * -7.9f, 243.0f, 243.0f * -7.0f)));
+    // A light of 4 x 4 px behind the branches (16 of 324, below FFX_DOF_BRIGHT_FIELD_MIN_SHARE) stays one; from 21 px on
+    // it is a field.
+    CHECK_FALSE(ffxDofBrightFieldBehind(glm::vec4(16.0f, 16.0f * -12.0f, 308.0f, 308.0f * -7.0f)));
+    CHECK(ffxDofBrightFieldBehind(glm::vec4(21.0f, 21.0f * -12.0f, 303.0f, 303.0f * -7.0f)));
+    // Only bright pixels, or none: no field.
+    CHECK_FALSE(ffxDofBrightFieldBehind(glm::vec4(324.0f, 324.0f * -12.0f, 0.0f, 0.0f)));
+    CHECK_FALSE(ffxDofBrightFieldBehind(glm::vec4(0.0f, 0.0f, 324.0f, 324.0f * -12.0f)));
 }
 
 TEST_CASE("A far pixel is a light by its far surround, and gives what it has above its floor", "[highlights]") {
