@@ -145,8 +145,8 @@ TEST_CASE("A bright far field behind nearer far content gives no far light", "[h
     CHECK(ffxDofBrightFieldBehind(glm::vec4(81.0f, 81.0f * -12.0f, 243.0f, 243.0f * -7.0f)));
     CHECK_FALSE(ffxDofBrightFieldBehind(glm::vec4(81.0f, 81.0f * -7.0f, 243.0f, 243.0f * -12.0f)));
     CHECK_FALSE(ffxDofBrightFieldBehind(glm::vec4(81.0f, 81.0f * -7.9f, 243.0f, 243.0f * -7.0f)));
-    // A light of 4 x 4 px behind the branches (16 of 324, below FFX_DOF_BRIGHT_FIELD_MIN_SHARE) stays one; from 21 px on
-    // it is a field.
+    // A light of 4 x 4 px behind the branches (16 of 324, below FFX_DOF_BRIGHT_FIELD_MIN_SHARE) stays one; from 21 px
+    // on it is a field.
     CHECK_FALSE(ffxDofBrightFieldBehind(glm::vec4(16.0f, 16.0f * -12.0f, 308.0f, 308.0f * -7.0f)));
     CHECK(ffxDofBrightFieldBehind(glm::vec4(21.0f, 21.0f * -12.0f, 303.0f, 303.0f * -7.0f)));
     // Only bright pixels, or none: no field.
