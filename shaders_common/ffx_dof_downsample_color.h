@@ -431,17 +431,19 @@ FFX_DOF_INLINE FfxFloat32x4 ffxDofLoadScaledInputColor(FfxUInt32x2 pixel, FfxFlo
     return ffxDofScaleColor(ffxDofLoadInputColor(pixel), scale);
 }
 
-// A pixel's (luminance, radius) for the rim grid, from its colour and depth, and the luminance where it is in the far
-// field (else the largest float): what the highlights' floor takes.
-FFX_DOF_INLINE FfxFloat32x2 ffxDofRimSample(FfxFloat32x4 color, FfxFloat32 depth, FfxDofConstants constants)
-{
-    return FfxFloat32x2(ffxDofLuminance32(FfxFloat32x3(color.x, color.y, color.z)),
-                        ffxDofCocFromDepth(depth, constants.cocScale, constants.cocBias, constants.cocLimit));
-}
-// A pixel's radius before the limit clamps it: the depth order of far pixels that the limit gives one radius.
+// A pixel's radius before the limit clamps it (ffxDofCocFromDepth without the clamp): the depth order of far pixels
+// that the limit gives one radius.
 FFX_DOF_INLINE FfxFloat32 ffxDofUnclampedCoc(FfxFloat32 depth, FfxDofConstants constants)
 {
     return depth * constants.cocScale + constants.cocBias;
+}
+// A pixel's (luminance, radius) for the rim grid, from its colour and its radius before the limit
+// (ffxDofUnclampedCoc), and the luminance where it is in the far field (else the largest float): what the highlights'
+// floor takes.
+FFX_DOF_INLINE FfxFloat32x2 ffxDofRimSample(FfxFloat32x4 color, FfxFloat32 unclampedCoc, FfxDofConstants constants)
+{
+    return FfxFloat32x2(ffxDofLuminance32(FfxFloat32x3(color.x, color.y, color.z)),
+                        clamp(unclampedCoc, -constants.cocLimit, constants.cocLimit));
 }
 FFX_DOF_INLINE FfxFloat32 ffxDofFarLuminance(FfxFloat32x2 rimSample)
 {
@@ -508,14 +510,14 @@ FFX_DOF_INLINE void ffxDofDownsampleColor(FfxUInt32x2 groupId, FfxUInt32 localIn
 
     // The light rims need each pixel's 8 neighbours: the group's pixels and a border of one.
     FfxUInt32x2 cell = local * 2u + FfxUInt32x2(1u, 1u);
-    FfxFloat32 depth0 = ffxDofLoadInputDepth(pixel0);
-    FfxFloat32 depth1 = ffxDofLoadInputDepth(pixel1);
-    FfxFloat32 depth2 = ffxDofLoadInputDepth(pixel2);
-    FfxFloat32 depth3 = ffxDofLoadInputDepth(pixel3);
-    FfxFloat32x2 rim0 = ffxDofRimSample(input0, depth0, constants);
-    FfxFloat32x2 rim1 = ffxDofRimSample(input1, depth1, constants);
-    FfxFloat32x2 rim2 = ffxDofRimSample(input2, depth2, constants);
-    FfxFloat32x2 rim3 = ffxDofRimSample(input3, depth3, constants);
+    FfxFloat32 unclamped0 = ffxDofUnclampedCoc(ffxDofLoadInputDepth(pixel0), constants);
+    FfxFloat32 unclamped1 = ffxDofUnclampedCoc(ffxDofLoadInputDepth(pixel1), constants);
+    FfxFloat32 unclamped2 = ffxDofUnclampedCoc(ffxDofLoadInputDepth(pixel2), constants);
+    FfxFloat32 unclamped3 = ffxDofUnclampedCoc(ffxDofLoadInputDepth(pixel3), constants);
+    FfxFloat32x2 rim0 = ffxDofRimSample(input0, unclamped0, constants);
+    FfxFloat32x2 rim1 = ffxDofRimSample(input1, unclamped1, constants);
+    FfxFloat32x2 rim2 = ffxDofRimSample(input2, unclamped2, constants);
+    FfxFloat32x2 rim3 = ffxDofRimSample(input3, unclamped3, constants);
     ffxDofSharedRimSample[cell.y * FFX_DOF_RIM_SIDE + cell.x] = rim0;
     ffxDofSharedRimSample[cell.y * FFX_DOF_RIM_SIDE + cell.x + 1u] = rim1;
     ffxDofSharedRimSample[(cell.y + 1u) * FFX_DOF_RIM_SIDE + cell.x] = rim2;
@@ -529,11 +531,10 @@ FFX_DOF_INLINE void ffxDofDownsampleColor(FfxUInt32x2 groupId, FfxUInt32 localIn
     FfxFloat32 dimmest = min(min(rim0.x, rim1.x), min(rim2.x, rim3.x));
     FfxFloat32x2 farSum = ffxDofFarLuminanceSum(rim0) + ffxDofFarLuminanceSum(rim1) + ffxDofFarLuminanceSum(rim2) +
                           ffxDofFarLuminanceSum(rim3);
-    FfxFloat32 white = FFX_DOF_HIGHLIGHT_MIN_LUMINANCE * scale;
-    FfxFloat32x4 farBrightness = ffxDofFarBrightnessSample(rim0, ffxDofUnclampedCoc(depth0, constants), white) +
-                                 ffxDofFarBrightnessSample(rim1, ffxDofUnclampedCoc(depth1, constants), white) +
-                                 ffxDofFarBrightnessSample(rim2, ffxDofUnclampedCoc(depth2, constants), white) +
-                                 ffxDofFarBrightnessSample(rim3, ffxDofUnclampedCoc(depth3, constants), white);
+    FfxFloat32 white = ffxDofHighlightWhite(scale);
+    FfxFloat32x4 farBrightness =
+        ffxDofFarBrightnessSample(rim0, unclamped0, white) + ffxDofFarBrightnessSample(rim1, unclamped1, white) +
+        ffxDofFarBrightnessSample(rim2, unclamped2, white) + ffxDofFarBrightnessSample(rim3, unclamped3, white);
     FfxInt32x2 origin = FfxInt32x2(groupId * (2u * FfxUInt32(FFX_DOF_TILE_SIZE))) - FfxInt32x2(1, 1);
     FFX_DOF_LOOP
     for (FfxUInt32 border = localIndex; border < 4u * (FFX_DOF_RIM_SIDE - 1u); border += FFX_DOF_GROUP_THREADS)
@@ -541,13 +542,14 @@ FFX_DOF_INLINE void ffxDofDownsampleColor(FfxUInt32x2 groupId, FfxUInt32 localIn
         FfxUInt32x2 borderCell = ffxDofRimBorderCell(border);
         FfxUInt32x2 pixel =
             FfxUInt32x2(clamp(origin + FfxInt32x2(borderCell), FfxInt32x2(0, 0), FfxInt32x2(lastPixel)));
-        FfxFloat32 borderingDepth = ffxDofLoadInputDepth(pixel);
-        FfxFloat32x2 bordering = ffxDofRimSample(ffxDofLoadScaledInputColor(pixel, scale), borderingDepth, constants);
+        FfxFloat32 borderingUnclamped = ffxDofUnclampedCoc(ffxDofLoadInputDepth(pixel), constants);
+        FfxFloat32x2 bordering =
+            ffxDofRimSample(ffxDofLoadScaledInputColor(pixel, scale), borderingUnclamped, constants);
         ffxDofSharedRimSample[borderCell.y * FFX_DOF_RIM_SIDE + borderCell.x] = bordering;
         dimmestFar = min(dimmestFar, ffxDofFarLuminance(bordering));
         dimmest = min(dimmest, bordering.x);
         farSum += ffxDofFarLuminanceSum(bordering);
-        farBrightness += ffxDofFarBrightnessSample(bordering, ffxDofUnclampedCoc(borderingDepth, constants), white);
+        farBrightness += ffxDofFarBrightnessSample(bordering, borderingUnclamped, white);
     }
     dimmestFar = ffxDofWaveMin(dimmestFar);
     dimmest = ffxDofWaveMin(dimmest);

@@ -29,6 +29,9 @@
 // A quad pixel gives light to the full-resolution path from this luminance on (display white, in the
 // input's units), fully from twice it: below white a soft rim costs little the eye sees.
 #define FFX_DOF_HIGHLIGHT_MIN_LUMINANCE 1.0f
+// That luminance in the units of the input scaled by `scale` (ffxDofColorRangeScale), as pass 2 and the composite see
+// it.
+FFX_DOF_INLINE FfxFloat32 ffxDofHighlightWhite(FfxFloat32 scale) { return FFX_DOF_HIGHLIGHT_MIN_LUMINANCE * scale; }
 // ... and where it is at least this many times as bright as its floor, the dimmest far pixel of its tile and
 // the tile's border (fully from twice it): the contrast of a light against what lies around it.
 #define FFX_DOF_HIGHLIGHT_CONTRAST 2.0f
@@ -93,8 +96,7 @@ FFX_DOF_INLINE FfxFloat32 ffxDofHighlightShare(FfxFloat32 luminance, FfxFloat32 
         return 0.0f;
     FfxFloat32 floorLuminance = floorAndSurround.x;
     FfxFloat32 surround = max(floorAndSurround.y, floorLuminance);
-    FfxFloat32 white = FFX_DOF_HIGHLIGHT_MIN_LUMINANCE * scale;
-    FfxFloat32 bright = ffxDofSaturate(luminance / white - 1.0f);
+    FfxFloat32 bright = ffxDofSaturate(luminance / ffxDofHighlightWhite(scale) - 1.0f);
     FfxFloat32 contrast = ffxDofSaturate(luminance / max(FFX_DOF_HIGHLIGHT_CONTRAST * surround, 1e-30f) - 1.0f);
     return bright * contrast * ffxDofHighlightRadiusRamp(coc) * ffxDofSaturate(1.0f - floorLuminance / luminance);
 }
@@ -166,7 +168,8 @@ FFX_DOF_INLINE FfxFloat32 ffxDofFarSurround(FfxFloat32x2 farLuminanceSum)
 #define FFX_DOF_BRIGHT_FIELD_MIN_SHARE 0.0625f
 #define FFX_DOF_BRIGHT_FIELD_DEPTH_GAP 1.0f
 // What a far pixel of (luminance, radius) `rimSample` adds to its tile's (bright count, bright radius sum, other count,
-// other radius sum), `white` display white in the scaled input's units; nothing for a pixel not in the far field. The
+// other radius sum), `white` display white in the scaled input's units (ffxDofHighlightWhite); nothing for a pixel not
+// in the far field. The
 // sums take its radius before the limit clamps it (`unclampedCoc`): far branches and the sky behind them often share
 // the limit's radius.
 FFX_DOF_INLINE FfxFloat32x4 ffxDofFarBrightnessSample(FfxFloat32x2 rimSample, FfxFloat32 unclampedCoc, FfxFloat32 white)
