@@ -417,13 +417,11 @@ FFX_DOF_INLINE FfxDofHighlightSums ffxDofQuadrantHighlightSums(FfxUInt32 quadran
     return sums;
 }
 
-// Per wave, over the group's pixels and border: the dimmest far luminance, the dimmest luminance, and the sum and
-// count of the far luminances (the floors its far and near highlights stand on and the far surround,
-// ffxDofPackHighlightFloors).
+// Per wave, over the group's pixels and border: the dimmest far luminance, the dimmest luminance (the floors its far
+// and near highlights stand on, ffxDofPackHighlightFloors) and the radii of the far pixels above white; and the far
+// sums (ffxDofFarSums: the far surround, and whether the tile is a bright far field behind nearer far content).
 FFX_DOF_GROUPSHARED FfxFloat32x4 ffxDofSharedWaveFloors[FFX_DOF_GROUP_THREADS];
-// Per wave, the far pixels' sums of ffxDofFarBrightnessSample (whether the tile is a bright far field behind nearer
-// far content).
-FFX_DOF_GROUPSHARED FfxFloat32x4 ffxDofSharedWaveFarBrightness[FFX_DOF_GROUP_THREADS];
+FFX_DOF_GROUPSHARED FfxFloat32x4 ffxDofSharedWaveFarSums[FFX_DOF_GROUP_THREADS];
 
 // Scaled in 32-bit (and clamped to the half range) before any conversion to 16 bits.
 FFX_DOF_INLINE FfxFloat32x4 ffxDofLoadScaledInputColor(FfxUInt32x2 pixel, FfxFloat32 scale)
@@ -448,12 +446,6 @@ FFX_DOF_INLINE FfxFloat32x2 ffxDofRimSample(FfxFloat32x4 color, FfxFloat32 uncla
 FFX_DOF_INLINE FfxFloat32 ffxDofFarLuminance(FfxFloat32x2 rimSample)
 {
     return rimSample.y <= -FFX_DOF_IN_FOCUS_RADIUS ? rimSample.x : FFX_DOF_FLOAT32_MAX;
-}
-
-// (luminance, 1) of a far pixel, else 0: what the far surround of the highlights (ffxDofFarSurround) sums.
-FFX_DOF_INLINE FfxFloat32x2 ffxDofFarLuminanceSum(FfxFloat32x2 rimSample)
-{
-    return rimSample.y <= -FFX_DOF_IN_FOCUS_RADIUS ? FfxFloat32x2(rimSample.x, 1.0f) : FfxFloat32x2(0.0f, 0.0f);
 }
 
 // Cell `index` of the border ring of the rim grid: the top row, the bottom row, then the sides.
@@ -529,12 +521,13 @@ FFX_DOF_INLINE void ffxDofDownsampleColor(FfxUInt32x2 groupId, FfxUInt32 localIn
     FfxFloat32 dimmestFar = min(min(ffxDofFarLuminance(rim0), ffxDofFarLuminance(rim1)),
                                 min(ffxDofFarLuminance(rim2), ffxDofFarLuminance(rim3)));
     FfxFloat32 dimmest = min(min(rim0.x, rim1.x), min(rim2.x, rim3.x));
-    FfxFloat32x2 farSum = ffxDofFarLuminanceSum(rim0) + ffxDofFarLuminanceSum(rim1) + ffxDofFarLuminanceSum(rim2) +
-                          ffxDofFarLuminanceSum(rim3);
     FfxFloat32 white = ffxDofHighlightWhite(scale);
-    FfxFloat32x4 farBrightness =
-        ffxDofFarBrightnessSample(rim0, unclamped0, white) + ffxDofFarBrightnessSample(rim1, unclamped1, white) +
-        ffxDofFarBrightnessSample(rim2, unclamped2, white) + ffxDofFarBrightnessSample(rim3, unclamped3, white);
+    FfxFloat32x4 far0 = ffxDofFarSums(rim0, unclamped0, white);
+    FfxFloat32x4 far1 = ffxDofFarSums(rim1, unclamped1, white);
+    FfxFloat32x4 far2 = ffxDofFarSums(rim2, unclamped2, white);
+    FfxFloat32x4 far3 = ffxDofFarSums(rim3, unclamped3, white);
+    FfxFloat32x4 farSums = far0 + far1 + far2 + far3;
+    FfxFloat32 brightRadiusSum = far0.w * unclamped0 + far1.w * unclamped1 + far2.w * unclamped2 + far3.w * unclamped3;
     FfxInt32x2 origin = FfxInt32x2(groupId * (2u * FfxUInt32(FFX_DOF_TILE_SIZE))) - FfxInt32x2(1, 1);
     FFX_DOF_LOOP
     for (FfxUInt32 border = localIndex; border < 4u * (FFX_DOF_RIM_SIDE - 1u); border += FFX_DOF_GROUP_THREADS)
@@ -548,17 +541,18 @@ FFX_DOF_INLINE void ffxDofDownsampleColor(FfxUInt32x2 groupId, FfxUInt32 localIn
         ffxDofSharedRimSample[borderCell.y * FFX_DOF_RIM_SIDE + borderCell.x] = bordering;
         dimmestFar = min(dimmestFar, ffxDofFarLuminance(bordering));
         dimmest = min(dimmest, bordering.x);
-        farSum += ffxDofFarLuminanceSum(bordering);
-        farBrightness += ffxDofFarBrightnessSample(bordering, borderingUnclamped, white);
+        FfxFloat32x4 borderingFar = ffxDofFarSums(bordering, borderingUnclamped, white);
+        farSums += borderingFar;
+        brightRadiusSum += borderingFar.w * borderingUnclamped;
     }
     dimmestFar = ffxDofWaveMin(dimmestFar);
     dimmest = ffxDofWaveMin(dimmest);
-    farSum = FfxFloat32x2(ffxDofWaveSum(farSum.x), ffxDofWaveSum(farSum.y));
-    farBrightness = ffxDofWaveSum(farBrightness);
+    farSums = ffxDofWaveSum(farSums);
+    brightRadiusSum = ffxDofWaveSum(brightRadiusSum);
     if (ffxDofWaveIsFirstLane())
     {
-        ffxDofSharedWaveFloors[ffxDofWaveIndex(localIndex)] = FfxFloat32x4(dimmestFar, dimmest, farSum.x, farSum.y);
-        ffxDofSharedWaveFarBrightness[ffxDofWaveIndex(localIndex)] = farBrightness;
+        ffxDofSharedWaveFloors[ffxDofWaveIndex(localIndex)] = FfxFloat32x4(dimmestFar, dimmest, brightRadiusSum, 0.0f);
+        ffxDofSharedWaveFarSums[ffxDofWaveIndex(localIndex)] = farSums;
     }
     ffxDofGroupBarrier();
     // The quad's 4 x 4 neighbourhood read once for its four pixels (16 group-shared reads instead of 36: on
@@ -586,21 +580,21 @@ FFX_DOF_INLINE void ffxDofDownsampleColor(FfxUInt32x2 groupId, FfxUInt32 localIn
     // gives its light (a light split between both paths drew its rest from the layers 1.05 to 1.10 times too
     // bright, docs/technique.md); as the composite reads them back (ffxDofPackHighlightFloors).
     FfxFloat32x2 tileMinima = FfxFloat32x2(FFX_DOF_FLOAT32_MAX, FFX_DOF_FLOAT32_MAX);
-    FfxFloat32x2 tileFarSum = FfxFloat32x2(0.0f, 0.0f);
-    FfxFloat32x4 tileFarBrightness = FfxFloat32x4(0.0f, 0.0f, 0.0f, 0.0f);
+    FfxFloat32 tileBrightRadiusSum = 0.0f;
+    FfxFloat32x4 tileFarSums = FfxFloat32x4(0.0f, 0.0f, 0.0f, 0.0f);
     FFX_DOF_LOOP
     for (FfxUInt32 wave = 0u; wave < ffxDofWaveCount(); ++wave)
     {
         FfxFloat32x4 waveFloors = ffxDofSharedWaveFloors[wave];
         tileMinima = min(tileMinima, FfxFloat32x2(waveFloors.x, waveFloors.y));
-        tileFarSum += FfxFloat32x2(waveFloors.z, waveFloors.w);
-        tileFarBrightness += ffxDofSharedWaveFarBrightness[wave];
+        tileBrightRadiusSum += waveFloors.z;
+        tileFarSums += ffxDofSharedWaveFarSums[wave];
     }
     // A bright far field behind nearer far content gives no far light: its far floor is none.
-    if (ffxDofBrightFieldBehind(tileFarBrightness))
+    if (ffxDofBrightFieldBehind(tileFarSums, tileBrightRadiusSum))
         tileMinima.x = FFX_DOF_HIGHLIGHT_NO_FLOOR;
-    FfxUInt32 packedFloors =
-        ffxDofPackHighlightFloors(FfxFloat32x3(tileMinima.x, tileMinima.y, ffxDofFarSurround(tileFarSum)));
+    FfxUInt32 packedFloors = ffxDofPackHighlightFloors(
+        FfxFloat32x3(tileMinima.x, tileMinima.y, ffxDofFarSurround(FfxFloat32x2(tileFarSums.x, tileFarSums.y))));
     FfxFloat32x3 tileFloors = ffxDofUnpackHighlightFloors(packedFloors);
     FfxFloat32x4 shares =
         FfxFloat32x4(ffxDofHighlightShare(around[5].x, coc0, ffxDofHighlightFloor(tileFloors, coc0), scale),

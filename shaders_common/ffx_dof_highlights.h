@@ -167,24 +167,27 @@ FFX_DOF_INLINE FfxFloat32 ffxDofFarSurround(FfxFloat32x2 farLuminanceSum)
 // px behind branches stays a light.
 #define FFX_DOF_BRIGHT_FIELD_MIN_SHARE 0.0625f
 #define FFX_DOF_BRIGHT_FIELD_DEPTH_GAP 1.0f
-// What a far pixel of (luminance, radius) `rimSample` adds to its tile's (bright count, bright radius sum, other count,
-// other radius sum), `white` display white in the scaled input's units (ffxDofHighlightWhite); nothing for a pixel not
-// in the far field. The
-// sums take its radius before the limit clamps it (`unclampedCoc`): far branches and the sky behind them often share
-// the limit's radius.
-FFX_DOF_INLINE FfxFloat32x4 ffxDofFarBrightnessSample(FfxFloat32x2 rimSample, FfxFloat32 unclampedCoc, FfxFloat32 white)
+// What a pixel of (luminance, radius) `rimSample` adds to its tile's far sums, (luminance, count, radius, count above
+// white), all 0 where it is not in the far field: the far surround (ffxDofFarSurround, from the first two) and whether
+// the tile is a bright far field behind nearer far content (ffxDofBrightFieldBehind, with the radii of the pixels
+// above white, each `unclampedCoc` times its w). `white`: display white in the scaled input's units
+// (ffxDofHighlightWhite). The radius is taken before the limit clamps it (`unclampedCoc`): far branches and the sky
+// behind them often share the limit's radius.
+FFX_DOF_INLINE FfxFloat32x4 ffxDofFarSums(FfxFloat32x2 rimSample, FfxFloat32 unclampedCoc, FfxFloat32 white)
 {
     if (!(rimSample.y <= -FFX_DOF_IN_FOCUS_RADIUS))
         return FfxFloat32x4(0.0f, 0.0f, 0.0f, 0.0f);
-    return rimSample.x > white ? FfxFloat32x4(1.0f, unclampedCoc, 0.0f, 0.0f)
-                               : FfxFloat32x4(0.0f, 0.0f, 1.0f, unclampedCoc);
+    return FfxFloat32x4(rimSample.x, 1.0f, unclampedCoc, rimSample.x > white ? 1.0f : 0.0f);
 }
-// Whether a tile of such sums is a bright far field behind nearer far content, which gives no far light.
-FFX_DOF_INLINE FfxBoolean ffxDofBrightFieldBehind(FfxFloat32x4 sums)
+// Whether a tile of far sums `farSums` (ffxDofFarSums), whose pixels above white have radii summing to
+// `brightRadiusSum`, is a bright far field behind nearer far content, which gives no far light.
+FFX_DOF_INLINE FfxBoolean ffxDofBrightFieldBehind(FfxFloat32x4 farSums, FfxFloat32 brightRadiusSum)
 {
-    if (!(sums.x > 0.0f && sums.z > 0.0f) || sums.x < FFX_DOF_BRIGHT_FIELD_MIN_SHARE * (sums.x + sums.z))
+    FfxFloat32 brightCount = farSums.w;
+    FfxFloat32 otherCount = farSums.y - brightCount;
+    if (!(brightCount > 0.0f && otherCount > 0.0f) || brightCount < FFX_DOF_BRIGHT_FIELD_MIN_SHARE * farSums.y)
         return false;
-    return sums.y / sums.x < sums.w / sums.z - FFX_DOF_BRIGHT_FIELD_DEPTH_GAP;
+    return brightRadiusSum / brightCount < (farSums.z - brightRadiusSum) / otherCount - FFX_DOF_BRIGHT_FIELD_DEPTH_GAP;
 }
 
 // Set in a tile's word of floors where its pixels gave light (a slot of the tile holds some): dilate and the composite

@@ -134,24 +134,30 @@ TEST_CASE("The composite knows what pass 2 took of a pixel, but for a quad the i
 }
 
 TEST_CASE("A bright far field behind nearer far content gives no far light", "[highlights]") {
-    // Far pixels above white (here 1) count as bright, with the radius their depth gives before the limit.
+    // A far pixel adds its luminance, 1, its radius before the limit and whether it is above white (here 1).
     const float white = 1.0f;
-    CHECK(ffxDofFarBrightnessSample(glm::vec2(2.3f, -5.0f), -12.0f, white) == glm::vec4(1.0f, -12.0f, 0.0f, 0.0f));
-    CHECK(ffxDofFarBrightnessSample(glm::vec2(0.05f, -5.0f), -7.0f, white) == glm::vec4(0.0f, 0.0f, 1.0f, -7.0f));
-    CHECK(ffxDofFarBrightnessSample(glm::vec2(2.3f, -0.25f), -0.25f, white) == glm::vec4(0.0f));
-    CHECK(ffxDofFarBrightnessSample(glm::vec2(2.3f, 4.0f), 4.0f, white) == glm::vec4(0.0f));
+    CHECK(ffxDofFarSums(glm::vec2(2.3f, -5.0f), -12.0f, white) == glm::vec4(2.3f, 1.0f, -12.0f, 1.0f));
+    CHECK(ffxDofFarSums(glm::vec2(0.05f, -5.0f), -7.0f, white) == glm::vec4(0.05f, 1.0f, -7.0f, 0.0f));
+    CHECK(ffxDofFarSums(glm::vec2(2.3f, -0.25f), -0.25f, white) == glm::vec4(0.0f));
+    CHECK(ffxDofFarSums(glm::vec2(2.3f, 4.0f), 4.0f, white) == glm::vec4(0.0f));
+    // A tile's sums from `bright` pixels above white at radius `brightRadius` and `other` pixels at `otherRadius`.
+    auto behind = [](float bright, float brightRadius, float other, float otherRadius) {
+        const glm::vec4 sums(bright * 2.3f + other * 0.05f, bright + other, bright * brightRadius + other * otherRadius,
+                             bright);
+        return ffxDofBrightFieldBehind(sums, bright * brightRadius);
+    };
     // A tile of 324 px, a quarter sky at radius -12 behind branches at -7: a field. In front of them, or at their
     // depth but for less than FFX_DOF_BRIGHT_FIELD_DEPTH_GAP: lights.
-    CHECK(ffxDofBrightFieldBehind(glm::vec4(81.0f, 81.0f * -12.0f, 243.0f, 243.0f * -7.0f)));
-    CHECK_FALSE(ffxDofBrightFieldBehind(glm::vec4(81.0f, 81.0f * -7.0f, 243.0f, 243.0f * -12.0f)));
-    CHECK_FALSE(ffxDofBrightFieldBehind(glm::vec4(81.0f, 81.0f * -7.9f, 243.0f, 243.0f * -7.0f)));
+    CHECK(behind(81.0f, -12.0f, 243.0f, -7.0f));
+    CHECK_FALSE(behind(81.0f, -7.0f, 243.0f, -12.0f));
+    CHECK_FALSE(behind(81.0f, -7.9f, 243.0f, -7.0f));
     // A light of 4 x 4 px behind the branches (16 of 324, below FFX_DOF_BRIGHT_FIELD_MIN_SHARE) stays one; from 21 px
     // on it is a field.
-    CHECK_FALSE(ffxDofBrightFieldBehind(glm::vec4(16.0f, 16.0f * -12.0f, 308.0f, 308.0f * -7.0f)));
-    CHECK(ffxDofBrightFieldBehind(glm::vec4(21.0f, 21.0f * -12.0f, 303.0f, 303.0f * -7.0f)));
+    CHECK_FALSE(behind(16.0f, -12.0f, 308.0f, -7.0f));
+    CHECK(behind(21.0f, -12.0f, 303.0f, -7.0f));
     // Only bright pixels, or none: no field.
-    CHECK_FALSE(ffxDofBrightFieldBehind(glm::vec4(324.0f, 324.0f * -12.0f, 0.0f, 0.0f)));
-    CHECK_FALSE(ffxDofBrightFieldBehind(glm::vec4(0.0f, 0.0f, 324.0f, 324.0f * -12.0f)));
+    CHECK_FALSE(behind(324.0f, -12.0f, 0.0f, 0.0f));
+    CHECK_FALSE(behind(0.0f, 0.0f, 324.0f, -12.0f));
 }
 
 TEST_CASE("A far pixel is a light by its far surround, and gives what it has above its floor", "[highlights]") {
