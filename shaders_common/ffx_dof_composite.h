@@ -256,6 +256,72 @@ FFX_DOF_INLINE FfxInt32x2 ffxDofClampHalfTexel(FfxInt32x2 texel, FfxUInt32x2 hal
     return clamp(texel, FfxInt32x2(0, 0), FfxInt32x2(halfSize) - FfxInt32x2(1, 1));
 }
 
+// HALF_COC at a full-res point (px).
+FFX_DOF_INLINE FfxFloat32 ffxDofLoadHalfCocAt(FfxFloat32x2 position, FfxUInt32x2 halfSize)
+{
+    return ffxDofLoadHalfCoc(ffxDofClampHalfTexel(FfxInt32x2(floor(position * 0.5f)), halfSize));
+}
+
+// The radius of the full-res pixel at a point (px), from the input depth.
+FFX_DOF_INLINE FfxFloat32 ffxDofLoadPixelCocAt(FfxFloat32x2 position, FfxDofConstants constants)
+{
+    FfxUInt32x2 pixel = FfxUInt32x2(clamp(FfxInt32x2(floor(position)), FfxInt32x2(0, 0),
+                                          FfxInt32x2(constants.fullSize) - FfxInt32x2(1, 1)));
+    return ffxDofCocFromDepth(ffxDofLoadInputDepth(pixel), constants.cocScale, constants.cocBias, constants.cocLimit);
+}
+
+// The far depths in front of a far highlight of |radius| `highlightRadius` (half-res px) at `lightCentre` that the
+// walk from the light to a quad's centre `quadCentre` (full-res px) meets (ffx_dof_highlights.h, "What lies between
+// a pixel and a light"): the first two, 0 where it meets fewer. A quad's four pixels lie within 0.71 px of its
+// centre, so their segments cross the same surfaces but at their very ends; each pixel tries them itself
+// (ffxDofHighlightVisibilityPast), and the walk is a quad's, not a pixel's.
+FFX_DOF_INLINE FfxFloat32x2 ffxDofHighlightDepthsMet(FfxFloat32x2 quadCentre, FfxFloat32x2 lightCentre,
+                                                     FfxFloat32 highlightRadius, FfxUInt32x2 halfSize)
+{
+    FfxFloat32x2 met = FfxFloat32x2(0.0f, 0.0f);
+    FfxFloat32x2 toQuad = quadCentre - lightCentre;
+    FfxUInt32 steps = ffxDofHighlightWalkSteps(toQuad);
+    FFX_DOF_LOOP
+    for (FfxUInt32 step = 0u; step < steps; ++step)
+    {
+        FfxFloat32 surface =
+            ffxDofLoadHalfCocAt(lightCentre + toQuad * ((FfxFloat32(step) + 0.5f) / FfxFloat32(steps)), halfSize);
+        if (!ffxDofHighlightMayCross(surface, highlightRadius) || surface == met.x || surface == met.y)
+            continue;
+        if (met.x != 0.0f)
+        {
+            met.y = surface;
+            break;
+        }
+        met.x = surface;
+    }
+    return met;
+}
+
+// How much of a far highlight of |radius| `highlightRadius` (half-res px) at `lightCentre` reaches the pixel at
+// `pixelCentre` (full-res px) whose own surface has radius `pixelCoc`, past what lies in front of the light: where
+// the pixel's own surface lies in front of it, as far as that surface lets it through (ffxDofHighlightBlockerPoint);
+// else none where a far depth met on the way to the light (`depthsMet`, ffxDofHighlightDepthsMet) lies at its own
+// crossing point on the segment from the pixel to the light, all otherwise.
+FFX_DOF_INLINE FfxFloat32 ffxDofHighlightVisibilityPast(FfxFloat32x2 pixelCentre, FfxFloat32x2 lightCentre,
+                                                        FfxFloat32 pixelCoc, FfxFloat32 highlightRadius,
+                                                        FfxFloat32x2 depthsMet, FfxDofConstants constants)
+{
+    FfxFloat32x2 blocker;
+    if (ffxDofHighlightBlockerPoint(pixelCentre, lightCentre, pixelCoc, highlightRadius, blocker))
+        return ffxDofHighlightVisibility(ffxDofLoadPixelCocAt(blocker, constants), highlightRadius);
+    FFX_DOF_UNROLL
+    for (FfxUInt32 j = 0u; j < 2u; ++j)
+    {
+        if (depthsMet[j] == 0.0f)
+            continue;
+        ffxDofHighlightBlockerPoint(pixelCentre, lightCentre, depthsMet[j], highlightRadius, blocker);
+        if (ffxDofHighlightCrossed(ffxDofLoadPixelCocAt(blocker, constants), depthsMet[j]))
+            return 0.0f;
+    }
+    return 1.0f;
+}
+
 FFX_DOF_INLINE FfxUInt32x2 ffxDofPackRawColor(FfxDofFloat3 color)
 {
     return FfxUInt32x2(ffxDofPackHalf2(FfxFloat32x2(FfxFloat32(color.x), FfxFloat32(color.y))),
@@ -695,7 +761,7 @@ FFX_DOF_INLINE void ffxDofHighlightWindow(FfxUInt32x2 tile, FfxDofConstants cons
 
 // What the highlights of the tiles in the window add to a quad's four pixels (0: top-left .. 3: bottom-right;
 // `quad` its top-left pixel, `cocs` their radii): far ones to their far layers, each as far as what lies in front
-// does not hide it (ffxDofHighlightBlockerPoint), near ones over everything (nothing the pinhole image shows lies
+// does not hide it (ffxDofHighlightVisibilityPast), near ones over everything (nothing the pinhole image shows lies
 // in front of a near light but a nearer surface, which it would show instead). Tiles in the window's order, slots
 // in theirs: the same sum whatever the order the groups ran in.
 struct FfxDofQuadHighlights
@@ -761,6 +827,10 @@ FFX_DOF_INLINE FfxDofQuadHighlights ffxDofHighlightsAtQuad(FfxUInt32x2 tile, Ffx
                 for (FfxUInt32 disc = 0u; disc < discs; ++disc)
                 {
                     FfxFloat32x2 centre = origin + ffxDofHighlightDiscCentre(highlight, disc);
+                    FfxFloat32x2 depthsMet = highlight.near ? FfxFloat32x2(0.0f, 0.0f)
+                                                            : ffxDofHighlightDepthsMet(quadCentre, centre,
+                                                                                       highlight.radius,
+                                                                                       constants.halfSize);
                     FFX_DOF_UNROLL
                     for (FfxUInt32 k = 0u; k < 4u; ++k)
                     {
@@ -772,14 +842,11 @@ FFX_DOF_INLINE FfxDofQuadHighlights ffxDofHighlightsAtQuad(FfxUInt32x2 tile, Ffx
                             result.nearAdded[k] += added;
                             continue;
                         }
-                        FfxFloat32x2 blocker;
-                        if (ffxDofHighlightBlockerPoint(pixelCentre, centre, cocs[k], highlight.radius, blocker))
-                        {
-                            FfxInt32x2 texel =
-                                ffxDofClampHalfTexel(FfxInt32x2(floor(blocker * 0.5f)), constants.halfSize);
-                            added *= ffxDofHighlightVisibility(ffxDofLoadHalfCoc(texel), highlight.radius);
-                        }
-                        result.added[k] += added;
+                        // Outside its disc a light adds nothing, and nothing need be asked of what hides it.
+                        if (max(added.x, max(added.y, added.z)) > 0.0f)
+                            result.added[k] += added * ffxDofHighlightVisibilityPast(pixelCentre, centre, cocs[k],
+                                                                                     highlight.radius, depthsMet,
+                                                                                     constants);
                     }
                 }
             }

@@ -554,4 +554,43 @@ FFX_DOF_INLINE FfxFloat32 ffxDofHighlightVisibility(FfxFloat32 blockerCoc, FfxFl
     return ffxDofSaturate(-blockerCoc - highlightRadius + 1.5f);
 }
 
+// ---- What lies between a pixel and a light ------------------------------------------------------------
+// A pixel whose own surface lies behind a light (a sky, a far wall) still loses the light to a far surface
+// between them: the thin lens's rays from the pixel to the light cross each depth c in front of it at the point
+// ffxDofHighlightBlockerPoint gives for c, all on the segment from the pixel to the light (c from 0 at the pixel
+// to the light's radius at the light). The composite walks that segment (ffxDofHighlightVisibilityPast): each far
+// surface it meets in front of the light is a depth to try, and the light is hidden where the surface at that
+// depth's crossing point lies at that depth. So a branch in front of a light casts its band across the light's
+// whole disc, as in the thin lens.
+//
+// The walk's spacing along the segment's longer axis (half-res px): one texel, so that it meets every column (or
+// row) of HALF_COC the segment crosses, and a blocker one texel wide is met at every pixel whose rays cross it.
+#define FFX_DOF_HIGHLIGHT_WALK_SPACING 1.0f
+// ... and its most steps, which holds that spacing up to a segment of 16 half-res px along its longer axis.
+#define FFX_DOF_HIGHLIGHT_WALK_MAX_STEPS 16u
+// How near (half-res px) the surface at a crossing point must lie to the depth tried to be the one crossed: the
+// surfaces the walk meets are whole texels of HALF_COC, so a flat blocker meets its own depth exactly.
+#define FFX_DOF_HIGHLIGHT_CROSSING_TOLERANCE 0.5f
+
+// The steps of the walk from a light to a pixel `offset` full-res px from it.
+FFX_DOF_INLINE FfxUInt32 ffxDofHighlightWalkSteps(FfxFloat32x2 offset)
+{
+    FfxFloat32 longer = 0.5f * max(abs(offset.x), abs(offset.y));
+    return min(FfxUInt32(ceil(longer / FFX_DOF_HIGHLIGHT_WALK_SPACING)), FFX_DOF_HIGHLIGHT_WALK_MAX_STEPS);
+}
+
+// Whether a surface of signed radius `surfaceCoc` met on the walk is a depth to try: far, and in front of the light
+// by the depth from which ffxDofHighlightVisibility hides all of it (the light's own rim and a background at the
+// light's depth are not).
+FFX_DOF_INLINE FfxBoolean ffxDofHighlightMayCross(FfxFloat32 surfaceCoc, FfxFloat32 highlightRadius)
+{
+    return surfaceCoc <= -FFX_DOF_IN_FOCUS_RADIUS && -surfaceCoc <= highlightRadius - 1.5f;
+}
+
+// Whether the surface of signed radius `crossedCoc` at the crossing point of the depth `triedCoc` is the one tried.
+FFX_DOF_INLINE FfxBoolean ffxDofHighlightCrossed(FfxFloat32 crossedCoc, FfxFloat32 triedCoc)
+{
+    return abs(crossedCoc - triedCoc) <= FFX_DOF_HIGHLIGHT_CROSSING_TOLERANCE;
+}
+
 #endif  // FFX_DOF_HIGHLIGHTS_H

@@ -759,6 +759,32 @@ std::vector<SmallLightCase> runSmallLightCases(vkrun::Device& device, const std:
     return cases;
 }
 
+namespace {
+// The thin lens's figure of a light pair (LightPairCase::thinLensRatio). The dim light, nearer than the bright one,
+// hides the bright light from the pixels p whose rays to it cross the dim light's depth inside the dim light: the
+// point bright + (p - bright)(1 - rDim / rBright) lies in it. So its shadow is the dim square scaled by
+// 1 / (1 - rDim / rBright) about the bright light (taken as a point at its centre), and the shadow takes the bright
+// disc's level (its energy over pi rBright^2) wherever it lies inside that disc. Integrated on a grid of 1/64 px.
+double thinLensPairRatio(const SquareLight& bright, const SquareLight& dim, double background) {
+    const double centreX = bright.x0 + 0.5 * bright.size, centreY = bright.y0 + 0.5 * bright.size;
+    const double scale = 1.0 / (1.0 - dim.radius / bright.radius);
+    const int steps = 64 * dim.size;
+    const double cell = double(dim.size) / steps;
+    double inside = 0.0;
+    for (int j = 0; j < steps; ++j)
+        for (int i = 0; i < steps; ++i) {
+            const double x = (dim.x0 + (i + 0.5) * cell - centreX) * scale;
+            const double y = (dim.y0 + (j + 0.5) * cell - centreY) * scale;
+            if (x * x + y * y <= bright.radius * bright.radius) inside += cell * cell * scale * scale;
+        }
+    const double brightLevel = bright.size * bright.size * (bright.value - background) /
+                               (3.14159265358979323846 * bright.radius * bright.radius);
+    // The rays the dim light hides from the bright one would have carried the bright light in place of the background.
+    const double dimInput = dim.size * dim.size * (dim.value - background);
+    return 1.0 - brightLevel * inside / dimInput;
+}
+}  // namespace
+
 std::vector<LightPairCase> runLightPairCases(vkrun::Device& device) {
     return runLightPairCases(device, {std::begin(kLightPairDimRadii), std::end(kLightPairDimRadii)},
                              {std::begin(kLightPairDistances), std::end(kLightPairDistances)}, {true, false});
@@ -782,6 +808,7 @@ std::vector<LightPairCase> runLightPairCases(vkrun::Device& device, const std::v
                 pair.dimRadius = dimRadius;
                 pair.distance = distance;
                 pair.ringMerge = ringMerge;
+                pair.thinLensRatio = thinLensPairRatio(bright, dim, kLightsBackground);
                 pair.aloneRatio = addedGreen(runSquareLights(device, {dim}, false, flags), none) / dimInput;
                 pair.besideRatio =
                     addedGreen(runSquareLights(device, {bright, dim}, false, flags), brightOnly) / dimInput;

@@ -226,6 +226,9 @@ struct LightPairCase {
     int distance = 0;
     bool ringMerge = true;
     double aloneRatio = 0.0, besideRatio = 0.0;
+    // What the dim light adds beside the bright one in the thin lens, over its input: less the bright disc's light
+    // it hides (its shadow in the bright disc, thinLensPairRatio); 1 where the shadow falls outside the disc.
+    double thinLensRatio = 1.0;
     std::string describe() const;
     // Issue 17's gate: within 5% of its input, wherever it is.
     bool energyOk() const { return std::abs(aloneRatio - 1.0) <= 0.05 && std::abs(besideRatio - 1.0) <= 0.05; }

@@ -1179,3 +1179,41 @@ TEST_CASE("A dark near object's anti-aliased rim over a sky above white is no ne
         CHECK((layers.blurTileFlags[tile] & uint32_t(FFX_DOF_LISTED_TILE_LIGHTS)) == 0u);
     }
 }
+
+TEST_CASE("A far bar in front of a light casts a band across the light's whole disc", "[pipeline]") {
+    // A light of 3 x 3 px at far radius 12 half-res px (a disc of 24 full-res px) over a dark field at 16, and a dark
+    // vertical bar of 4 px at radius 4, 8 px right of the light. The thin lens's rays from a pixel p to the light
+    // cross the bar's depth at light + (p - light)(1 - 4 / 12): the bar, x in [72, 76), hides the light from the
+    // pixels whose x lies in [75.75, 81.75), a band across the disc beyond the bar. Until the composite walked the
+    // segment from each pixel to the light (ffxDofHighlightVisibilityPast) it asked only the pixel's own surface,
+    // so the band was lit as the rest of the disc. Behind the light (radius 14) or in focus the bar hides nothing
+    // beyond itself.
+    const uint32_t w = 128, h = 96;
+    const glm::ivec2 light(63, 47);
+    auto addedByLight = [&](float barCoc) {
+        Scene scene = makeScene(w, h, glm::vec4(0.02f, 0.02f, 0.02f, 1.0f), -16.0f);
+        paint(scene, Rect{72, 0, 76, int(h)}, barCoc, false);
+        for (uint32_t y = 0; y < h; ++y)
+            for (uint32_t x = 72; x < 76; ++x) scene.color[size_t(y) * w + x] = glm::vec4(0.02f, 0.02f, 0.02f, 1.0f);
+        const std::vector<glm::vec4> without = ffxdoftest::runPipeline(scene, Settings{});
+        const std::vector<glm::vec4> with = ffxdoftest::runPipeline(withLight(scene, light, 200.0f, -12.0f, 3), Settings{});
+        // The light's mean added green over rows 42..54 in columns [x0, x1).
+        return [with, without, w](int x0, int x1) {
+            double sum = 0.0;
+            for (int y = 42; y <= 54; ++y)
+                for (int x = x0; x < x1; ++x) sum += double(with[size_t(y) * w + size_t(x)].y - without[size_t(y) * w + size_t(x)].y);
+            return sum / double(13 * (x1 - x0));
+        };
+    };
+    const auto inFront = addedByLight(-4.0f);
+    const double open = inFront(50, 58), band = inFront(77, 81), beyond = inFront(83, 86);
+    INFO("bar in front: left of the light " << open << ", band " << band << ", beyond the band " << beyond);
+    CHECK(open > 0.7);  // the disc's level: 1800 / (pi 24^2), 1.0
+    CHECK(band < 0.1 * open);
+    CHECK(beyond > 0.8 * open);
+    for (const float barCoc : {-14.0f, 0.0f}) {
+        const auto noBlocker = addedByLight(barCoc);
+        INFO("bar at radius " << barCoc << ": left of the light " << noBlocker(50, 58) << ", band " << noBlocker(77, 81));
+        CHECK(noBlocker(77, 81) > 0.9 * noBlocker(50, 58));
+    }
+}

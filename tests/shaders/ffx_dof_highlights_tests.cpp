@@ -374,6 +374,40 @@ TEST_CASE("What hides a highlight: a surface in front of the light where the ray
     CHECK(ffxDofHighlightVisibility(-(lightRadius - 1.0f), lightRadius) == Approx(0.5f));
 }
 
+TEST_CASE("The walk from a light to a pixel meets every texel column it crosses and tries far surfaces in front",
+          "[highlights]") {
+    // One step per half-res texel along the longer axis (offsets in full-res px), at most
+    // FFX_DOF_HIGHLIGHT_WALK_MAX_STEPS.
+    CHECK(ffxDofHighlightWalkSteps(glm::vec2(0.0f)) == 0u);
+    CHECK(ffxDofHighlightWalkSteps(glm::vec2(1.0f, -0.5f)) == 1u);
+    CHECK(ffxDofHighlightWalkSteps(glm::vec2(-3.0f, 20.0f)) == 10u);
+    CHECK(ffxDofHighlightWalkSteps(glm::vec2(21.0f, 3.0f)) == 11u);
+    CHECK(ffxDofHighlightWalkSteps(glm::vec2(0.0f, 200.0f)) == FFX_DOF_HIGHLIGHT_WALK_MAX_STEPS);
+    for (float x = 0.25f; x < 64.0f; x += 0.5f) {
+        // Consecutive steps lie at most a texel apart along the longer axis.
+        const glm::vec2 offset(x, 0.37f * x);
+        const uint32_t steps = ffxDofHighlightWalkSteps(offset);
+        if (0.5f * x <= FFX_DOF_HIGHLIGHT_WALK_SPACING * float(FFX_DOF_HIGHLIGHT_WALK_MAX_STEPS))
+            CHECK(0.5f * x / float(steps) <= FFX_DOF_HIGHLIGHT_WALK_SPACING);
+    }
+    // A light at radius 9.1 half-res px: the far surfaces tried are those in front of it by 1.5 px or more (where
+    // ffxDofHighlightVisibility hides all of it), not in focus, near, at the light's depth or behind it.
+    const float lightRadius = 9.1f;
+    CHECK(ffxDofHighlightMayCross(-3.0f, lightRadius));
+    CHECK(ffxDofHighlightMayCross(-(lightRadius - 1.5f), lightRadius));
+    CHECK_FALSE(ffxDofHighlightMayCross(-(lightRadius - 1.0f), lightRadius));
+    CHECK_FALSE(ffxDofHighlightMayCross(-lightRadius, lightRadius));
+    CHECK_FALSE(ffxDofHighlightMayCross(-16.0f, lightRadius));
+    CHECK_FALSE(ffxDofHighlightMayCross(0.0f, lightRadius));
+    CHECK_FALSE(ffxDofHighlightMayCross(4.0f, lightRadius));
+    // A depth tried is crossed where the surface at its crossing point lies at that depth, not nearer or farther.
+    CHECK(ffxDofHighlightCrossed(-3.0f, -3.0f));
+    CHECK(ffxDofHighlightCrossed(-3.4f, -3.0f));
+    CHECK_FALSE(ffxDofHighlightCrossed(-16.0f, -3.0f));
+    CHECK_FALSE(ffxDofHighlightCrossed(0.0f, -3.0f));
+    CHECK_FALSE(ffxDofHighlightCrossed(-2.0f, -3.0f));
+}
+
 TEST_CASE("The composite's window of tiles covers every highlight whose disc can reach its tile", "[highlights]") {
     for (float cocLimit : {2.0f, 8.0f, 27.0f, 54.0f})
         for (float extent : {1.0f, 1.5f}) {
