@@ -66,12 +66,14 @@ const std::vector<SceneGate>& sceneGates() {
          "comes "
          "nearer by chance. The same limit as mid-lights' partly hidden lights: a post-process of the pinhole image "
          "cannot know what an object in focus hides"},
-        {"lights-through-branches", 6.5,
+        {"lights-through-branches", 8.5,
          "lights of 1 to 3 px far behind dark far branches. The thin lens draws a branch in front of a light as a "
          "dark band across its whole disc, where the rays from the disc's pixels to the light pass the branch; the "
-         "composite hides a highlight only at pixels whose own surface lies in front of the light "
-         "(ffxDofHighlightBlockerPoint), so here the band is a notch where the branch itself is, and a light the "
-         "branch hides from the pinhole camera is missing (docs/technique.md, \"What hides a highlight\")"},
+         "composite walks from each light to each quad and hides the highlight where a far surface it meets lies "
+         "in front of the light at that pixel's blocker point (ffxDofHighlightVisibilityPast), so the band crosses "
+         "the whole disc. A light the branch hides from the pinhole camera stays missing, and a branch narrower "
+         "than a half-res texel can slip between the walk's steps (docs/technique.md, \"What lies between a pixel "
+         "and a light\")"},
         {"near-leaves-sky", 22.0,
          "dark near leaves, strongly blurred, against a sky above white: their veils must let the bright sky "
          "through as the thin lens does, and the sky, brighter than display white, must not be taken for lights "
