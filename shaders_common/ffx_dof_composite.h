@@ -265,8 +265,8 @@ FFX_DOF_INLINE FfxFloat32 ffxDofLoadHalfCocAt(FfxFloat32x2 position, FfxUInt32x2
 // The radius of the full-res pixel at a point (px), from the input depth.
 FFX_DOF_INLINE FfxFloat32 ffxDofLoadPixelCocAt(FfxFloat32x2 position, FfxDofConstants constants)
 {
-    FfxUInt32x2 pixel = FfxUInt32x2(clamp(FfxInt32x2(floor(position)), FfxInt32x2(0, 0),
-                                          FfxInt32x2(constants.fullSize) - FfxInt32x2(1, 1)));
+    FfxUInt32x2 pixel = FfxUInt32x2(
+        clamp(FfxInt32x2(floor(position)), FfxInt32x2(0, 0), FfxInt32x2(constants.fullSize) - FfxInt32x2(1, 1)));
     return ffxDofCocFromDepth(ffxDofLoadInputDepth(pixel), constants.cocScale, constants.cocBias, constants.cocLimit);
 }
 
@@ -827,10 +827,10 @@ FFX_DOF_INLINE FfxDofQuadHighlights ffxDofHighlightsAtQuad(FfxUInt32x2 tile, Ffx
                 for (FfxUInt32 disc = 0u; disc < discs; ++disc)
                 {
                     FfxFloat32x2 centre = origin + ffxDofHighlightDiscCentre(highlight, disc);
-                    FfxFloat32x2 depthsMet = highlight.near ? FfxFloat32x2(0.0f, 0.0f)
-                                                            : ffxDofHighlightDepthsMet(quadCentre, centre,
-                                                                                       highlight.radius,
-                                                                                       constants.halfSize);
+                    FfxFloat32x2 depthsMet =
+                        highlight.near
+                            ? FfxFloat32x2(0.0f, 0.0f)
+                            : ffxDofHighlightDepthsMet(quadCentre, centre, highlight.radius, constants.halfSize);
                     FFX_DOF_UNROLL
                     for (FfxUInt32 k = 0u; k < 4u; ++k)
                     {
@@ -844,9 +844,9 @@ FFX_DOF_INLINE FfxDofQuadHighlights ffxDofHighlightsAtQuad(FfxUInt32x2 tile, Ffx
                         }
                         // Outside its disc a light adds nothing, and nothing need be asked of what hides it.
                         if (max(added.x, max(added.y, added.z)) > 0.0f)
-                            result.added[k] += added * ffxDofHighlightVisibilityPast(pixelCentre, centre, cocs[k],
-                                                                                     highlight.radius, depthsMet,
-                                                                                     constants);
+                            result.added[k] +=
+                                added * ffxDofHighlightVisibilityPast(pixelCentre, centre, cocs[k], highlight.radius,
+                                                                      depthsMet, constants);
                     }
                 }
             }

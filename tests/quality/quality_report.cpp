@@ -512,9 +512,8 @@ void writeLightPairs(std::ostream& md, vkrun::Device& device) {
           "square scaled by 1 / (1 - rDim / rBright) about the bright light, which takes away the bright disc's "
           "light where it falls inside that disc (`thinLensPairRatio`, tests/quality/quality_scenes.cpp; 1 where it "
           "falls outside, as in every case of the gated grid above). "
-       << std::count_if(survey.begin(), survey.end(), [&](const quality::LightPairCase& pair) {
-              return !nearThinLens(pair);
-          })
+       << std::count_if(survey.begin(), survey.end(),
+                        [&](const quality::LightPairCase& pair) { return !nearThinLens(pair); })
        << " of " << survey.size()
        << " lie more than 0.05 from the thin lens's figure. On 2026-11-29, in the half-res layers, three lay "
           "outside 5% of the input's (10 px at 8: 0.939, 13 at 12: 0.903, 16 at 16: 0.880), each with the bright "

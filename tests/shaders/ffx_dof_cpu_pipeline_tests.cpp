@@ -1196,12 +1196,14 @@ TEST_CASE("A far bar in front of a light casts a band across the light's whole d
         for (uint32_t y = 0; y < h; ++y)
             for (uint32_t x = 72; x < 76; ++x) scene.color[size_t(y) * w + x] = glm::vec4(0.02f, 0.02f, 0.02f, 1.0f);
         const std::vector<glm::vec4> without = ffxdoftest::runPipeline(scene, Settings{});
-        const std::vector<glm::vec4> with = ffxdoftest::runPipeline(withLight(scene, light, 200.0f, -12.0f, 3), Settings{});
+        const std::vector<glm::vec4> with =
+            ffxdoftest::runPipeline(withLight(scene, light, 200.0f, -12.0f, 3), Settings{});
         // The light's mean added green over rows 42..54 in columns [x0, x1).
         return [with, without, w](int x0, int x1) {
             double sum = 0.0;
             for (int y = 42; y <= 54; ++y)
-                for (int x = x0; x < x1; ++x) sum += double(with[size_t(y) * w + size_t(x)].y - without[size_t(y) * w + size_t(x)].y);
+                for (int x = x0; x < x1; ++x)
+                    sum += double(with[size_t(y) * w + size_t(x)].y - without[size_t(y) * w + size_t(x)].y);
             return sum / double(13 * (x1 - x0));
         };
     };
@@ -1213,7 +1215,8 @@ TEST_CASE("A far bar in front of a light casts a band across the light's whole d
     CHECK(beyond > 0.8 * open);
     for (const float barCoc : {-14.0f, 0.0f}) {
         const auto noBlocker = addedByLight(barCoc);
-        INFO("bar at radius " << barCoc << ": left of the light " << noBlocker(50, 58) << ", band " << noBlocker(77, 81));
+        INFO("bar at radius " << barCoc << ": left of the light " << noBlocker(50, 58) << ", band "
+                              << noBlocker(77, 81));
         CHECK(noBlocker(77, 81) > 0.9 * noBlocker(50, 58));
     }
 }
