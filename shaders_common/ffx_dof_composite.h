@@ -759,12 +759,6 @@ FFX_DOF_INLINE void ffxDofHighlightWindow(FfxUInt32x2 tile, FfxDofConstants cons
                      constants.tileCount, first, last);
 }
 
-// The centre (full-res px) of pixel k of the quad whose top-left pixel is `quad` (0: top-left .. 3: bottom-right).
-FFX_DOF_INLINE FfxFloat32x2 ffxDofQuadPixelCentre(FfxUInt32x2 quad, FfxUInt32 k)
-{
-    return FfxFloat32x2(quad + FfxUInt32x2(k & 1u, k >> 1u)) + FfxFloat32x2(0.5f, 0.5f);
-}
-
 // What the highlights of the tiles in the window add to a quad's four pixels (0: top-left .. 3: bottom-right;
 // `quad` its top-left pixel, `cocs` their radii): far ones to their far layers, each as far as what lies in front
 // does not hide it (ffxDofHighlightVisibilityPast), near ones over everything (nothing the pinhole image shows lies
@@ -833,33 +827,26 @@ FFX_DOF_INLINE FfxDofQuadHighlights ffxDofHighlightsAtQuad(FfxUInt32x2 tile, Ffx
                 for (FfxUInt32 disc = 0u; disc < discs; ++disc)
                 {
                     FfxFloat32x2 centre = origin + ffxDofHighlightDiscCentre(highlight, disc);
-                    FfxFloat32x3 added[4];
-                    FfxFloat32 reached = 0.0f;
-                    FFX_DOF_UNROLL
-                    for (FfxUInt32 k = 0u; k < 4u; ++k)
-                    {
-                        added[k] = ffxDofHighlightAt(highlight, ffxDofQuadPixelCentre(quad, k) - centre, aperture);
-                        reached = max(reached, max(added[k].x, max(added[k].y, added[k].z)));
-                    }
-                    if (highlight.near)
-                    {
-                        FFX_DOF_UNROLL
-                        for (FfxUInt32 k = 0u; k < 4u; ++k)
-                            result.nearAdded[k] += added[k];
-                        continue;
-                    }
-                    // Outside its disc a light adds nothing, and nothing need be asked of what hides it.
-                    if (reached <= 0.0f)
-                        continue;
                     FfxFloat32x2 depthsMet =
-                        ffxDofHighlightDepthsMet(quadCentre, centre, highlight.radius, constants.halfSize);
+                        highlight.near
+                            ? FfxFloat32x2(0.0f, 0.0f)
+                            : ffxDofHighlightDepthsMet(quadCentre, centre, highlight.radius, constants.halfSize);
                     FFX_DOF_UNROLL
                     for (FfxUInt32 k = 0u; k < 4u; ++k)
                     {
-                        if (max(added[k].x, max(added[k].y, added[k].z)) > 0.0f)
-                            result.added[k] += added[k] * ffxDofHighlightVisibilityPast(
-                                                              ffxDofQuadPixelCentre(quad, k), centre, cocs[k],
-                                                              highlight.radius, depthsMet, constants);
+                        FfxFloat32x2 pixelCentre =
+                            FfxFloat32x2(quad + FfxUInt32x2(k & 1u, k >> 1u)) + FfxFloat32x2(0.5f, 0.5f);
+                        FfxFloat32x3 added = ffxDofHighlightAt(highlight, pixelCentre - centre, aperture);
+                        if (highlight.near)
+                        {
+                            result.nearAdded[k] += added;
+                            continue;
+                        }
+                        // Outside its disc a light adds nothing, and nothing need be asked of what hides it.
+                        if (max(added.x, max(added.y, added.z)) > 0.0f)
+                            result.added[k] +=
+                                added * ffxDofHighlightVisibilityPast(pixelCentre, centre, cocs[k], highlight.radius,
+                                                                      depthsMet, constants);
                     }
                 }
             }
