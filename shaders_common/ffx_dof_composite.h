@@ -256,12 +256,6 @@ FFX_DOF_INLINE FfxInt32x2 ffxDofClampHalfTexel(FfxInt32x2 texel, FfxUInt32x2 hal
     return clamp(texel, FfxInt32x2(0, 0), FfxInt32x2(halfSize) - FfxInt32x2(1, 1));
 }
 
-// HALF_COC at a full-res point (px).
-FFX_DOF_INLINE FfxFloat32 ffxDofLoadHalfCocAt(FfxFloat32x2 position, FfxUInt32x2 halfSize)
-{
-    return ffxDofLoadHalfCoc(ffxDofClampHalfTexel(FfxInt32x2(floor(position * 0.5f)), halfSize));
-}
-
 // The radius of the full-res pixel at a point (px), from the input depth.
 FFX_DOF_INLINE FfxFloat32 ffxDofLoadPixelCocAt(FfxFloat32x2 position, FfxDofConstants constants)
 {
@@ -276,7 +270,7 @@ FFX_DOF_INLINE FfxFloat32 ffxDofLoadPixelCocAt(FfxFloat32x2 position, FfxDofCons
 // centre, so their segments cross the same surfaces but at their very ends; each pixel tries them itself
 // (ffxDofHighlightVisibilityPast), and the walk is a quad's, not a pixel's.
 FFX_DOF_INLINE FfxFloat32x2 ffxDofHighlightDepthsMet(FfxFloat32x2 quadCentre, FfxFloat32x2 lightCentre,
-                                                     FfxFloat32 highlightRadius, FfxUInt32x2 halfSize)
+                                                     FfxFloat32 highlightRadius, FfxDofConstants constants)
 {
     FfxFloat32x2 met = FfxFloat32x2(0.0f, 0.0f);
     FfxFloat32x2 toQuad = quadCentre - lightCentre;
@@ -285,7 +279,7 @@ FFX_DOF_INLINE FfxFloat32x2 ffxDofHighlightDepthsMet(FfxFloat32x2 quadCentre, Ff
     for (FfxUInt32 step = 0u; step < steps; ++step)
     {
         FfxFloat32 surface =
-            ffxDofLoadHalfCocAt(lightCentre + toQuad * ((FfxFloat32(step) + 0.5f) / FfxFloat32(steps)), halfSize);
+            ffxDofLoadPixelCocAt(lightCentre + toQuad * ((FfxFloat32(step) + 0.5f) / FfxFloat32(steps)), constants);
         if (!ffxDofHighlightMayCross(surface, highlightRadius) || surface == met.x || surface == met.y)
             continue;
         if (met.x != 0.0f)
@@ -828,9 +822,8 @@ FFX_DOF_INLINE FfxDofQuadHighlights ffxDofHighlightsAtQuad(FfxUInt32x2 tile, Ffx
                 {
                     FfxFloat32x2 centre = origin + ffxDofHighlightDiscCentre(highlight, disc);
                     FfxFloat32x2 depthsMet =
-                        highlight.near
-                            ? FfxFloat32x2(0.0f, 0.0f)
-                            : ffxDofHighlightDepthsMet(quadCentre, centre, highlight.radius, constants.halfSize);
+                        highlight.near ? FfxFloat32x2(0.0f, 0.0f)
+                                       : ffxDofHighlightDepthsMet(quadCentre, centre, highlight.radius, constants);
                     FFX_DOF_UNROLL
                     for (FfxUInt32 k = 0u; k < 4u; ++k)
                     {

@@ -563,13 +563,17 @@ FFX_DOF_INLINE FfxFloat32 ffxDofHighlightVisibility(FfxFloat32 blockerCoc, FfxFl
 // depth's crossing point lies at that depth. So a branch in front of a light casts its band across the light's
 // whole disc, as in the thin lens.
 //
-// The walk's spacing along the segment's longer axis (half-res px): one texel, so that it meets every column (or
-// row) of HALF_COC the segment crosses, and a blocker one texel wide is met at every pixel whose rays cross it.
+// The walk reads the input depth's radius at full resolution, a point per step, where HALF_COC would do with a
+// quarter of the reads: a half-res texel holds one radius for its four pixels (the colour downsample's weighted
+// mean), and where a small surface shares a texel with another it may take the other's: the walk on HALF_COC missed
+// a row of a light 2 px high that way (tests/shaders, "A small light in front of a bright one casts its shadow").
+// Its spacing along the segment's longer axis (half-res px): one texel, two pixels, so that it meets every blocker
+// two pixels wide or more at every pixel whose rays cross it; a blocker of one pixel is met at about half of them.
 #define FFX_DOF_HIGHLIGHT_WALK_SPACING 1.0f
 // ... and its most steps, which holds that spacing up to a segment of 16 half-res px along its longer axis.
 #define FFX_DOF_HIGHLIGHT_WALK_MAX_STEPS 16u
 // How near (half-res px) the surface at a crossing point must lie to the depth tried to be the one crossed: the
-// surfaces the walk meets are whole texels of HALF_COC, so a flat blocker meets its own depth exactly.
+// walk and the test read the same full-res radii, so a flat blocker meets its own depth exactly.
 #define FFX_DOF_HIGHLIGHT_CROSSING_TOLERANCE 0.5f
 
 // The steps of the walk from a light to a pixel `offset` full-res px from it.

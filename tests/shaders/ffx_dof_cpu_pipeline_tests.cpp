@@ -1220,3 +1220,39 @@ TEST_CASE("A far bar in front of a light casts a band across the light's whole d
         CHECK(noBlocker(77, 81) > 0.9 * noBlocker(50, 58));
     }
 }
+
+TEST_CASE("A small light in front of a bright one casts its shadow into the bright disc as the thin lens does",
+          "[pipeline]") {
+    // docs/quality.md's light pair at its nearest: a bright light of 3 x 3 px of 1000 at far radius 9.1 half-res px
+    // over a field of 0.05 at 16, and a dim light of 2 x 2 px of 50 at radius 3, 8 px to its left and 3 px higher,
+    // its rows straddling two half-res texels. In the thin lens the dim light hides the bright one from the pixels
+    // whose rays to it cross its depth inside it: its square scaled by 1 / (1 - 3 / 9.1) about the bright light,
+    // which lies wholly inside the bright disc and loses the disc's level there. Until the walk from the light read
+    // the full-res depth, it read HALF_COC, where the texel holding one row of the dim light took the field's radius,
+    // and the shadow lost that row (0.741 of the dim light's energy beside the bright one, against 0.615).
+    const uint32_t w = 160, h = 120;
+    const Scene none = makeScene(w, h, glm::vec4(0.05f, 0.05f, 0.05f, 1.0f), -16.0f);
+    Settings settings;
+    settings.cocLimit = 16.5f;
+    const float brightRadius = 9.1f, dimRadius = 3.0f;
+    const Scene bright = withLight(none, {80, 60}, 1000.0f, -brightRadius, 3);
+    const Scene dim = withLight(none, {72, 57}, 50.0f, -dimRadius, 2);
+    const Scene both = withLight(bright, {72, 57}, 50.0f, -dimRadius, 2);
+    const auto sumGreen = [](const std::vector<glm::vec4>& image) {
+        double sum = 0.0;
+        for (const glm::vec4& p : image) sum += p.y;
+        return sum;
+    };
+    const double noneSum = sumGreen(ffxdoftest::runPipeline(none, settings));
+    const double brightSum = sumGreen(ffxdoftest::runPipeline(bright, settings));
+    const double dimInput = 4.0 * (50.0 - 0.05);
+    const double alone = (sumGreen(ffxdoftest::runPipeline(dim, settings)) - noneSum) / dimInput;
+    const double beside = (sumGreen(ffxdoftest::runPipeline(both, settings)) - brightSum) / dimInput;
+    // The bright disc's level (its energy over pi R^2, R in full-res px) over the dim square's shadow.
+    const double scale = 1.0 / (1.0 - dimRadius / brightRadius);
+    const double brightLevel = 9.0 * (1000.0 - 0.05) / (3.14159265358979 * 4.0 * brightRadius * brightRadius);
+    const double thinLens = 1.0 - brightLevel * 4.0 * scale * scale / dimInput;
+    INFO("dim light alone " << alone << ", beside the bright one " << beside << ", thin lens " << thinLens);
+    CHECK(alone == Approx(1.0).margin(0.02));
+    CHECK(beside == Approx(thinLens).margin(0.03));
+}
