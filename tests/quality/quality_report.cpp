@@ -508,10 +508,10 @@ void writeLightPairs(std::ostream& md, vkrun::Device& device) {
     md << "Nearer placements, not gated (ring merging on): what the dim light adds beside the bright light over "
           "what it adds to the input, by its radius (rows) and its distance from the bright light (columns, px), "
           "then the thin lens's figure. The dim light lies in front of the bright one, so in the thin lens it hides "
-          "the bright light from the pixels whose rays to it pass through it: its shadow in the bright disc, the dim "
-          "square scaled by 1 / (1 - rDim / rBright) about the bright light, which takes away the bright disc's "
-          "light where it falls inside that disc (`thinLensPairRatio`, tests/quality/quality_scenes.cpp; 1 where it "
-          "falls outside, as in every case of the gated grid above). "
+          "the bright light from the pixels whose rays to it pass through it: its shadow in the bright disc, from "
+          "each point of the bright light the dim square scaled by 1 / (1 - rDim / rBright) about that point, which "
+          "takes away that point's light where it falls inside that point's disc (`thinLensPairRatio`, "
+          "tests/quality/quality_scenes.cpp; 1 where it falls outside, as in every case of the gated grid above). "
        << std::count_if(survey.begin(), survey.end(),
                         [&](const quality::LightPairCase& pair) { return !nearThinLens(pair); })
        << " of " << survey.size()
@@ -522,7 +522,10 @@ void writeLightPairs(std::ostream& md, vkrun::Device& device) {
           "where a pixel's own surface lay in front of it, and the dim light cast no shadow: 1.000 in every cell. The "
           "composite now walks from the light toward each quad for the far surfaces in front of it "
           "(`ffxDofHighlightDepthsMet`, docs/technique.md, \"What lies between a pixel and a light\"), and draws "
-          "the shadow.\n\n";
+          "the shadow. It casts the shadow from the bright light's centre alone, where the thin lens casts one from "
+          "each point of the 3 x 3 px light, up to 1.5 (scale - 1) px apart (1.8 px for the dim light of 10 px): "
+          "where the shadow falls across the bright disc's rim (10 px at 8, 6 px at 12), ffx-dof's shadow covers "
+          "less of the disc.\n\n";
     md << "| dim radius (px) |";
     for (int distance : quality::kLightPairSurveyDistances) md << " " << distance << " px |";
     md << "\n|---:|";
@@ -830,13 +833,16 @@ int main(int argc, char** argv) {
               "front of a light is a band across its whole disc in the thin lens, and was a notch where the branch "
               "lies here (docs/technique.md, \"What hides a highlight\").\n\n"
            << "lights-through-branches again (2026-12-02): the composite now walks, per quad, from each far light "
-              "toward the quad over the half-res CoC for the first two far depths in front of the light, and hides "
+              "toward the quad over the input depth's radius for the first two far depths in front of the light, and "
+              "hides "
               "the highlight at a pixel whose blocker point for such a depth lies on a full-resolution surface of "
               "that depth (docs/technique.md, \"What lies between a pixel and a light\"): the branch's band crosses "
               "the whole disc. lights-through-branches 25.82 -> 27.10 dB (its far field 25.76 -> 27.05; its margin "
               "over the input raised from 6.5 to 8.5 dB), far-branches' far field 37.69 -> 37.70, every other "
               "scene's figures unchanged; the dim light beside a bright one now casts its shadow (the table of "
-              "nearer placements above).\n\n"
+              "nearer placements above; a walk over HALF_COC gave every scene the same figures, but a texel holding "
+              "one row of the dim light took the field's radius and its shadow lost that row: 6 px at 8, 0.741 "
+              "against the thin lens's 0.615, now 0.612).\n\n"
            << "near-leaves-sky (2026-12-01): dark near leaves against a sky above white, the near field's side of "
               "far-branches. It passes its gates with 63cce1a's shaders, which ask which tiles gave light to the "
               "highlights, where they asked which hold a channel above white, to choose the composite's and the "

@@ -71,8 +71,8 @@ const std::vector<SceneGate>& sceneGates() {
          "dark band across its whole disc, where the rays from the disc's pixels to the light pass the branch; the "
          "composite walks from each light to each quad and hides the highlight where a far surface it meets lies "
          "in front of the light at that pixel's blocker point (ffxDofHighlightVisibilityPast), so the band crosses "
-         "the whole disc. A light the branch hides from the pinhole camera stays missing, and a branch narrower "
-         "than a half-res texel can slip between the walk's steps (docs/technique.md, \"What lies between a pixel "
+         "the whole disc. A light the branch hides from the pinhole camera stays missing, and a branch one pixel "
+         "wide can slip between the walk's steps (docs/technique.md, \"What lies between a pixel "
          "and a light\")"},
         {"near-leaves-sky", 22.0,
          "dark near leaves, strongly blurred, against a sky above white: their veils must let the bright sky "
@@ -763,22 +763,27 @@ std::vector<SmallLightCase> runSmallLightCases(vkrun::Device& device, const std:
 
 namespace {
 // The thin lens's figure of a light pair (LightPairCase::thinLensRatio). The dim light, nearer than the bright one,
-// hides the bright light from the pixels p whose rays to it cross the dim light's depth inside the dim light: the
-// point bright + (p - bright)(1 - rDim / rBright) lies in it. So its shadow is the dim square scaled by
-// 1 / (1 - rDim / rBright) about the bright light (taken as a point at its centre), and the shadow takes the bright
-// disc's level (its energy over pi rBright^2) wherever it lies inside that disc. Integrated on a grid of 1/64 px.
+// hides each point q of the bright light from the pixels p whose rays to q cross the dim light's depth inside the
+// dim light: the point q + (p - q)(1 - rDim / rBright) lies in it. So its shadow from q is the dim square scaled by
+// 1 / (1 - rDim / rBright) about q, and it takes q's share of the bright disc's level (the bright light's energy
+// over pi rBright^2) wherever it lies inside q's disc, of radius rBright about q. Integrated over 8 x 8 points of
+// each of the bright light's pixels and a grid of 1/32 px over the dim square.
 double thinLensPairRatio(const SquareLight& bright, const SquareLight& dim, double background) {
-    const double centreX = bright.x0 + 0.5 * bright.size, centreY = bright.y0 + 0.5 * bright.size;
     const double scale = 1.0 / (1.0 - dim.radius / bright.radius);
-    const int steps = 64 * dim.size;
-    const double cell = double(dim.size) / steps;
-    double inside = 0.0;
-    for (int j = 0; j < steps; ++j)
-        for (int i = 0; i < steps; ++i) {
-            const double x = (dim.x0 + (i + 0.5) * cell - centreX) * scale;
-            const double y = (dim.y0 + (j + 0.5) * cell - centreY) * scale;
-            if (x * x + y * y <= bright.radius * bright.radius) inside += cell * cell * scale * scale;
+    const int sourceSteps = 8 * bright.size, shadowSteps = 32 * dim.size;
+    const double sourceCell = double(bright.size) / sourceSteps, shadowCell = double(dim.size) / shadowSteps;
+    double inside = 0.0;  // shadow area inside the source point's disc, summed over the source points
+    for (int qj = 0; qj < sourceSteps; ++qj)
+        for (int qi = 0; qi < sourceSteps; ++qi) {
+            const double qx = bright.x0 + (qi + 0.5) * sourceCell, qy = bright.y0 + (qj + 0.5) * sourceCell;
+            for (int j = 0; j < shadowSteps; ++j)
+                for (int i = 0; i < shadowSteps; ++i) {
+                    const double x = (dim.x0 + (i + 0.5) * shadowCell - qx) * scale;
+                    const double y = (dim.y0 + (j + 0.5) * shadowCell - qy) * scale;
+                    if (x * x + y * y <= bright.radius * bright.radius) inside += 1.0;
+                }
         }
+    inside *= shadowCell * shadowCell * scale * scale / (double(sourceSteps) * sourceSteps);
     const double brightLevel = bright.size * bright.size * (bright.value - background) /
                                (3.14159265358979323846 * bright.radius * bright.radius);
     // The rays the dim light hides from the bright one would have carried the bright light in place of the background.
