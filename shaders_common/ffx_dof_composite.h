@@ -256,12 +256,18 @@ FFX_DOF_INLINE FfxInt32x2 ffxDofClampHalfTexel(FfxInt32x2 texel, FfxUInt32x2 hal
     return clamp(texel, FfxInt32x2(0, 0), FfxInt32x2(halfSize) - FfxInt32x2(1, 1));
 }
 
-// The radius of the full-res pixel at a point (px), from the input depth.
+// The radius of a full-res pixel (inside the image), from the input depth.
+FFX_DOF_INLINE FfxFloat32 ffxDofLoadPixelCoc(FfxUInt32x2 pixel, FfxDofConstants constants)
+{
+    return ffxDofCocFromDepth(ffxDofLoadInputDepth(pixel), constants.cocScale, constants.cocBias, constants.cocLimit);
+}
+
+// The radius of the full-res pixel at a point (px), the image continued by its edge pixels.
 FFX_DOF_INLINE FfxFloat32 ffxDofLoadPixelCocAt(FfxFloat32x2 position, FfxDofConstants constants)
 {
-    FfxUInt32x2 pixel = FfxUInt32x2(
-        clamp(FfxInt32x2(floor(position)), FfxInt32x2(0, 0), FfxInt32x2(constants.fullSize) - FfxInt32x2(1, 1)));
-    return ffxDofCocFromDepth(ffxDofLoadInputDepth(pixel), constants.cocScale, constants.cocBias, constants.cocLimit);
+    return ffxDofLoadPixelCoc(FfxUInt32x2(clamp(FfxInt32x2(floor(position)), FfxInt32x2(0, 0),
+                                                FfxInt32x2(constants.fullSize) - FfxInt32x2(1, 1))),
+                              constants);
 }
 
 // The far depths in front of a far highlight of |radius| `highlightRadius` (half-res px) at `lightCentre` that the
@@ -453,8 +459,7 @@ FFX_DOF_INLINE FfxDofQuadNeighbourhood ffxDofNeighbourhoodLessHighlights(FfxDofQ
             continue;
         FfxInt32x2 tileAround = pixel / extent - FfxInt32x2(groupId) + FfxInt32x2(1, 1);
         FfxFloat32x3 floors = ffxDofUnpackHighlightFloors(ffxDofSharedTilesAround[tileAround.y * 3 + tileAround.x]);
-        FfxFloat32 coc = ffxDofCocFromDepth(ffxDofLoadInputDepth(FfxUInt32x2(pixel)), constants.cocScale,
-                                            constants.cocBias, constants.cocLimit);
+        FfxFloat32 coc = ffxDofLoadPixelCoc(FfxUInt32x2(pixel), constants);
         FfxFloat32x4 color = neighbourhood.color[k];
         FfxFloat32x3 rgb = FfxFloat32x3(color.x, color.y, color.z);
         rgb *= 1.0f - ffxDofPixelHighlightShare(FfxUInt32x2(pixel), rgb, coc, floors, scale, constants.fullSize);
@@ -1106,8 +1111,7 @@ FFX_DOF_INLINE void ffxDofComposite(FfxUInt32 compositeClass, FfxUInt32 listInde
                       FfxInt32x2(0, 0), FfxInt32x2(constants.fullSize) - FfxInt32x2(1, 1));
             FfxFloat32x4 inputColor = ffxDofCompositeInput(FfxUInt32x2(pixel), quad, scale);
             FfxFloat32x3 sampleColor = FfxFloat32x3(inputColor.x, inputColor.y, inputColor.z);
-            FfxFloat32 sampleCoc = ffxDofCocFromDepth(ffxDofLoadInputDepth(FfxUInt32x2(pixel)), constants.cocScale,
-                                                      constants.cocBias, constants.cocLimit);
+            FfxFloat32 sampleCoc = ffxDofLoadPixelCoc(FfxUInt32x2(pixel), constants);
             // The gathers draw what pass 2 left of the pixel's light; the highlights draw the rest.
             if (highlightsAround && ffxDofCompositeInputIsFullRes(FfxUInt32x2(pixel), quad))
             {
@@ -1179,8 +1183,7 @@ FFX_DOF_INLINE void ffxDofComposite(FfxUInt32 compositeClass, FfxUInt32 listInde
     for (FfxUInt32 k = 0u; k < 4u; ++k)
     {
         FfxUInt32x2 pixel = quad + FfxUInt32x2(k & 1u, k >> 1u);
-        cocs[k] = ffxDofCocFromDepth(ffxDofLoadInputDepth(min(pixel, constants.fullSize - FfxUInt32x2(1u, 1u))),
-                                     constants.cocScale, constants.cocBias, constants.cocLimit);
+        cocs[k] = ffxDofLoadPixelCoc(min(pixel, constants.fullSize - FfxUInt32x2(1u, 1u)), constants);
         FfxBoolean inside = pixel.x < constants.fullSize.x && pixel.y < constants.fullSize.y;
         if (inside && ffxDofPixelGathersOwnSurface(ownSurfaceTile, abs(cocs[k])))
             ownGathers |= 1u << k;
