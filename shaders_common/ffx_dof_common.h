@@ -57,7 +57,7 @@
 #endif
 // The class of tiles (FFX_DOF_COMPOSITE_CLASS_*) a composite pipeline composes, from its tile list.
 #ifndef FFX_DOF_OPTION_COMPOSITE_CLASS
-#define FFX_DOF_OPTION_COMPOSITE_CLASS FFX_DOF_COMPOSITE_CLASS_FULL_RES
+#define FFX_DOF_OPTION_COMPOSITE_CLASS FFX_DOF_COMPOSITE_CLASS_LIGHTS
 #endif
 
 // ---- Tuning constants -------------------------------------------------------------------------

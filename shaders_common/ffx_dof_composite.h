@@ -25,10 +25,10 @@
 //      group loads once (a quad at a time: ffxDofGatherOwnSurfaceQuad), the far layer showing where it does not
 //      cover the disc (near pixels too: their far layer is the background the blur extrapolates
 //      behind them; a near pixel takes the layers by the square of what it leaves uncovered), and
-//      handing over to the layers over the last half-res px. Only the FULL_RES class
-//      gathers at full resolution (own surface and small sources) and draws the far highlights pass 2 took
-//      out of the layers (ffxDofHighlightsAtQuad, ffx_dof_highlights.h), on the far layer; the LAYERS class's
-//      pipeline has none of these.
+//      handing over to the layers over the last half-res px. Only the FULL_RES and
+//      LIGHTS classes gather their own surface at full resolution, and only LIGHTS draws the small sources at full
+//      resolution and the highlights pass 2 took out of the layers (ffxDofHighlightsAtQuad, ffx_dof_highlights.h),
+//      on the far layer; the LAYERS class's pipeline has none of these, FULL_RES's none of the lights.
 // HDR range: the input color is multiplied by the frame's ffxDofColorRangeScale (from GLOBALS, written
 // by pass 2) as it is read, in 32-bit, so all the work happens in the range of the half-res layers;
 // a composed pixel is divided by the scale when stored (exact for the power-of-two scale unless the
@@ -1023,7 +1023,10 @@ FFX_DOF_INLINE void ffxDofComposite(FfxUInt32 compositeClass, FfxUInt32 listInde
 #endif
         return;
     }
-    FfxBoolean fullResTile = compositeClass == FfxUInt32(FFX_DOF_COMPOSITE_CLASS_FULL_RES);
+    // FULL_RES and LIGHTS tiles gather at full resolution; only LIGHTS tiles draw lights there
+    // (ffxDofCompositeTileClass).
+    FfxBoolean lightsTile = compositeClass == FfxUInt32(FFX_DOF_COMPOSITE_CLASS_LIGHTS);
+    FfxBoolean fullResTile = lightsTile || compositeClass == FfxUInt32(FFX_DOF_COMPOSITE_CLASS_FULL_RES);
     FfxFloat32 scale = ffxDofLoadColorScale();
     FfxFloat32x2 tile = ffxDofLoadTile(groupId);
 
@@ -1041,7 +1044,7 @@ FFX_DOF_INLINE void ffxDofComposite(FfxUInt32 compositeClass, FfxUInt32 listInde
         ffxDofSharedHighlightsInReach = 0u;
     if (localIndex < FfxUInt32(FFX_DOF_HIGHLIGHT_WINDOW_WORDS))
         ffxDofSharedHighlightTiles[localIndex] = 0u;
-    if (fullResTile && localIndex < 9u)
+    if (lightsTile && localIndex < 9u)
     {
         FfxUInt32x2 around = ffxDofTileAround(groupId, localIndex, constants.tileCount);
         FfxFloat32x3 rangeAndPeak = ffxDofLoadTileRangeAndPeak(around);
@@ -1070,7 +1073,7 @@ FFX_DOF_INLINE void ffxDofComposite(FfxUInt32 compositeClass, FfxUInt32 listInde
     // Whether a pixel of the full-res neighbourhood may have given light to the highlights (the same for the
     // whole group: its pixels skip the share where none does).
     FfxBoolean highlightsAround = false;
-    if (fullResTile)
+    if (lightsTile)
     {
         FFX_DOF_UNROLL
         for (FfxUInt32 k = 0u; k < 9u; ++k)
@@ -1078,9 +1081,9 @@ FFX_DOF_INLINE void ffxDofComposite(FfxUInt32 compositeClass, FfxUInt32 listInde
     }
     // Dilate's survey of the same 9 tiles (ffxDofSurveyTilesAround), which chose the class.
     FfxBoolean smallSourceTile =
-        fullResTile && (ffxDofListedTileFlags(listedTile) & FfxUInt32(FFX_DOF_LISTED_TILE_SMALL_SOURCES)) != 0u;
+        lightsTile && (ffxDofListedTileFlags(listedTile) & FfxUInt32(FFX_DOF_LISTED_TILE_SMALL_SOURCES)) != 0u;
     // Which tiles in the highlights' window hold one, a tile an invocation (known after the next barrier).
-    if (fullResTile)
+    if (lightsTile)
     {
         FfxInt32x2 first;
         FfxInt32x2 last;
@@ -1145,7 +1148,7 @@ FFX_DOF_INLINE void ffxDofComposite(FfxUInt32 compositeClass, FfxUInt32 listInde
     FfxFloat32x4 inputColors[4];
     {
         FfxDofQuadNeighbourhood neighbourhood = ffxDofLoadQuadNeighbourhood(quad, constants.fullSize, scale);
-        if (fullResTile && highlightsAround)
+        if (lightsTile && highlightsAround)
             neighbourhood = ffxDofNeighbourhoodLessHighlights(neighbourhood, quad, groupId, constants, scale);
         FFX_DOF_UNROLL
         for (FfxUInt32 k = 0u; k < 4u; ++k)
@@ -1191,7 +1194,7 @@ FFX_DOF_INLINE void ffxDofComposite(FfxUInt32 compositeClass, FfxUInt32 listInde
             smallGathers |= 1u << k;
     }
     FfxDofQuadHighlights highlights = ffxDofNoQuadHighlights();
-    if (fullResTile && ffxDofSharedHighlightsInReach != 0u)
+    if (lightsTile && ffxDofSharedHighlightsInReach != 0u)
         highlights = ffxDofHighlightsAtQuad(groupId, quad, cocs, constants);
     FfxDofQuadGathers own;
     FfxDofQuadGathers small;

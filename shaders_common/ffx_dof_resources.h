@@ -129,13 +129,14 @@
 #define FFX_DOF_BLUR_CLASS_COUNT 6
 #define FFX_DOF_COMPOSITE_CLASS_COPY 0      // in focus and no near field reaches it: the input, unchanged
 #define FFX_DOF_COMPOSITE_CLASS_LAYERS 1    // the half-res layers and the fixed 3x3 blur
-#define FFX_DOF_COMPOSITE_CLASS_FULL_RES 2  // and pixels gathered at full resolution (own surface, small sources)
-#define FFX_DOF_COMPOSITE_CLASS_COUNT 3
+#define FFX_DOF_COMPOSITE_CLASS_FULL_RES 2  // and pixels whose own surface is gathered at full resolution
+#define FFX_DOF_COMPOSITE_CLASS_LIGHTS 3    // and lights drawn at full resolution (small sources, highlights)
+#define FFX_DOF_COMPOSITE_CLASS_COUNT 4
 // List numbers: a pass's class c is list FIRST + c. Each pass's first list is even, since lists share
-// storage in pairs (ffxDofTileListWord): the blur's six take lists 0 to 5, the composite's three 6 to 8.
+// storage in pairs (ffxDofTileListWord): the blur's six take lists 0 to 5, the composite's four 6 to 9.
 #define FFX_DOF_BLUR_TILE_LIST_FIRST 0
 #define FFX_DOF_COMPOSITE_TILE_LIST_FIRST 6
-#define FFX_DOF_TILE_LIST_COUNT 9
+#define FFX_DOF_TILE_LIST_COUNT 10
 #define FFX_DOF_TILE_LIST_ARRAYS 5         // arrays of one word per tile in TILE_LISTS: ceil(lists / 2)
 #define FFX_DOF_TILE_LIST_ARGS_WORDS 4     // words per list in TILE_LIST_ARGS
 #define FFX_DOF_LISTED_TILE_Y_LIMIT 16384  // tile rows a TILE_LISTS word holds (14 bits)

@@ -70,8 +70,7 @@ std::vector<uint32_t> apertureValues(const Options& options) {
 std::vector<Variant> variantsOf(const char* pass, const Options& options) {
     std::vector<Variant> variants;
     if (std::strcmp(pass, "composite") == 0) {
-        for (uint32_t tileClass :
-             {FFX_DOF_COMPOSITE_CLASS_COPY, FFX_DOF_COMPOSITE_CLASS_LAYERS, FFX_DOF_COMPOSITE_CLASS_FULL_RES}) {
+        for (uint32_t tileClass = 0; tileClass < FFX_DOF_COMPOSITE_CLASS_COUNT; ++tileClass) {
             if (!(options.inPlace && tileClass == FFX_DOF_COMPOSITE_CLASS_COPY)) variants.push_back({0u, tileClass});
         }
     } else if (std::strcmp(pass, "blur") == 0) {

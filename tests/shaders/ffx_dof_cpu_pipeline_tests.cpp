@@ -1100,7 +1100,7 @@ TEST_CASE("A far field above white without lights takes the cheap paths, a light
             const size_t tile = size_t(ty) * layers.tilesX + tx;
             const int away = std::max(std::abs(int(tx) - lightTile.x), std::abs(int(ty) - lightTile.y));
             CHECK(layers.blurTileFlags[tile] == (away <= 1 ? uint32_t(FFX_DOF_LISTED_TILE_LIGHTS) : 0u));
-            if (away == 0) CHECK(layers.compositeClasses[tile] == uint32_t(FFX_DOF_COMPOSITE_CLASS_FULL_RES));
+            if (away == 0) CHECK(layers.compositeClasses[tile] == uint32_t(FFX_DOF_COMPOSITE_CLASS_LIGHTS));
             if (away >= 3) CHECK(layers.compositeClasses[tile] == uint32_t(FFX_DOF_COMPOSITE_CLASS_LAYERS));
         }
 }
@@ -1136,7 +1136,9 @@ TEST_CASE("A sky above white between nearer dark far branches is no light, brigh
             if ((flags & uint32_t(FFX_DOF_LISTED_TILE_LIGHTS)) != 0u) ++count;
         size_t fullRes = 0;
         for (const uint32_t compositeClass : layers.compositeClasses)
-            if (compositeClass == uint32_t(FFX_DOF_COMPOSITE_CLASS_FULL_RES)) ++fullRes;
+            if (compositeClass == uint32_t(FFX_DOF_COMPOSITE_CLASS_FULL_RES) ||
+                compositeClass == uint32_t(FFX_DOF_COMPOSITE_CLASS_LIGHTS))
+                ++fullRes;
         INFO("tiles " << layers.blurTileFlags.size() << ", with lights around " << count << ", full resolution "
                       << fullRes);
         if (count == 0) CHECK(fullRes == 0);
