@@ -997,14 +997,11 @@ FFX_DOF_INLINE FfxBoolean ffxDofComposePixel(FfxDofUpsampleTaps taps, FfxFloat32
     return true;
 }
 
-// Composes tile `listIndex` of the list of `compositeClass` (FFX_DOF_COMPOSITE_CLASS_*, which dilate chose
-// for it). The class is the pipeline's constant (FFX_DOF_OPTION_COMPOSITE_CLASS), so each pipeline holds only
-// its class's work: the copy, or the layers, or the layers and the full-resolution gathers.
-FFX_DOF_INLINE void ffxDofComposite(FfxUInt32 compositeClass, FfxUInt32 listIndex, FfxUInt32 localIndex)
+// Composes the tile of the list entry `listedTile` (ffxDofPackListedTile) by the work of `compositeClass`
+// (FFX_DOF_COMPOSITE_CLASS_*): the class dilate chose for it, or one holding more work (the CPU tests compare them).
+FFX_DOF_INLINE void ffxDofCompositeTile(FfxUInt32 listedTile, FfxUInt32 localIndex, FfxUInt32 compositeClass)
 {
     FfxDofConstants constants = ffxDofGetFocusedConstants();
-    FfxUInt32 listedTile = ffxDofListedTileWord(FfxUInt32(FFX_DOF_COMPOSITE_TILE_LIST_FIRST) + compositeClass,
-                                                listIndex, constants.tileCount.x * constants.tileCount.y);
     FfxUInt32x2 groupId = ffxDofUnpackListedTile(listedTile);
     FfxUInt32 extent = FfxUInt32(FFX_DOF_COMPOSITE_GROUP_EXTENT);
     FfxUInt32x2 quad = groupId * extent + ffxDofLocalCoord(localIndex) * 2u;
@@ -1242,6 +1239,17 @@ FFX_DOF_INLINE void ffxDofComposite(FfxUInt32 compositeClass, FfxUInt32 listInde
             ffxDofStoreOutput(pixel, ffxDofLoadInputColor(pixel));
 #endif
     }
+}
+
+// Composes tile `listIndex` of the list of `compositeClass` (FFX_DOF_COMPOSITE_CLASS_*, which dilate chose
+// for it). The class is the pipeline's constant (FFX_DOF_OPTION_COMPOSITE_CLASS), so each pipeline holds only
+// its class's work: the copy, or the layers, or the layers and the own-surface gather, or those and the lights.
+FFX_DOF_INLINE void ffxDofComposite(FfxUInt32 compositeClass, FfxUInt32 listIndex, FfxUInt32 localIndex)
+{
+    FfxUInt32x2 tileCount = ffxDofGetConstants().tileCount;
+    ffxDofCompositeTile(ffxDofListedTileWord(FfxUInt32(FFX_DOF_COMPOSITE_TILE_LIST_FIRST) + compositeClass, listIndex,
+                                             tileCount.x * tileCount.y),
+                        localIndex, compositeClass);
 }
 
 #endif  // FFX_DOF_COMPOSITE_H

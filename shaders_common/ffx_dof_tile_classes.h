@@ -64,10 +64,11 @@ FFX_DOF_INLINE FfxBoolean ffxDofTileKeepsInput(FfxFloat32x2 tile, FfxFloat32 dil
 
 // The composite's class of a tile: `drawsLights` whether it draws small sources (FFX_DOF_LISTED_TILE_SMALL_SOURCES) or
 // highlights (ffx_dof_highlights.h) at full resolution; `lightsAround` whether a tile of the 3 x 3 around it gave light
-// to the highlights (FFX_DOF_LISTED_TILE_LIGHTS), which its own-surface gather leaves out of the pixels it reads. A
-// tile that gathers its own surface with no light to draw or leave out takes FULL_RES, whose pipeline has none of the
-// lights' code: on lavapipe every workgroup pays for all of its pipeline's code, taken or not (docs/performance.md,
-// "Own surface without the lights").
+// to the highlights (FFX_DOF_LISTED_TILE_LIGHTS), which its own-surface gather leaves out of the pixels it reads (such
+// a tile's discs reach its neighbours, so dilate finds them reached today; asked here as well, so that FULL_RES never
+// depends on dilate's reach test). A tile that gathers its own surface with no light to draw or leave out takes
+// FULL_RES, whose pipeline has none of the lights' code: on lavapipe every workgroup pays for all of its pipeline's
+// code, taken or not (docs/performance.md, "Own surface without the lights").
 FFX_DOF_INLINE FfxUInt32 ffxDofCompositeTileClass(FfxFloat32x2 tile, FfxFloat32 dilatedNear, FfxBoolean drawsLights,
                                                   FfxBoolean lightsAround)
 {

@@ -335,9 +335,17 @@ std::vector<glm::vec4> runPipeline(const Scene& scene, const Settings& settings,
                                               g_state->constants.tileCount.x * g_state->constants.tileCount.y),
                          local, FFX_DOF_BLUR_CLASS_MIXED);
                  });
+    const bool forceLights = settings.forceLightsCompositePath;
     runTileLists(FFX_DOF_COMPOSITE_TILE_LIST_FIRST, FFX_DOF_COMPOSITE_CLASS_COUNT,
-                 [](FfxUInt32 compositeClass, FfxUInt32 listIndex, FfxUInt32 local) {
-                     ffxDofComposite(compositeClass, listIndex, local);
+                 [forceLights](FfxUInt32 compositeClass, FfxUInt32 listIndex, FfxUInt32 local) {
+                     if (!forceLights || compositeClass != FFX_DOF_COMPOSITE_CLASS_FULL_RES) {
+                         ffxDofComposite(compositeClass, listIndex, local);
+                         return;
+                     }
+                     ffxDofCompositeTile(
+                         ffxDofListedTileWord(FFX_DOF_COMPOSITE_TILE_LIST_FIRST + compositeClass, listIndex,
+                                              g_state->constants.tileCount.x * g_state->constants.tileCount.y),
+                         local, FFX_DOF_COMPOSITE_CLASS_LIGHTS);
                  });
 
     if (layers) {

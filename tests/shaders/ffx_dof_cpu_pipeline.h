@@ -27,6 +27,9 @@ struct Settings {
     // Runs every blur tile on the mixed path instead of its class's (ffxDofBlurTileClass): the
     // reference the cheaper paths are compared with.
     bool forceMixedBlurPath = false;
+    // Runs every composite tile of class FULL_RES on the LIGHTS path (ffxDofCompositeTileClass): the reference the
+    // class without the lights' code is compared with.
+    bool forceLightsCompositePath = false;
     // The aperture, as FfxDofDispatchDescription::pAperture gives it (the SDK sets the constants).
     FfxDofAperture aperture{0, 0.0f, 0.0f, 1.0f, 0.0f};
 };

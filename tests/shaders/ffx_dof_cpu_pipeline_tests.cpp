@@ -289,6 +289,58 @@ TEST_CASE("Every blur tile class occurs, and each path gives what the mixed path
     for (const glm::vec4& pixel : out) REQUIRE(std::isfinite(pixel.x + pixel.y + pixel.z));
 }
 
+TEST_CASE(
+    "Own-surface tiles without lights take the class without the lights' code, and compose as the lights' class "
+    "would",
+    "[pipeline]") {
+    // A slight blur over a textured field (radii 1 to 3 half-res px: every tile gathers its own surface at full
+    // resolution), a near patch, and small lights above white in one corner: the tiles their light reaches, or that
+    // lie beside a tile that gave light, take LIGHTS, the others FULL_RES (ffxDofCompositeTileClass). Composed by the
+    // LIGHTS pipeline instead, the FULL_RES tiles must come out the same to the bit: what FULL_RES leaves out adds
+    // nothing there.
+    const uint32_t w = 256, h = 160;
+    Scene scene = makeScene(w, h, kBackground, -2.0f);
+    for (uint32_t y = 0; y < h; ++y)
+        for (uint32_t x = 0; x < w; ++x) {
+            const size_t i = size_t(y) * w + x;
+            const uint32_t hash = uint32_t(i) * 2654435761u;
+            scene.color[i] = glm::vec4(float(hash >> 24) / 255.0f, float((hash >> 16) & 255u) / 255.0f, 0.5f, 1.0f);
+            scene.depth[i] = 1.2f + 1.4f * float(x) / float(w);  // radius -1.2 to -2.6: far, gathered at full res
+        }
+    paint(scene, Rect{150, 90, 190, 130}, 2.0f, true);  // near, gathered at full resolution too
+    scene = withLight(scene, glm::ivec2(20, 20), 60.0f, -2.5f, 2);
+    scene = withLight(scene, glm::ivec2(44, 30), 30.0f, -2.0f, 1);
+    Settings settings;
+    settings.cocLimit = 4.0f;
+    Layers classified, lightsEverywhere;
+    const std::vector<glm::vec4> out = ffxdoftest::runPipeline(scene, settings, &classified);
+    settings.forceLightsCompositePath = true;
+    const std::vector<glm::vec4> forced = ffxdoftest::runPipeline(scene, settings, &lightsEverywhere);
+
+    uint32_t tilesOfClass[FFX_DOF_COMPOSITE_CLASS_COUNT] = {};
+    for (const uint32_t compositeClass : classified.compositeClasses) ++tilesOfClass[compositeClass];
+    INFO("tiles: copy " << tilesOfClass[FFX_DOF_COMPOSITE_CLASS_COPY] << ", layers "
+                        << tilesOfClass[FFX_DOF_COMPOSITE_CLASS_LAYERS] << ", full resolution "
+                        << tilesOfClass[FFX_DOF_COMPOSITE_CLASS_FULL_RES] << ", lights "
+                        << tilesOfClass[FFX_DOF_COMPOSITE_CLASS_LIGHTS]);
+    CHECK(tilesOfClass[FFX_DOF_COMPOSITE_CLASS_FULL_RES] >= 100u);
+    CHECK(tilesOfClass[FFX_DOF_COMPOSITE_CLASS_LIGHTS] >= 4u);
+    // The lights' tiles are the corner's; a tile beside one that gave light is one of them.
+    for (size_t tile = 0; tile < classified.compositeClasses.size(); ++tile) {
+        const uint32_t tx = uint32_t(tile % classified.tilesX), ty = uint32_t(tile / classified.tilesX);
+        INFO("tile " << tx << ", " << ty);
+        if ((classified.blurTileFlags[tile] & uint32_t(FFX_DOF_LISTED_TILE_LIGHTS)) != 0u)
+            CHECK(classified.compositeClasses[tile] == uint32_t(FFX_DOF_COMPOSITE_CLASS_LIGHTS));
+        if (tx >= 6u || ty >= 6u) CHECK(classified.compositeClasses[tile] != uint32_t(FFX_DOF_COMPOSITE_CLASS_LIGHTS));
+    }
+    // The lights are drawn: the corner holds more than the field's light.
+    const glm::vec4 lightCentre = out[size_t(21) * w + 21];
+    CHECK(lightCentre.x > 2.0f);
+    size_t differing = 0;
+    for (size_t i = 0; i < out.size(); ++i) differing += out[i] != forced[i];
+    CHECK(differing == 0u);
+}
+
 TEST_CASE("Tiles hold the CoC range of their pixels", "[pipeline]") {
     Scene scene = makeScene(100, 60, kBackground, -3.0f);
     paint(scene, Rect{20, 10, 21, 11}, 7.5f, false);
