@@ -308,8 +308,9 @@ std::vector<glm::vec4> runPipeline(const Scene& scene, const Settings& settings,
     runGroups(groups(k.tileCount.x, FFX_DOF_DILATE_GROUP_EXTENT), groups(k.tileCount.y, FFX_DOF_DILATE_GROUP_EXTENT),
               ffxDofDilate);
     // One indirect dispatch per class and pass, over the tiles dilate listed under it (every tile in
-    // exactly one list of each pass).
-    auto runTileLists = [&state, &k](uint32_t firstList, uint32_t classCount, auto&& runListedGroup) {
+    // exactly one list of each pass): `runListedTile(listed tile word, its class, local index)` per invocation, as
+    // the pass's entry point (ffxDofBlur, ffxDofComposite) reads the word from the list of its class.
+    auto runTileLists = [&state, &k](uint32_t firstList, uint32_t classCount, auto&& runListedTile) {
         uint32_t listedTiles = 0;
         for (uint32_t tileClass = 0; tileClass < classCount; ++tileClass) {
             uint32_t args[3];
@@ -317,35 +318,24 @@ std::vector<glm::vec4> runPipeline(const Scene& scene, const Settings& settings,
                 args[w] = state.tileListArgs[(firstList + tileClass) * FFX_DOF_TILE_LIST_ARGS_WORDS + w].load();
             if (args[1] != 1 || args[2] != 1) throw std::logic_error("tile list dispatch arguments not reset");
             listedTiles += args[0];
-            runGroups(args[0], 1, [tileClass, &runListedGroup](FfxUInt32x2 group, FfxUInt32 local) {
-                runListedGroup(tileClass, group.x, local);
+            runGroups(args[0], 1, [firstList, tileClass, &k, &runListedTile](FfxUInt32x2 group, FfxUInt32 local) {
+                runListedTile(ffxDofListedTileWord(firstList + tileClass, group.x, k.tileCount.x * k.tileCount.y),
+                              tileClass, local);
             });
         }
         if (listedTiles != k.tileCount.x * k.tileCount.y) throw std::logic_error("not every tile is listed once");
     };
     const bool forceMixed = settings.forceMixedBlurPath;
     runTileLists(FFX_DOF_BLUR_TILE_LIST_FIRST, FFX_DOF_BLUR_CLASS_COUNT,
-                 [forceMixed](FfxUInt32 blurClass, FfxUInt32 listIndex, FfxUInt32 local) {
-                     if (!forceMixed) {
-                         ffxDofBlur(blurClass, listIndex, local);
-                         return;
-                     }
-                     ffxDofBlurTile(
-                         ffxDofListedTileWord(FFX_DOF_BLUR_TILE_LIST_FIRST + blurClass, listIndex,
-                                              g_state->constants.tileCount.x * g_state->constants.tileCount.y),
-                         local, FFX_DOF_BLUR_CLASS_MIXED);
+                 [forceMixed](FfxUInt32 listedTile, FfxUInt32 blurClass, FfxUInt32 local) {
+                     ffxDofBlurTile(listedTile, local, forceMixed ? FfxUInt32(FFX_DOF_BLUR_CLASS_MIXED) : blurClass);
                  });
     const bool forceLights = settings.forceLightsCompositePath;
     runTileLists(FFX_DOF_COMPOSITE_TILE_LIST_FIRST, FFX_DOF_COMPOSITE_CLASS_COUNT,
-                 [forceLights](FfxUInt32 compositeClass, FfxUInt32 listIndex, FfxUInt32 local) {
-                     if (!forceLights || compositeClass != FFX_DOF_COMPOSITE_CLASS_FULL_RES) {
-                         ffxDofComposite(compositeClass, listIndex, local);
-                         return;
-                     }
-                     ffxDofCompositeTile(
-                         ffxDofListedTileWord(FFX_DOF_COMPOSITE_TILE_LIST_FIRST + compositeClass, listIndex,
-                                              g_state->constants.tileCount.x * g_state->constants.tileCount.y),
-                         local, FFX_DOF_COMPOSITE_CLASS_LIGHTS);
+                 [forceLights](FfxUInt32 listedTile, FfxUInt32 compositeClass, FfxUInt32 local) {
+                     const bool lights = forceLights && compositeClass == FFX_DOF_COMPOSITE_CLASS_FULL_RES;
+                     ffxDofCompositeTile(listedTile, local,
+                                         lights ? FfxUInt32(FFX_DOF_COMPOSITE_CLASS_LIGHTS) : compositeClass);
                  });
 
     if (layers) {
