@@ -196,9 +196,8 @@ FFX_DOF_INLINE void ffxDofDilate(FfxUInt32x2 groupId, FfxUInt32 localIndex)
     ffxDofListTile(FfxUInt32(FFX_DOF_BLUR_TILE_LIST_FIRST) + ffxDofBlurTileClass(dilated),
                    ffxDofPackListedTile(tile, around), tilesPerList);
     FfxBoolean drawsSmallSources = (around & FfxUInt32(FFX_DOF_LISTED_TILE_SMALL_SOURCES)) != 0u;
-    FfxBoolean lightsAround = (around & FfxUInt32(FFX_DOF_LISTED_TILE_LIGHTS)) != 0u;
-    FfxUInt32 compositeClass = ffxDofCompositeTileClass(ffxDofLoadTile(tile), farNear.y,
-                                                        drawsSmallSources || reachedByHighlights, lightsAround);
+    FfxUInt32 compositeClass =
+        ffxDofCompositeTileClass(ffxDofLoadTile(tile), farNear.y, drawsSmallSources || reachedByHighlights);
     ffxDofListTile(FfxUInt32(FFX_DOF_COMPOSITE_TILE_LIST_FIRST) + compositeClass, ffxDofPackListedTile(tile, around),
                    tilesPerList);
 }

@@ -63,21 +63,19 @@ FFX_DOF_INLINE FfxBoolean ffxDofTileKeepsInput(FfxFloat32x2 tile, FfxFloat32 dil
 }
 
 // The composite's class of a tile: `drawsLights` whether it draws small sources (FFX_DOF_LISTED_TILE_SMALL_SOURCES) or
-// highlights (ffx_dof_highlights.h) at full resolution; `lightsAround` whether a tile of the 3 x 3 around it gave light
-// to the highlights (FFX_DOF_LISTED_TILE_LIGHTS), which its own-surface gather leaves out of the pixels it reads (such
-// a tile's discs reach its neighbours, so dilate finds them reached today; asked here as well, so that FULL_RES never
-// depends on dilate's reach test). A tile that gathers its own surface with no light to draw or leave out takes
+// highlights (ffx_dof_highlights.h) at full resolution. A tile that gathers its own surface and draws no light takes
 // FULL_RES, whose pipeline has none of the lights' code: on lavapipe every workgroup pays for all of its pipeline's
-// code, taken or not (docs/performance.md, "Own surface without the lights").
-FFX_DOF_INLINE FfxUInt32 ffxDofCompositeTileClass(FfxFloat32x2 tile, FfxFloat32 dilatedNear, FfxBoolean drawsLights,
-                                                  FfxBoolean lightsAround)
+// code, taken or not (docs/performance.md, "Own surface without the lights"). Such a tile has no neighbour that gave
+// light either (whose share of its pixels the own-surface gather would leave out): a tile gives light only at radii
+// from FFX_DOF_HIGHLIGHT_MIN_RADIUS, and with FFX_DOF_DILATE_MARGIN its discs reach every tile of the 3 x 3 around it,
+// which dilate therefore finds drawing them.
+FFX_DOF_INLINE FfxUInt32 ffxDofCompositeTileClass(FfxFloat32x2 tile, FfxFloat32 dilatedNear, FfxBoolean drawsLights)
 {
     if (ffxDofTileKeepsInput(tile, dilatedNear))
         return FfxUInt32(FFX_DOF_COMPOSITE_CLASS_COPY);
-    FfxBoolean gathersOwnSurface = ffxDofTileGathersOwnSurface(tile);
-    if (drawsLights || (gathersOwnSurface && lightsAround))
+    if (drawsLights)
         return FfxUInt32(FFX_DOF_COMPOSITE_CLASS_LIGHTS);
-    if (gathersOwnSurface)
+    if (ffxDofTileGathersOwnSurface(tile))
         return FfxUInt32(FFX_DOF_COMPOSITE_CLASS_FULL_RES);
     return FfxUInt32(FFX_DOF_COMPOSITE_CLASS_LAYERS);
 }

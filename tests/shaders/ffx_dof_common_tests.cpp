@@ -1284,39 +1284,43 @@ TEST_CASE("The own-surface gather covers radii below the far-layer radius, and h
 
 TEST_CASE(
     "Composite classes: a copy where every pixel keeps its input, full resolution only where it gathers there, "
-    "the lights' pipeline only where lights are drawn or left out",
+    "the lights' pipeline only where lights are drawn",
     "[composite]") {
     const FfxUInt32 copy = FFX_DOF_COMPOSITE_CLASS_COPY;
     const FfxUInt32 layers = FFX_DOF_COMPOSITE_CLASS_LAYERS;
     const FfxUInt32 fullRes = FFX_DOF_COMPOSITE_CLASS_FULL_RES;
     const FfxUInt32 lights = FFX_DOF_COMPOSITE_CLASS_LIGHTS;
-    // (min, max) signed radii, the dilated near radius, whether lights are drawn in it, whether a tile around gave
-    // light.
+    // (min, max) signed radii, the dilated near radius, whether lights are drawn in it.
     const glm::vec2 inFocus(-0.4f, 0.4f);
-    CHECK(ffxDofCompositeTileClass(inFocus, 0.4f, false, false) == copy);
+    CHECK(ffxDofCompositeTileClass(inFocus, 0.4f, false) == copy);
     // A near field that reaches the tile, or a pixel just out of focus: the layers.
-    CHECK(ffxDofCompositeTileClass(inFocus, FFX_DOF_NEAR_THRESHOLD, false, false) == layers);
-    CHECK(ffxDofCompositeTileClass(glm::vec2(-FFX_DOF_IN_FOCUS_RADIUS, 0.0f), 0.0f, false, false) == layers);
-    CHECK(ffxDofCompositeTileClass(glm::vec2(0.0f, FFX_DOF_IN_FOCUS_RADIUS), 0.0f, false, false) == layers);
+    CHECK(ffxDofCompositeTileClass(inFocus, FFX_DOF_NEAR_THRESHOLD, false) == layers);
+    CHECK(ffxDofCompositeTileClass(glm::vec2(-FFX_DOF_IN_FOCUS_RADIUS, 0.0f), 0.0f, false) == layers);
+    CHECK(ffxDofCompositeTileClass(glm::vec2(0.0f, FFX_DOF_IN_FOCUS_RADIUS), 0.0f, false) == layers);
     // An in-focus tile drawing small sources keeps its input: the sources are composed over far pixels only.
-    CHECK(ffxDofCompositeTileClass(inFocus, 0.0f, true, true) == copy);
-    // Far or near layers alone; light given around a tile that gathers nothing at full resolution changes nothing.
-    CHECK(ffxDofCompositeTileClass(glm::vec2(-9.0f, -3.0f), 0.0f, false, false) == layers);
-    CHECK(ffxDofCompositeTileClass(glm::vec2(3.0f, 9.0f), 9.0f, false, false) == layers);
-    CHECK(ffxDofCompositeTileClass(glm::vec2(-9.0f, -3.0f), 0.0f, false, true) == layers);
-    // Every tile whose own surface the composite gathers: without lights the own-surface pipeline, with light given
-    // around it (which its gather leaves out) or drawn in it the lights' pipeline.
+    CHECK(ffxDofCompositeTileClass(inFocus, 0.0f, true) == copy);
+    // Far or near layers alone.
+    CHECK(ffxDofCompositeTileClass(glm::vec2(-9.0f, -3.0f), 0.0f, false) == layers);
+    CHECK(ffxDofCompositeTileClass(glm::vec2(3.0f, 9.0f), 9.0f, false) == layers);
+    // Every tile whose own surface the composite gathers: without lights the own-surface pipeline, with lights drawn
+    // in it the lights' pipeline.
     for (const glm::vec2 tile : {glm::vec2(-9.0f, -2.9f), glm::vec2(-1.0f, 0.0f), glm::vec2(0.0f, 1.0f),
                                  glm::vec2(2.9f, 9.0f), glm::vec2(-9.0f, 9.0f)}) {
         INFO("tile " << tile.x << ", " << tile.y);
         REQUIRE(ffxDofTileGathersOwnSurface(tile));
-        CHECK(ffxDofCompositeTileClass(tile, tile.y, false, false) == fullRes);
-        CHECK(ffxDofCompositeTileClass(tile, tile.y, false, true) == lights);
-        CHECK(ffxDofCompositeTileClass(tile, tile.y, true, false) == lights);
+        CHECK(ffxDofCompositeTileClass(tile, tile.y, false) == fullRes);
+        CHECK(ffxDofCompositeTileClass(tile, tile.y, true) == lights);
     }
     // Every tile drawing lights.
-    CHECK(ffxDofCompositeTileClass(glm::vec2(-9.0f, -3.0f), 0.0f, true, false) == lights);
-    CHECK(ffxDofCompositeTileClass(glm::vec2(3.0f, 9.0f), 9.0f, true, true) == lights);
+    CHECK(ffxDofCompositeTileClass(glm::vec2(-9.0f, -3.0f), 0.0f, true) == lights);
+    CHECK(ffxDofCompositeTileClass(glm::vec2(3.0f, 9.0f), 9.0f, true) == lights);
+    // FULL_RES leaves out the highlights' share of the pixels it gathers, so no tile beside one that gave light may
+    // take it: such a tile's discs, of at least FFX_DOF_HIGHLIGHT_MIN_RADIUS, reach every tile of the 3 x 3 around it,
+    // so dilate finds them drawing its light (reachedByHighlights).
+    for (const FfxInt32x2 offset : {FfxInt32x2(0, 0), FfxInt32x2(1, 0), FfxInt32x2(0, 1), FfxInt32x2(1, 1)}) {
+        INFO("offset " << offset.x << ", " << offset.y);
+        CHECK(ffxDofTileReaches(FFX_DOF_HIGHLIGHT_MIN_RADIUS, ffxDofTileGapDistance(offset)));
+    }
     // Every pixel a copy tile holds keeps its input in the full composition: in focus, no near opacity.
     CHECK(ffxDofTileKeepsInput(inFocus, 0.0f));
     CHECK_FALSE(ffxDofTileKeepsInput(inFocus, FFX_DOF_NEAR_THRESHOLD));
