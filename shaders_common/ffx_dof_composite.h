@@ -209,8 +209,14 @@ FFX_DOF_GROUPSHARED FfxUInt32 ffxDofSharedHighlightsInReach;
 // reads this array 50 to 150 times per pixel: one 8-byte read instead of a color and a radius, and a
 // smaller array lets more groups share a compute unit (on an H200 the pass took 0.19 instead of
 // 0.27 ms at 1080p in 16-bit, 0.26 instead of 0.48 ms in 32-bit; docs/performance.md). The color is
-// at most FFX_DOF_COLOR_RANGE_LIMIT after scaling, well inside the 16-bit range.
-FFX_DOF_GROUPSHARED FfxUInt32x2 ffxDofSharedOwnSample[FFX_DOF_OWN_SURFACE_SIDE * FFX_DOF_OWN_SURFACE_SIDE];
+// at most FFX_DOF_COLOR_RANGE_LIMIT after scaling, well inside the 16-bit range. Two pixels of a row
+// share an element (the even one in xy, the odd one in zw), so that the quads' gathers read two samples
+// at a time: on lavapipe a group-shared read whose address differs per lane is a loop over the lanes,
+// whatever its width (docs/performance.md, "Own samples two at a time").
+#if (FFX_DOF_OWN_SURFACE_SIDE % 2) != 0
+#error "the own-surface neighbourhood's rows must hold whole pairs of pixels"
+#endif
+FFX_DOF_GROUPSHARED FfxUInt32x4 ffxDofSharedOwnSamplePairs[FFX_DOF_OWN_SURFACE_SIDE * FFX_DOF_OWN_SURFACE_SIDE / 2];
 
 // The lowest mantissa bit of the stored |radius| says whether the pixel is in the far field, which only
 // ffxDofGatherSmallSources asks: a sign the own-surface gather would take abs() of per read made the
@@ -218,25 +224,62 @@ FFX_DOF_GROUPSHARED FfxUInt32x2 ffxDofSharedOwnSample[FFX_DOF_OWN_SURFACE_SIDE *
 // place of a half (0.004 px at 4 px).
 #define FFX_DOF_OWN_SAMPLE_FAR_BIT 0x10000u
 
-FFX_DOF_INLINE void ffxDofStoreOwnSample(FfxUInt32 index, FfxFloat32x3 color, FfxFloat32 radius)
+FFX_DOF_INLINE FfxUInt32x2 ffxDofPackOwnSample(FfxFloat32x3 color, FfxFloat32 radius)
 {
     FfxUInt32 blueRadius = ffxDofPackHalf2(FfxFloat32x2(color.z, abs(radius)));
     blueRadius = (blueRadius & ~FFX_DOF_OWN_SAMPLE_FAR_BIT) | (radius < 0.0f ? FFX_DOF_OWN_SAMPLE_FAR_BIT : 0u);
-    ffxDofSharedOwnSample[index] = FfxUInt32x2(ffxDofPackHalf2(FfxFloat32x2(color.x, color.y)), blueRadius);
+    return FfxUInt32x2(ffxDofPackHalf2(FfxFloat32x2(color.x, color.y)), blueRadius);
 }
 
 // Color in xyz, |radius| (full-res px) in w.
-FFX_DOF_INLINE FfxFloat32x4 ffxDofLoadOwnSample(FfxUInt32 index)
+FFX_DOF_INLINE FfxFloat32x4 ffxDofUnpackOwnSample(FfxUInt32x2 packed)
 {
-    FfxUInt32x2 packed = ffxDofSharedOwnSample[index];
     FfxFloat32x2 redGreen = ffxDofUnpackHalf2(packed.x);
     FfxFloat32x2 blueRadius = ffxDofUnpackHalf2(packed.y);
     return FfxFloat32x4(redGreen.x, redGreen.y, blueRadius.x, blueRadius.y);
 }
 
+FFX_DOF_INLINE FfxBoolean ffxDofPackedOwnSampleIsFar(FfxUInt32x2 packed)
+{
+    return (packed.y & FFX_DOF_OWN_SAMPLE_FAR_BIT) != 0u;
+}
+
+// The samples of pixels 2 `pair` and 2 `pair` + 1 of the neighbourhood, one read; `odd` picks one of them.
+FFX_DOF_INLINE FfxUInt32x4 ffxDofLoadOwnSamplePair(FfxUInt32 pair) { return ffxDofSharedOwnSamplePairs[pair]; }
+FFX_DOF_INLINE FfxUInt32x2 ffxDofOwnSampleOfPair(FfxUInt32x4 pair, FfxBoolean odd)
+{
+    return odd ? FfxUInt32x2(pair.z, pair.w) : FfxUInt32x2(pair.x, pair.y);
+}
+
+FFX_DOF_INLINE void ffxDofStoreOwnSamplePair(FfxUInt32 pair, FfxUInt32x2 even, FfxUInt32x2 odd)
+{
+    ffxDofSharedOwnSamplePairs[pair] = FfxUInt32x4(even.x, even.y, odd.x, odd.y);
+}
+
+// One pixel's sample, its pair's other pixel left as it is: word by word, so that two invocations may store
+// the two pixels of a pair.
+FFX_DOF_INLINE void ffxDofStoreOwnSample(FfxUInt32 index, FfxFloat32x3 color, FfxFloat32 radius)
+{
+    FfxUInt32x2 packed = ffxDofPackOwnSample(color, radius);
+    FfxUInt32 word = (index & 1u) * 2u;
+    ffxDofSharedOwnSamplePairs[index >> 1u][word] = packed.x;
+    ffxDofSharedOwnSamplePairs[index >> 1u][word + 1u] = packed.y;
+}
+
+FFX_DOF_INLINE FfxUInt32x2 ffxDofLoadPackedOwnSample(FfxUInt32 index)
+{
+    return ffxDofOwnSampleOfPair(ffxDofLoadOwnSamplePair(index >> 1u), (index & 1u) != 0u);
+}
+
+// Pixel `index`'s sample: color in xyz, |radius| (full-res px) in w.
+FFX_DOF_INLINE FfxFloat32x4 ffxDofLoadOwnSample(FfxUInt32 index)
+{
+    return ffxDofUnpackOwnSample(ffxDofLoadPackedOwnSample(index));
+}
+
 FFX_DOF_INLINE FfxBoolean ffxDofOwnSampleIsFar(FfxUInt32 index)
 {
-    return (ffxDofSharedOwnSample[index].y & FFX_DOF_OWN_SAMPLE_FAR_BIT) != 0u;
+    return ffxDofPackedOwnSampleIsFar(ffxDofLoadPackedOwnSample(index));
 }
 
 #if FFX_DOF_OPTION_OUTPUT_PRE_INIT
@@ -593,21 +636,30 @@ FFX_DOF_INLINE FfxDofQuadGathers ffxDofGatherOwnSurfaceQuad(FfxInt32x2 topLeft, 
             }
         }
         FfxInt32 row = (topLeft.y + y) * FfxInt32(FFX_DOF_OWN_SURFACE_SIDE) + topLeft.x;
+        // The row's samples two at a time: a pair that also holds a sample beyond the union's columns
+        // weighs it 0 for every pixel, so the sums are the same to the bit.
+        FfxInt32 lastPair = first <= last ? (row + last) >> 1 : -1;
         FFX_DOF_LOOP
-        for (FfxInt32 x = first; x <= last; ++x)
+        for (FfxInt32 pair = (row + first) >> 1; pair <= lastPair; ++pair)
         {
-            FfxFloat32x4 colorRadius = ffxDofLoadOwnSample(FfxUInt32(row + x));
-            FfxFloat32x3 color = FfxFloat32x3(colorRadius.x, colorRadius.y, colorRadius.z);
-            FfxFloat32 areaWeight = ffxDofRoundAreaWeight(colorRadius.w);
+            FfxUInt32x4 packedPair = ffxDofLoadOwnSamplePair(FfxUInt32(pair));
             FFX_DOF_UNROLL
-            for (FfxUInt32 k = 0u; k < 4u; ++k)
+            for (FfxUInt32 odd = 0u; odd < 2u; ++odd)
             {
-                FfxInt32 dx = x - FfxInt32(k & 1u);
-                FfxInt32 dy = y - FfxInt32(k >> 1u);
-                FfxFloat32 weight =
-                    abs(dx) <= rowExtents[k] ? ffxDofOwnSampleWeight(colorRadius.w, areaWeight, dx, dy) : 0.0f;
-                sums[k] += color * weight;
-                weightSums[k] += weight;
+                FfxInt32 x = 2 * pair + FfxInt32(odd) - row;
+                FfxFloat32x4 colorRadius = ffxDofUnpackOwnSample(ffxDofOwnSampleOfPair(packedPair, odd != 0u));
+                FfxFloat32x3 color = FfxFloat32x3(colorRadius.x, colorRadius.y, colorRadius.z);
+                FfxFloat32 areaWeight = ffxDofRoundAreaWeight(colorRadius.w);
+                FFX_DOF_UNROLL
+                for (FfxUInt32 k = 0u; k < 4u; ++k)
+                {
+                    FfxInt32 dx = x - FfxInt32(k & 1u);
+                    FfxInt32 dy = y - FfxInt32(k >> 1u);
+                    FfxFloat32 weight =
+                        abs(dx) <= rowExtents[k] ? ffxDofOwnSampleWeight(colorRadius.w, areaWeight, dx, dy) : 0.0f;
+                    sums[k] += color * weight;
+                    weightSums[k] += weight;
+                }
             }
         }
     }
@@ -690,26 +742,34 @@ FFX_DOF_INLINE FfxDofQuadGathers ffxDofGatherSmallSourcesQuad(FfxInt32x2 topLeft
     for (FfxInt32 y = -extent; y <= extent + 1; ++y)
     {
         FfxInt32 row = (topLeft.y + y) * FfxInt32(FFX_DOF_OWN_SURFACE_SIDE) + topLeft.x;
+        // Two samples a read, as ffxDofGatherOwnSurfaceQuad's: one beyond the square weighs 0.
         FFX_DOF_LOOP
-        for (FfxInt32 x = -extent; x <= extent + 1; ++x)
+        for (FfxInt32 pair = (row - extent) >> 1; pair <= (row + extent + 1) >> 1; ++pair)
         {
-            FfxFloat32x4 colorRadius = ffxDofLoadOwnSample(FfxUInt32(row + x));
-            FfxFloat32x3 color = FfxFloat32x3(colorRadius.x, colorRadius.y, colorRadius.z);
-            FfxBoolean far = ffxDofOwnSampleIsFar(FfxUInt32(row + x));
-            FfxFloat32 sourceAbs = colorRadius.w * 0.5f;
-            FfxFloat32 areaWeight = ffxDofRoundAreaWeight(2.0f * sourceAbs);
+            FfxUInt32x4 packedPair = ffxDofLoadOwnSamplePair(FfxUInt32(pair));
             FFX_DOF_UNROLL
-            for (FfxUInt32 k = 0u; k < 4u; ++k)
+            for (FfxUInt32 odd = 0u; odd < 2u; ++odd)
             {
-                FfxInt32 dx = x - FfxInt32(k & 1u);
-                FfxInt32 dy = y - FfxInt32(k >> 1u);
-                FfxBoolean inside = (gathers & (1u << k)) != 0u && abs(dx) <= extent && abs(dy) <= extent;
-                FfxFloat32 share = inside ? ffxDofSmallSourceSampleShare(far, sourceAbs, absCocs[k]) : 0.0f;
-                FfxFloat32 weight =
-                    ffxDofReach(2.0f * sourceAbs, sqrt(FfxFloat32(dx * dx + dy * dy))) * areaWeight * share;
-                sums[k] += color * weight;
-                weightSums[k] += weight;
-                radiusSums[k] += colorRadius.w * weight;
+                FfxInt32 x = 2 * pair + FfxInt32(odd) - row;
+                FfxUInt32x2 packed = ffxDofOwnSampleOfPair(packedPair, odd != 0u);
+                FfxFloat32x4 colorRadius = ffxDofUnpackOwnSample(packed);
+                FfxFloat32x3 color = FfxFloat32x3(colorRadius.x, colorRadius.y, colorRadius.z);
+                FfxBoolean far = ffxDofPackedOwnSampleIsFar(packed);
+                FfxFloat32 sourceAbs = colorRadius.w * 0.5f;
+                FfxFloat32 areaWeight = ffxDofRoundAreaWeight(2.0f * sourceAbs);
+                FFX_DOF_UNROLL
+                for (FfxUInt32 k = 0u; k < 4u; ++k)
+                {
+                    FfxInt32 dx = x - FfxInt32(k & 1u);
+                    FfxInt32 dy = y - FfxInt32(k >> 1u);
+                    FfxBoolean inside = (gathers & (1u << k)) != 0u && abs(dx) <= extent && abs(dy) <= extent;
+                    FfxFloat32 share = inside ? ffxDofSmallSourceSampleShare(far, sourceAbs, absCocs[k]) : 0.0f;
+                    FfxFloat32 weight =
+                        ffxDofReach(2.0f * sourceAbs, sqrt(FfxFloat32(dx * dx + dy * dy))) * areaWeight * share;
+                    sums[k] += color * weight;
+                    weightSums[k] += weight;
+                    radiusSums[k] += colorRadius.w * weight;
+                }
             }
         }
     }
@@ -997,6 +1057,32 @@ FFX_DOF_INLINE FfxBoolean ffxDofComposePixel(FfxDofUpsampleTaps taps, FfxFloat32
     return true;
 }
 
+// Pixel `index` of the own-surface neighbourhood (its top-left pixel at `origin`, clamped to the image), packed
+// for the gathers (ffxDofPackOwnSample): its scaled input and radius, less what pass 2 took of its light where
+// `highlightsAround` (the gathers draw what pass 2 left of the pixel's light; the highlights draw the rest).
+FFX_DOF_INLINE FfxUInt32x2 ffxDofOwnNeighbourhoodSample(FfxUInt32 index, FfxInt32x2 origin, FfxUInt32x2 groupId,
+                                                        FfxBoolean highlightsAround, FfxFloat32 scale,
+                                                        FfxDofConstants constants)
+{
+    FfxInt32x2 pixel = clamp(origin + FfxInt32x2(FfxInt32(index % FfxUInt32(FFX_DOF_OWN_SURFACE_SIDE)),
+                                                 FfxInt32(index / FfxUInt32(FFX_DOF_OWN_SURFACE_SIDE))),
+                             FfxInt32x2(0, 0), FfxInt32x2(constants.fullSize) - FfxInt32x2(1, 1));
+    FfxFloat32x4 inputColor =
+        ffxDofCompositeInput(FfxUInt32x2(pixel), groupId * FfxUInt32(FFX_DOF_COMPOSITE_GROUP_EXTENT), scale);
+    FfxFloat32x3 sampleColor = FfxFloat32x3(inputColor.x, inputColor.y, inputColor.z);
+    FfxFloat32 sampleCoc = ffxDofLoadPixelCoc(FfxUInt32x2(pixel), constants);
+    if (highlightsAround &&
+        ffxDofCompositeInputIsFullRes(FfxUInt32x2(pixel), groupId * FfxUInt32(FFX_DOF_COMPOSITE_GROUP_EXTENT)))
+    {
+        FfxInt32x2 tileAround =
+            pixel / FfxInt32(FFX_DOF_COMPOSITE_GROUP_EXTENT) - FfxInt32x2(groupId) + FfxInt32x2(1, 1);
+        FfxFloat32x3 tileFloors = ffxDofUnpackHighlightFloors(ffxDofSharedTilesAround[tileAround.y * 3 + tileAround.x]);
+        sampleColor *= 1.0f - ffxDofPixelHighlightShare(FfxUInt32x2(pixel), sampleColor, sampleCoc, tileFloors, scale,
+                                                        constants.fullSize);
+    }
+    return ffxDofPackOwnSample(sampleColor, 2.0f * sampleCoc);
+}
+
 // Composes the tile of the list entry `listedTile` (ffxDofPackListedTile) by the work of `compositeClass`
 // (FFX_DOF_COMPOSITE_CLASS_*): the class dilate chose for it, or one holding more work (the CPU tests compare them).
 FFX_DOF_INLINE void ffxDofCompositeTile(FfxUInt32 listedTile, FfxUInt32 localIndex, FfxUInt32 compositeClass)
@@ -1102,27 +1188,13 @@ FFX_DOF_INLINE void ffxDofCompositeTile(FfxUInt32 listedTile, FfxUInt32 localInd
         FfxInt32x2(groupId * extent) - FfxInt32x2(FFX_DOF_OWN_SURFACE_BORDER, FFX_DOF_OWN_SURFACE_BORDER);
     if (ownSurfaceTile || smallSourceTile)
     {
-        for (FfxUInt32 index = localIndex; index < FfxUInt32(FFX_DOF_OWN_SURFACE_SIDE * FFX_DOF_OWN_SURFACE_SIDE);
-             index += FfxUInt32(FFX_DOF_GROUP_THREADS))
-        {
-            FfxInt32x2 pixel =
-                clamp(ownSurfaceOrigin + FfxInt32x2(FfxInt32(index % FfxUInt32(FFX_DOF_OWN_SURFACE_SIDE)),
-                                                    FfxInt32(index / FfxUInt32(FFX_DOF_OWN_SURFACE_SIDE))),
-                      FfxInt32x2(0, 0), FfxInt32x2(constants.fullSize) - FfxInt32x2(1, 1));
-            FfxFloat32x4 inputColor = ffxDofCompositeInput(FfxUInt32x2(pixel), quad, scale);
-            FfxFloat32x3 sampleColor = FfxFloat32x3(inputColor.x, inputColor.y, inputColor.z);
-            FfxFloat32 sampleCoc = ffxDofLoadPixelCoc(FfxUInt32x2(pixel), constants);
-            // The gathers draw what pass 2 left of the pixel's light; the highlights draw the rest.
-            if (highlightsAround && ffxDofCompositeInputIsFullRes(FfxUInt32x2(pixel), quad))
-            {
-                FfxInt32x2 tileAround = pixel / FfxInt32(extent) - FfxInt32x2(groupId) + FfxInt32x2(1, 1);
-                FfxFloat32x3 tileFloors =
-                    ffxDofUnpackHighlightFloors(ffxDofSharedTilesAround[tileAround.y * 3 + tileAround.x]);
-                sampleColor *= 1.0f - ffxDofPixelHighlightShare(FfxUInt32x2(pixel), sampleColor, sampleCoc, tileFloors,
-                                                                scale, constants.fullSize);
-            }
-            ffxDofStoreOwnSample(index, sampleColor, 2.0f * sampleCoc);
-        }
+        for (FfxUInt32 pair = localIndex; pair < FfxUInt32(FFX_DOF_OWN_SURFACE_SIDE * FFX_DOF_OWN_SURFACE_SIDE / 2);
+             pair += FfxUInt32(FFX_DOF_GROUP_THREADS))
+            ffxDofStoreOwnSamplePair(
+                pair,
+                ffxDofOwnNeighbourhoodSample(2u * pair, ownSurfaceOrigin, groupId, highlightsAround, scale, constants),
+                ffxDofOwnNeighbourhoodSample(2u * pair + 1u, ownSurfaceOrigin, groupId, highlightsAround, scale,
+                                             constants));
     }
     FfxInt32x2 filteredOrigin = tileOrigin - FfxInt32x2(1, 1);
     for (FfxUInt32 index = localIndex; index < FfxUInt32(FFX_DOF_FILTERED_SIDE * FFX_DOF_FILTERED_SIDE);
