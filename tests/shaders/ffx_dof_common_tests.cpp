@@ -1231,7 +1231,8 @@ TEST_CASE("A quad's full-resolution gathers in one walk equal each pixel's own, 
                                      glm::vec3(unit(random), unit(random), unit(random)) * light,
                                      unit(random) < 0.5f ? radius : -radius);
             }
-        const glm::ivec2 topLeft(FFX_DOF_OWN_SURFACE_BORDER + 2 * (trial % 4),
+        // Columns of both parities: the walks read the neighbourhood two samples at a time, from even columns.
+        const glm::ivec2 topLeft(FFX_DOF_OWN_SURFACE_BORDER + trial % 8,
                                  FFX_DOF_OWN_SURFACE_BORDER + 2 * ((trial / 4) % 4));
         const uint32_t gathers = trial < 16 ? 15u : uint32_t(trial % 16);
         // Own surface: radii within the gather's range.
