@@ -538,131 +538,178 @@ struct FfxDofRingWalk
     FfxDofAnnulusBorder kernelBorder;  // the outer border of the kernel's outermost ring, at the kernel's MIP
 };
 
+// One step of a ring walk: the texel read, where its light lies from the kernel centre, and whether it
+// counts (0 for a step past a row's end, or, where the walk leaves them out, a light the kernel's own MIP
+// read). `coarse` is a literal at both calls: MIP 0 reads HALF_COLOR and HALF_COC, MIPs 1 and up read
+// COARSE_MIPS, colour, radius and light offset in one fetch.
+struct FfxDofWalkedSample
+{
+    FfxFloat32x3 color;
+    FfxFloat32 coc;
+    FfxFloat32x2 toTexel;
+    FfxFloat32 valid;
+};
+FFX_DOF_INLINE FfxDofWalkedSample ffxDofFetchWalkedSample(FfxDofKernel kernel, FfxDofRingWalk ring,
+                                                          FfxDofAnnulusWalk walk, FfxBoolean inAnnulus,
+                                                          FfxBoolean coarse, FfxDofGatherParts parts)
+{
+    FfxDofWalkedSample step;
+    FfxFloat32x2 sampleTexel = clamp(walk.texel, FfxFloat32x2(0.0f, 0.0f), ring.lastTexel);
+    step.valid = inAnnulus && ffxDofAnnulusValid(walk) ? 1.0f : 0.0f;
+    // Reach is judged from where the light of the texel lies: its centre at MIP 0, its light offset
+    // above. Beyond the image border the image is taken as its edge texels repeated, each copy at
+    // the position walked: judged from the clamped texel instead, every read past the border counted
+    // the edge texel again at its own place, so a near object within a kernel of the border grew
+    // opaque there (near-object's near field 0.59 dB lower, docs/quality.md).
+    step.toTexel = walk.texel - ring.centerToCorner;
+    step.coc = kernel.centerCoc;
+    if (coarse)
+    {
+        FfxUInt32x2 packed = ffxDofLoadCoarseMip(FfxInt32x2(sampleTexel), ring.mip);
+        step.color = ffxDofCoarseTexelColor(packed);
+        if (!parts.equalWeights)
+            step.coc = ffxDofCoarseTexelCoc(packed);
+        FfxFloat32x2 lightOffset = ffxDofCoarseTexelLightOffset(packed);
+        step.toTexel += lightOffset;
+        if (ring.skipKernelTexels)
+        {
+            // The texel of the kernel's MIP that holds the light, judged by the kernel's own border
+            // figures (ffxDofBorderSpan), so that a light the kernel read is not read again.
+            FfxFloat32x2 kernelTexel =
+                floor((walk.texel + FfxFloat32x2(0.5f, 0.5f) + lightOffset) * ring.kernelTexelsPerTexel);
+            step.valid = ffxDofBorderHolds(ring.kernelBorder, kernelTexel) ? 0.0f : step.valid;
+        }
+    }
+    else
+    {
+        step.color = ffxDofToFloat32x3(ffxDofLoadHalfColor(FfxInt32x2(sampleTexel)));
+        if (!parts.equalWeights)
+            step.coc = ffxDofLoadHalfCoc(FfxInt32x2(sampleTexel));
+    }
+    return step;
+}
+
+// Adds one step of a ring walk to the gather (its hole fill to ringFillSum / ringFillProximity). Written
+// for devices that run both sides of every branch (lavapipe): near and far samples are added with 0/1
+// shares instead of a branch, and a step that counts 0 (`valid`) is added with weight 0.
+FFX_DOF_INLINE void ffxDofAddWalkedSample(FFX_DOF_INOUT(FfxDofGather) gather, FFX_DOF_INOUT(FfxFloat32x3) ringFillSum,
+                                          FFX_DOF_INOUT(FfxFloat32) ringFillProximity, FfxDofKernel kernel,
+                                          FfxDofRingWalk ring, FfxDofWalkedSample step, FfxBoolean coarse,
+                                          FfxDofGatherParts parts)
+{
+    FfxBoolean holeFill = parts.nearField && parts.farField;
+    FfxFloat32 centerAbsCoc = abs(kernel.centerCoc);
+    FfxFloat32x3 color = step.color;
+    FfxFloat32 coc = step.coc;
+    FfxFloat32 valid = step.valid;
+    if (ring.trackSpread)
+        gather.cocSpread = max(gather.cocSpread, abs(coc - kernel.centerCoc) * valid);
+    FfxBoolean nearSample = coc >= FFX_DOF_NEAR_THRESHOLD;
+    FfxFloat32 gauge = sqrt(dot(step.toTexel, step.toTexel));
+    if (parts.shaped)
+        gauge = ffxDofApertureDistance(kernel.aperture, step.toTexel, nearSample);
+    FfxFloat32 distance = gauge * ring.texelSize;
+    // Near and far samples weigh alike (reach times inverse area).
+    FfxFloat32 absCoc = abs(coc);
+    FfxFloat32 areaWeight =
+        parts.shaped ? ffxDofApertureAreaWeight(kernel.aperture, absCoc) : ffxDofRoundAreaWeight(absCoc);
+    FfxFloat32 reach = ffxDofReach(absCoc, distance);
+    reach *= valid;
+    FfxFloat32 weight = reach * areaWeight * ring.sampleWeight;
+    FfxFloat32 farShare = nearSample ? 0.0f : valid;
+    if (!parts.nearField)
+        farShare = valid;
+    if (!parts.farField)
+        farShare = 0.0f;
+    FfxFloat32 farWeight = weight * farShare;
+    FfxFloat32 ownShare = 0.0f;
+    if (parts.nearField)
+    {
+        // A texel the near field covers in part carries that share, in quarters at MIP 0 and sixteenths
+        // above (Near coverage, ffx_dof_common.h); equal-weight tiles hold none (their tiles are all near
+        // or all far).
+        FfxFloat32 coverage = parts.equalWeights ? 1.0f
+                              : coarse           ? ffxDofCoarseNearCoverage(coc)
+                                                 : ffxDofNearCoverage(coc);
+        FfxFloat32 nearWeight = (weight - farWeight) * coverage;
+        gather.nearSum += color * nearWeight;
+        gather.nearWeight += nearWeight;
+        gather.nearRadiusSum += absCoc * nearWeight;
+        if (holeFill)
+            gather.veiledArea += ffxDofReach(centerAbsCoc, distance) * (valid - farShare) * coverage *
+                                 ffxDofVeilShare(absCoc, centerAbsCoc) * ring.sampleWeight;
+    }
+    if (parts.farField)
+    {
+        // On an equal-weight path every step has the texel's own radius, so all of it is the texel's
+        // own surface: literals, so that the other buckets' sums compile away.
+        FfxFloat32 frontShare = parts.equalWeights    ? 1.0f
+                                : kernel.centerIsNear ? 0.0f
+                                                      : ffxDofFarFrontShare(absCoc, centerAbsCoc);
+        FfxFloat32 nearerShare =
+            parts.equalWeights || kernel.centerIsNear ? 0.0f : ffxDofFarNearerShare(absCoc, centerAbsCoc);
+        ownShare = frontShare - nearerShare;
+        FfxFloat32 frontWeight = farWeight * frontShare;
+        FfxFloat32 nearerWeight = farWeight * nearerShare;
+        // The texel's own surface, where the composite gathers it at full resolution, stays out of
+        // the far layer, which then holds only what lies in front and behind (ffxDofOwnGatherShare).
+        FfxFloat32 frontKept = (frontWeight - nearerWeight) * (1.0f - kernel.ownGatherShare);
+        // Small sources in front of a texel that the composite draws from the half-res layers are
+        // drawn there at full resolution instead (ffxDofSmallSourceShare).
+        FfxFloat32 nearerKept =
+            nearerWeight * (1.0f - kernel.smallSourceCut * ffxDofSmallSourceShare(absCoc, centerAbsCoc));
+        gather.farNearer.color += color * nearerKept;
+        gather.farNearer.weight += nearerKept;
+        gather.farFront.color += color * frontKept;
+        gather.farFront.weight += frontKept;
+        gather.farBack.color += color * (farWeight - frontWeight);
+        gather.farBack.weight += farWeight - frontWeight;
+    }
+    if (holeFill)
+    {
+        FfxFloat32 proximity = ffxDofFillProximity(distance) * farShare;
+        ringFillSum += color * proximity;
+        ringFillProximity += proximity;
+        FfxFloat32 ownProximity = proximity * ownShare * ring.sampleWeight;
+        gather.ownFill += FfxFloat32x4(color * ownProximity, ownProximity);
+    }
+}
+
+// Steps of a ring walk fetched before any of them is added (ffxDofWalkSamples): 3 and 4 took no less time than 2
+// on lavapipe (docs/performance.md, "Two walk steps an iteration").
+#define FFX_DOF_WALK_STEPS 2
+
 // The sample loop of one ring walk: every texel of `annulus` at the walk's MIP, once, added to the
-// gather (the ring's hole fill to ringFillSum / ringFillProximity). `coarse` is a literal at both calls: MIP
-// 0 reads HALF_COLOR and HALF_COC, MIPs 1 and up read COARSE_MIPS, colour, radius and light offset in
-// one fetch. Two loops rather than a choice per sample because on devices that run both sides of every
-// branch (lavapipe) a per-sample choice fetches from both images; a loop no lane enters costs at most one pass.
-// Written for such devices: near and far samples are added with 0/1 shares instead of a branch, and a
-// step of the walk that lands on an empty row counts with weight 0 (`valid`) rather than looping on to
-// the next row.
+// gather. Two loops (`coarse` a literal at both calls) rather than a choice per sample, because on
+// devices that run both sides of every branch (lavapipe) a per-sample choice fetches from both images; a
+// loop no lane enters costs at most one pass. A step of the walk that lands on an empty row counts with
+// weight 0 rather than looping on to the next row. FFX_DOF_WALK_STEPS steps an iteration, all fetched
+// before any is added: on lavapipe a fetch is a call that saves no vector register, so the sums live
+// across it were stored and reloaded around every fetch (the blur 0.92 to 0.95 times as long at 1080p); a
+// GPU has the fetches in flight together. The steps are added in the walk's order, so the sums are the same
+// to the bit. (Written as two named steps instead of this array's loop, lavapipe's compiler rounded a few
+// far-field sums of four scenes differently, 98 to 116 dB from the image before.)
 FFX_DOF_INLINE void ffxDofWalkSamples(FFX_DOF_INOUT(FfxDofGather) gather, FFX_DOF_INOUT(FfxFloat32x3) ringFillSum,
                                       FFX_DOF_INOUT(FfxFloat32) ringFillProximity, FfxDofKernel kernel,
                                       FfxDofRingWalk ring, FfxDofAnnulus annulus, FfxBoolean coarse,
                                       FfxDofGatherParts parts)
 {
-    FfxBoolean holeFill = parts.nearField && parts.farField;
-    FfxFloat32 centerAbsCoc = abs(kernel.centerCoc);
     FfxDofAnnulusWalk walk = ffxDofAnnulusBegin(annulus);
     FFX_DOF_LOOP
     while (ffxDofAnnulusRowsLeft(annulus, walk))
     {
-        FfxFloat32x2 sampleTexel = clamp(walk.texel, FfxFloat32x2(0.0f, 0.0f), ring.lastTexel);
-        FfxFloat32 valid = ffxDofAnnulusValid(walk) ? 1.0f : 0.0f;
-        // Reach is judged from where the light of the texel lies: its centre at MIP 0, its light offset
-        // above. Beyond the image border the image is taken as its edge texels repeated, each copy at
-        // the position walked: judged from the clamped texel instead, every read past the border counted
-        // the edge texel again at its own place, so a near object within a kernel of the border grew
-        // opaque there (near-object's near field 0.59 dB lower, docs/quality.md).
-        FfxFloat32x2 walked = walk.texel;
-        FfxFloat32x2 toTexel = walked - ring.centerToCorner;
-        walk = ffxDofAnnulusNext(annulus, walk);
-        FfxFloat32x3 color;
-        FfxFloat32 coc = kernel.centerCoc;
-        if (coarse)
+        FfxDofWalkedSample steps[FFX_DOF_WALK_STEPS];
+        FFX_DOF_UNROLL
+        for (FfxUInt32 k = 0u; k < FfxUInt32(FFX_DOF_WALK_STEPS); ++k)
         {
-            FfxUInt32x2 packed = ffxDofLoadCoarseMip(FfxInt32x2(sampleTexel), ring.mip);
-            color = ffxDofCoarseTexelColor(packed);
-            if (!parts.equalWeights)
-                coc = ffxDofCoarseTexelCoc(packed);
-            FfxFloat32x2 lightOffset = ffxDofCoarseTexelLightOffset(packed);
-            toTexel += lightOffset;
-            if (ring.skipKernelTexels)
-            {
-                // The texel of the kernel's MIP that holds the light, judged by the kernel's own border
-                // figures (ffxDofBorderSpan), so that a light the kernel read is not read again.
-                FfxFloat32x2 kernelTexel =
-                    floor((walked + FfxFloat32x2(0.5f, 0.5f) + lightOffset) * ring.kernelTexelsPerTexel);
-                valid = ffxDofBorderHolds(ring.kernelBorder, kernelTexel) ? 0.0f : valid;
-            }
+            // Past the annulus's last row a step counts 0 (its texel, clamped, is still read).
+            steps[k] = ffxDofFetchWalkedSample(kernel, ring, walk, k == 0u || ffxDofAnnulusRowsLeft(annulus, walk),
+                                               coarse, parts);
+            walk = ffxDofAnnulusNext(annulus, walk);
         }
-        else
-        {
-            color = ffxDofToFloat32x3(ffxDofLoadHalfColor(FfxInt32x2(sampleTexel)));
-            if (!parts.equalWeights)
-                coc = ffxDofLoadHalfCoc(FfxInt32x2(sampleTexel));
-        }
-        if (ring.trackSpread)
-            gather.cocSpread = max(gather.cocSpread, abs(coc - kernel.centerCoc) * valid);
-        FfxBoolean nearSample = coc >= FFX_DOF_NEAR_THRESHOLD;
-        FfxFloat32 gauge = sqrt(dot(toTexel, toTexel));
-        if (parts.shaped)
-            gauge = ffxDofApertureDistance(kernel.aperture, toTexel, nearSample);
-        FfxFloat32 distance = gauge * ring.texelSize;
-        // Near and far samples weigh alike (reach times inverse area).
-        FfxFloat32 absCoc = abs(coc);
-        FfxFloat32 areaWeight =
-            parts.shaped ? ffxDofApertureAreaWeight(kernel.aperture, absCoc) : ffxDofRoundAreaWeight(absCoc);
-        FfxFloat32 reach = ffxDofReach(absCoc, distance);
-        reach *= valid;
-        FfxFloat32 weight = reach * areaWeight * ring.sampleWeight;
-        FfxFloat32 farShare = nearSample ? 0.0f : valid;
-        if (!parts.nearField)
-            farShare = valid;
-        if (!parts.farField)
-            farShare = 0.0f;
-        FfxFloat32 farWeight = weight * farShare;
-        FfxFloat32 ownShare = 0.0f;
-        if (parts.nearField)
-        {
-            // A texel the near field covers in part carries that share, in quarters at MIP 0 and sixteenths
-            // above (Near coverage, ffx_dof_common.h); equal-weight tiles hold none (their tiles are all near
-            // or all far).
-            FfxFloat32 coverage = parts.equalWeights ? 1.0f
-                                  : coarse           ? ffxDofCoarseNearCoverage(coc)
-                                                     : ffxDofNearCoverage(coc);
-            FfxFloat32 nearWeight = (weight - farWeight) * coverage;
-            gather.nearSum += color * nearWeight;
-            gather.nearWeight += nearWeight;
-            gather.nearRadiusSum += absCoc * nearWeight;
-            if (holeFill)
-                gather.veiledArea += ffxDofReach(centerAbsCoc, distance) * (valid - farShare) * coverage *
-                                     ffxDofVeilShare(absCoc, centerAbsCoc) * ring.sampleWeight;
-        }
-        if (parts.farField)
-        {
-            // On an equal-weight path every sample has the texel's own radius, so all of it is the texel's
-            // own surface: literals, so that the other buckets' sums compile away.
-            FfxFloat32 frontShare = parts.equalWeights    ? 1.0f
-                                    : kernel.centerIsNear ? 0.0f
-                                                          : ffxDofFarFrontShare(absCoc, centerAbsCoc);
-            FfxFloat32 nearerShare =
-                parts.equalWeights || kernel.centerIsNear ? 0.0f : ffxDofFarNearerShare(absCoc, centerAbsCoc);
-            ownShare = frontShare - nearerShare;
-            FfxFloat32 frontWeight = farWeight * frontShare;
-            FfxFloat32 nearerWeight = farWeight * nearerShare;
-            // The texel's own surface, where the composite gathers it at full resolution, stays out of
-            // the far layer, which then holds only what lies in front and behind (ffxDofOwnGatherShare).
-            FfxFloat32 frontKept = (frontWeight - nearerWeight) * (1.0f - kernel.ownGatherShare);
-            // Small sources in front of a texel that the composite draws from the half-res layers are
-            // drawn there at full resolution instead (ffxDofSmallSourceShare).
-            FfxFloat32 nearerKept =
-                nearerWeight * (1.0f - kernel.smallSourceCut * ffxDofSmallSourceShare(absCoc, centerAbsCoc));
-            gather.farNearer.color += color * nearerKept;
-            gather.farNearer.weight += nearerKept;
-            gather.farFront.color += color * frontKept;
-            gather.farFront.weight += frontKept;
-            gather.farBack.color += color * (farWeight - frontWeight);
-            gather.farBack.weight += farWeight - frontWeight;
-        }
-        if (holeFill)
-        {
-            FfxFloat32 proximity = ffxDofFillProximity(distance) * farShare;
-            ringFillSum += color * proximity;
-            ringFillProximity += proximity;
-            FfxFloat32 ownProximity = proximity * ownShare * ring.sampleWeight;
-            gather.ownFill += FfxFloat32x4(color * ownProximity, ownProximity);
-        }
+        FFX_DOF_UNROLL
+        for (FfxUInt32 k = 0u; k < FfxUInt32(FFX_DOF_WALK_STEPS); ++k)
+            ffxDofAddWalkedSample(gather, ringFillSum, ringFillProximity, kernel, ring, steps[k], coarse, parts);
     }
 }
 
