@@ -357,65 +357,79 @@ FFX_DOF_INLINE FfxFloat32 ffxDofColorRangeScale(FfxFloat32 peak)
     return ffxDofAsFloat(FfxUInt32(127 - k) << 23u);
 }
 
-FFX_DOF_GROUPSHARED FfxFloat32x3 ffxDofSharedMipColor[FFX_DOF_GROUP_THREADS];
-FFX_DOF_GROUPSHARED FfxFloat32 ffxDofSharedMipCoc[FFX_DOF_GROUP_THREADS];
+// A level's texel in group-shared memory: its colour and radius in one element, its light offset in another (on
+// lavapipe every group-shared read is a loop over the lanes, whatever its width). The radius carries the coverage in
+// its 8 lowest mantissa bits (in 256ths, exact: MIP 0's quarters summed over three levels; a 32-bit radius keeps 15
+// bits): a third array for the coverage cost about half of what the coarse levels' coverage added to the pass
+// (docs/performance.md, "Near coverage in the coarse MIPs").
+FFX_DOF_GROUPSHARED FfxFloat32x4 ffxDofSharedMipColorCoc[FFX_DOF_GROUP_THREADS];
 FFX_DOF_GROUPSHARED FfxFloat32x2 ffxDofSharedMipLightOffset[FFX_DOF_GROUP_THREADS];
 
-// A level's texel in group-shared memory: its radius carries its coverage in its 8 lowest mantissa bits (in
-// 256ths, exact: MIP 0's quarters summed over three levels; a 32-bit radius keeps 15 bits). On lavapipe every
-// group-shared read is a loop over the lanes: a fourth array for the coverage cost about half of what the
-// coarse levels' coverage added to the pass (docs/performance.md, "Near coverage in the coarse MIPs").
 #define FFX_DOF_SHARED_COVERAGE_MASK 0xffu
-FFX_DOF_INLINE void ffxDofStoreSharedMipTexel(FfxUInt32 index, FfxDofMipTexel texel)
+FFX_DOF_INLINE FfxFloat32x4 ffxDofEncodeSharedMipColorCoc(FfxDofMipTexel texel)
 {
     FfxUInt32 code = FfxUInt32(clamp(floor(texel.coverage * 256.0f + 0.5f), 1.0f, 256.0f)) - 1u;
-    ffxDofSharedMipColor[index] = texel.color;
-    ffxDofSharedMipCoc[index] = ffxDofAsFloat((ffxDofAsUInt(texel.coc) & ~FFX_DOF_SHARED_COVERAGE_MASK) | code);
+    return FfxFloat32x4(texel.color, ffxDofAsFloat((ffxDofAsUInt(texel.coc) & ~FFX_DOF_SHARED_COVERAGE_MASK) | code));
+}
+FFX_DOF_INLINE FfxDofMipTexel ffxDofDecodeSharedMipTexel(FfxFloat32x4 colorCoc, FfxFloat32x2 lightOffset)
+{
+    FfxUInt32 cocBits = ffxDofAsUInt(colorCoc.w);
+    return ffxDofMakeMipTexel(FfxFloat32x3(colorCoc.x, colorCoc.y, colorCoc.z),
+                              ffxDofAsFloat(cocBits & ~FFX_DOF_SHARED_COVERAGE_MASK),
+                              FfxFloat32((cocBits & FFX_DOF_SHARED_COVERAGE_MASK) + 1u) * (1.0f / 256.0f), lightOffset);
+}
+FFX_DOF_INLINE void ffxDofStoreSharedMipTexel(FfxUInt32 index, FfxDofMipTexel texel)
+{
+    ffxDofSharedMipColorCoc[index] = ffxDofEncodeSharedMipColorCoc(texel);
     ffxDofSharedMipLightOffset[index] = texel.lightOffset;
 }
 FFX_DOF_INLINE FfxDofMipTexel ffxDofSharedMipTexel(FfxUInt32 index)
 {
-    FfxUInt32 cocBits = ffxDofAsUInt(ffxDofSharedMipCoc[index]);
-    return ffxDofMakeMipTexel(ffxDofSharedMipColor[index], ffxDofAsFloat(cocBits & ~FFX_DOF_SHARED_COVERAGE_MASK),
-                              FfxFloat32((cocBits & FFX_DOF_SHARED_COVERAGE_MASK) + 1u) * (1.0f / 256.0f),
-                              ffxDofSharedMipLightOffset[index]);
+    return ffxDofDecodeSharedMipTexel(ffxDofSharedMipColorCoc[index], ffxDofSharedMipLightOffset[index]);
+}
+// The texel as its slot holds it, from registers: what the invocation that stored it would read back.
+FFX_DOF_INLINE FfxDofMipTexel ffxDofAsSharedMipTexel(FfxDofMipTexel texel)
+{
+    return ffxDofDecodeSharedMipTexel(ffxDofEncodeSharedMipColorCoc(texel), texel.lightOffset);
 }
 
 // The group's full-resolution pixels and a one-pixel border: (luminance, radius) for the light rims.
 #define FFX_DOF_RIM_SIDE (2u * FFX_DOF_TILE_SIZE + 2u)
 FFX_DOF_GROUPSHARED FfxFloat32x2 ffxDofSharedRimSample[FFX_DOF_RIM_SIDE * FFX_DOF_RIM_SIDE];
 
-// The highlight sums of the group's quads (ffxDofQuadHighlightSums), for the quadrants' slots, and whether any
-// quad gives light (so that a group without any skips the quadrants' sums).
+// The highlight sums of the group's quads (ffxDofQuadHighlightSums), summed up the same 2 x 2 tree as the MIP levels
+// to one per quadrant of the tile (4 x 4 quads, after two levels), and whether any quad gives light.
 FFX_DOF_GROUPSHARED FfxFloat32x4 ffxDofSharedHighlightEnergyLight[FFX_DOF_GROUP_THREADS];
 FFX_DOF_GROUPSHARED FfxFloat32x4 ffxDofSharedHighlightPlaceRadius[FFX_DOF_GROUP_THREADS];
 // The anisotropy (xy) and the near pixels' light (z) in one array: one group-shared read for both.
 FFX_DOF_GROUPSHARED FfxFloat32x4 ffxDofSharedHighlightAnisotropyNear[FFX_DOF_GROUP_THREADS];
 FFX_DOF_GROUPSHARED FfxUInt32 ffxDofSharedHighlightAny;
 
-// The sums of quadrant `quadrant` (0: top-left .. 3: bottom-right) of the group's 8 x 8 quads.
-FFX_DOF_INLINE FfxDofHighlightSums ffxDofQuadrantHighlightSums(FfxUInt32 quadrant)
+FFX_DOF_INLINE void ffxDofStoreSharedHighlightSums(FfxUInt32 index, FfxDofHighlightSums sums)
 {
-    FfxUInt32 first = (quadrant >> 1u) * 4u * FfxUInt32(FFX_DOF_GROUP_SIDE) + (quadrant & 1u) * 4u;
+    ffxDofSharedHighlightEnergyLight[index] = sums.energyLight;
+    ffxDofSharedHighlightPlaceRadius[index] = sums.placeRadius;
+    ffxDofSharedHighlightAnisotropyNear[index] =
+        FfxFloat32x4(sums.anisotropy.x, sums.anisotropy.y, sums.nearLight, 0.0f);
+}
+FFX_DOF_INLINE FfxDofHighlightSums ffxDofSharedHighlightSums(FfxUInt32 index)
+{
     FfxDofHighlightSums sums;
-    sums.energyLight = FfxFloat32x4(0.0f, 0.0f, 0.0f, 0.0f);
-    sums.placeRadius = FfxFloat32x4(0.0f, 0.0f, 0.0f, 0.0f);
-    sums.anisotropy = FfxFloat32x2(0.0f, 0.0f);
-    sums.nearLight = 0.0f;
-    FFX_DOF_UNROLL
-    for (FfxUInt32 k = 0u; k < 16u; ++k)
-    {
-        FfxUInt32 index = first + (k >> 2u) * FfxUInt32(FFX_DOF_GROUP_SIDE) + (k & 3u);
-        FfxDofHighlightSums quad;
-        quad.energyLight = ffxDofSharedHighlightEnergyLight[index];
-        quad.placeRadius = ffxDofSharedHighlightPlaceRadius[index];
-        FfxFloat32x4 anisotropyNear = ffxDofSharedHighlightAnisotropyNear[index];
-        quad.anisotropy = FfxFloat32x2(anisotropyNear.x, anisotropyNear.y);
-        quad.nearLight = anisotropyNear.z;
-        sums = ffxDofAddHighlightSums(sums, quad);
-    }
+    sums.energyLight = ffxDofSharedHighlightEnergyLight[index];
+    sums.placeRadius = ffxDofSharedHighlightPlaceRadius[index];
+    FfxFloat32x4 anisotropyNear = ffxDofSharedHighlightAnisotropyNear[index];
+    sums.anisotropy = FfxFloat32x2(anisotropyNear.x, anisotropyNear.y);
+    sums.nearLight = anisotropyNear.z;
     return sums;
 }
+
+// The quadrants' sums are two levels up the tree: the chain's loop runs at least that far.
+#define FFX_DOF_HIGHLIGHT_QUADRANT_LEVEL 2u
+#if FFX_DOF_OPTION_MAX_MIP > 3
+#define FFX_DOF_DOWNSAMPLE_COLOR_LEVELS FFX_DOF_OPTION_MAX_MIP
+#else
+#define FFX_DOF_DOWNSAMPLE_COLOR_LEVELS 3
+#endif
 
 // Per wave, over the group's pixels and border: the dimmest far luminance, the dimmest luminance (the floors its far
 // and near highlights stand on, ffxDofPackHighlightFloors) and the radii of the far pixels above white; and the far
@@ -607,10 +621,7 @@ FFX_DOF_INLINE void ffxDofDownsampleColor(FfxUInt32x2 groupId, FfxUInt32 localIn
         ffxDofQuadHighlightSums(FfxFloat32x3(input0.x, input0.y, input0.z), FfxFloat32x3(input1.x, input1.y, input1.z),
                                 FfxFloat32x3(input2.x, input2.y, input2.z), FfxFloat32x3(input3.x, input3.y, input3.z),
                                 FfxFloat32x4(coc0, coc1, coc2, coc3), shares, FfxFloat32x2(local * 2u));
-    ffxDofSharedHighlightEnergyLight[localIndex] = highlightSums.energyLight;
-    ffxDofSharedHighlightPlaceRadius[localIndex] = highlightSums.placeRadius;
-    ffxDofSharedHighlightAnisotropyNear[localIndex] =
-        FfxFloat32x4(highlightSums.anisotropy.x, highlightSums.anisotropy.y, highlightSums.nearLight, 0.0f);
+    ffxDofStoreSharedHighlightSums(localIndex, highlightSums);
     if (ffxDofHighlightSumsHoldLight(highlightSums))
     {
         ffxDofGroupAtomicOr(ffxDofSharedHighlightAny, 1u);
@@ -631,58 +642,71 @@ FFX_DOF_INLINE void ffxDofDownsampleColor(FfxUInt32x2 groupId, FfxUInt32 localIn
     }
     ffxDofStoreSharedMipTexel(localIndex, mip0);
 
-    // Level m is kept at the top-left texel of each 2^m block: a thread only overwrites a slot it
-    // has read itself, so one barrier per level suffices.
+    // Level m is kept at the top-left texel of each 2^m block: a thread only overwrites a slot it has read itself, so
+    // one barrier per level suffices. A block's top-left slot is the invocation's own, whose texel (and highlight
+    // sums) it keeps in registers: it reads the other three (on lavapipe every group-shared read is a loop over the
+    // lanes, and masked-off invocations run every level). The quadrants' highlight sums climb the same tree.
+    FfxDofMipTexel ownTexel = ffxDofAsSharedMipTexel(mip0);
     FFX_DOF_UNROLL
-    for (FfxUInt32 mip = 1u; mip < FfxUInt32(FFX_DOF_OPTION_MAX_MIP); ++mip)
+    for (FfxUInt32 mip = 1u; mip < FfxUInt32(FFX_DOF_DOWNSAMPLE_COLOR_LEVELS); ++mip)
     {
         ffxDofGroupBarrier();
         FfxUInt32 step = 1u << mip;
         FfxUInt32 halfStep = step >> 1u;
         if ((local.x & (step - 1u)) == 0u && (local.y & (step - 1u)) == 0u)
         {
-            FfxUInt32 i0 = localIndex;
             FfxUInt32 i1 = localIndex + halfStep;
             FfxUInt32 i2 = localIndex + halfStep * FfxUInt32(FFX_DOF_GROUP_SIDE);
             FfxUInt32 i3 = i2 + halfStep;
-            FfxDofMipTexel reduced = ffxDofReduceMipTexel(ffxDofSharedMipTexel(i0), ffxDofSharedMipTexel(i1),
-                                                          ffxDofSharedMipTexel(i2), ffxDofSharedMipTexel(i3));
-            ffxDofStoreSharedMipTexel(i0, reduced);
-            FfxUInt32x2 mipTexel =
-                groupId * (FfxUInt32(FFX_DOF_TILE_SIZE) >> mip) + FfxUInt32x2(local.x >> mip, local.y >> mip);
-            FfxUInt32x2 mipSize = ffxDofMipSize(constants.halfSize, mip);
-            if (mipTexel.x < mipSize.x && mipTexel.y < mipSize.y)
+            if (mip < FfxUInt32(FFX_DOF_OPTION_MAX_MIP))
             {
-                ffxDofStoreCoarseMip(mip, mipTexel,
-                                     ffxDofPackCoarseTexel(ffxDofRoundForPackedColor32(reduced.color),
-                                                           ffxDofPackCoarseNearCoverage(reduced.coc, reduced.coverage),
-                                                           reduced.lightOffset));
+                FfxDofMipTexel reduced = ffxDofReduceMipTexel(ownTexel, ffxDofSharedMipTexel(i1),
+                                                              ffxDofSharedMipTexel(i2), ffxDofSharedMipTexel(i3));
+                if (mip + 1u < FfxUInt32(FFX_DOF_OPTION_MAX_MIP))
+                {
+                    ffxDofStoreSharedMipTexel(localIndex, reduced);
+                    ownTexel = ffxDofAsSharedMipTexel(reduced);
+                }
+                FfxUInt32x2 mipTexel =
+                    groupId * (FfxUInt32(FFX_DOF_TILE_SIZE) >> mip) + FfxUInt32x2(local.x >> mip, local.y >> mip);
+                FfxUInt32x2 mipSize = ffxDofMipSize(constants.halfSize, mip);
+                if (mipTexel.x < mipSize.x && mipTexel.y < mipSize.y)
+                {
+                    ffxDofStoreCoarseMip(
+                        mip, mipTexel,
+                        ffxDofPackCoarseTexel(ffxDofRoundForPackedColor32(reduced.color),
+                                              ffxDofPackCoarseNearCoverage(reduced.coc, reduced.coverage),
+                                              reduced.lightOffset));
+                }
+            }
+            // A group none of whose quads gives light skips its sums (a branch of the whole group on a GPU).
+            if (mip <= FFX_DOF_HIGHLIGHT_QUADRANT_LEVEL && ffxDofSharedHighlightAny != 0u)
+            {
+                highlightSums = ffxDofAddHighlightSums(
+                    ffxDofAddHighlightSums(highlightSums, ffxDofSharedHighlightSums(i1)),
+                    ffxDofAddHighlightSums(ffxDofSharedHighlightSums(i2), ffxDofSharedHighlightSums(i3)));
+                if (mip < FFX_DOF_HIGHLIGHT_QUADRANT_LEVEL)
+                    ffxDofStoreSharedHighlightSums(localIndex, highlightSums);
             }
         }
     }
 
-    // The quadrants' highlights, once every quad's sums are in group-shared memory (the MIP levels' barriers
-    // passed; without coarse levels, one of its own).
-#if FFX_DOF_OPTION_MAX_MIP < 2
-    ffxDofGroupBarrier();
-#endif
-    if (localIndex < FfxUInt32(FFX_DOF_HIGHLIGHT_SLOTS))
+    // The quadrants' highlights, from the invocation at each quadrant's top-left (its sums are the quadrant's; in a
+    // group without light, every quad's sums hold none).
+    if ((local.x & 3u) == 0u && (local.y & 3u) == 0u)
     {
+        FfxUInt32 quadrant = (local.y >> 2u) * 2u + (local.x >> 2u);
         FfxUInt32x3 packed = FfxUInt32x3(0u, 0u, 0u);
-        if (ffxDofSharedHighlightAny != 0u)
-        {
-            FfxDofHighlightSums quadrant = ffxDofQuadrantHighlightSums(localIndex);
-            if (ffxDofHighlightSumsHoldLight(quadrant))
-                packed = ffxDofPackHighlight(ffxDofFinishHighlight(quadrant));
-        }
-        FfxUInt32 word = ffxDofHighlightWord(groupId, localIndex, constants.tileCount);
+        if (ffxDofHighlightSumsHoldLight(highlightSums))
+            packed = ffxDofPackHighlight(ffxDofFinishHighlight(highlightSums));
+        FfxUInt32 word = ffxDofHighlightWord(groupId, quadrant, constants.tileCount);
         ffxDofStoreHighlightWord(word, packed.x);
         ffxDofStoreHighlightWord(word + 1u, packed.y);
         ffxDofStoreHighlightWord(word + 2u, packed.z);
     }
     // The floors, from which the composite knows what the tile's pixels gave (ffxDofPixelHighlightShare), and
     // whether they gave any.
-    if (localIndex == FfxUInt32(FFX_DOF_HIGHLIGHT_SLOTS))
+    if (localIndex == 1u)
         ffxDofStoreHighlightWord(ffxDofHighlightFloorWord(groupId, constants.tileCount),
                                  packedFloors | (ffxDofSharedHighlightAny != 0u ? FFX_DOF_HIGHLIGHT_GIVEN_BIT : 0u));
 }

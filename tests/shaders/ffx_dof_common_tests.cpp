@@ -161,6 +161,13 @@ TEST_CASE("A MIP texel in group-shared memory keeps its coverage in 256ths and i
             ffxDofStoreSharedMipTexel(
                 5u, ffxDofMakeMipTexel(FfxFloat32x3(1.0f, 2.0f, 3.0f), radius, coverage, FfxFloat32x2(0.25f, -0.125f)));
             const FfxDofMipTexel texel = ffxDofSharedMipTexel(5u);
+            // What the storing invocation keeps in registers is what its slot holds, to the bit.
+            const FfxDofMipTexel kept = ffxDofAsSharedMipTexel(
+                ffxDofMakeMipTexel(FfxFloat32x3(1.0f, 2.0f, 3.0f), radius, coverage, FfxFloat32x2(0.25f, -0.125f)));
+            CHECK(ffxDofAsUInt(kept.coc) == ffxDofAsUInt(texel.coc));
+            CHECK(kept.coverage == texel.coverage);
+            CHECK(kept.color.x == texel.color.x);
+            CHECK(kept.lightOffset.x == texel.lightOffset.x);
             CHECK(texel.coverage == coverage);
             CHECK(std::abs(texel.coc - radius) <= std::abs(radius) / 32768.0f);
             CHECK(texel.color.y == 2.0f);
