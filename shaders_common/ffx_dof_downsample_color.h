@@ -693,9 +693,10 @@ FFX_DOF_INLINE void ffxDofDownsampleColor(FfxUInt32x2 groupId, FfxUInt32 localIn
 
     // The quadrants' highlights, from the invocation at each quadrant's top-left (its sums are the quadrant's; in a
     // group without light, every quad's sums hold none).
-    if ((local.x & 3u) == 0u && (local.y & 3u) == 0u)
+    FfxUInt32 quadrantSide = 1u << FFX_DOF_HIGHLIGHT_QUADRANT_LEVEL;
+    if ((local.x & (quadrantSide - 1u)) == 0u && (local.y & (quadrantSide - 1u)) == 0u)
     {
-        FfxUInt32 quadrant = (local.y >> 2u) * 2u + (local.x >> 2u);
+        FfxUInt32 quadrant = (local.y / quadrantSide) * 2u + local.x / quadrantSide;
         FfxUInt32x3 packed = FfxUInt32x3(0u, 0u, 0u);
         if (ffxDofHighlightSumsHoldLight(highlightSums))
             packed = ffxDofPackHighlight(ffxDofFinishHighlight(highlightSums));
@@ -705,7 +706,7 @@ FFX_DOF_INLINE void ffxDofDownsampleColor(FfxUInt32x2 groupId, FfxUInt32 localIn
         ffxDofStoreHighlightWord(word + 2u, packed.z);
     }
     // The floors, from which the composite knows what the tile's pixels gave (ffxDofPixelHighlightShare), and
-    // whether they gave any.
+    // whether they gave any (from an invocation that stores no quadrant's words).
     if (localIndex == 1u)
         ffxDofStoreHighlightWord(ffxDofHighlightFloorWord(groupId, constants.tileCount),
                                  packedFloors | (ffxDofSharedHighlightAny != 0u ? FFX_DOF_HIGHLIGHT_GIVEN_BIT : 0u));
