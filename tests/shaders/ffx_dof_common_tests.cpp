@@ -158,12 +158,12 @@ TEST_CASE("A MIP texel in group-shared memory keeps its coverage in 256ths and i
         for (const int parts : {1, 3, 16, 64, 255, 256}) {
             const float coverage = float(parts) / 256.0f;
             INFO("radius " << radius << ", coverage " << coverage);
-            ffxDofStoreSharedMipTexel(
-                5u, ffxDofMakeMipTexel(FfxFloat32x3(1.0f, 2.0f, 3.0f), radius, coverage, FfxFloat32x2(0.25f, -0.125f)));
+            const FfxDofMipTexel stored =
+                ffxDofMakeMipTexel(FfxFloat32x3(1.0f, 2.0f, 3.0f), radius, coverage, FfxFloat32x2(0.25f, -0.125f));
+            ffxDofStoreSharedMipTexel(5u, stored);
             const FfxDofMipTexel texel = ffxDofSharedMipTexel(5u);
             // What the storing invocation keeps in registers is what its slot holds, to the bit.
-            const FfxDofMipTexel kept = ffxDofAsSharedMipTexel(
-                ffxDofMakeMipTexel(FfxFloat32x3(1.0f, 2.0f, 3.0f), radius, coverage, FfxFloat32x2(0.25f, -0.125f)));
+            const FfxDofMipTexel kept = ffxDofAsSharedMipTexel(stored);
             CHECK(ffxDofAsUInt(kept.coc) == ffxDofAsUInt(texel.coc));
             CHECK(kept.coverage == texel.coverage);
             CHECK(kept.color.x == texel.color.x);
