@@ -425,6 +425,15 @@ FFX_DOF_INLINE FfxUInt32x2 ffxDofLocalCoord(FfxUInt32 localIndex)
     return FfxUInt32x2(localIndex % FfxUInt32(FFX_DOF_GROUP_SIDE), localIndex / FfxUInt32(FFX_DOF_GROUP_SIDE));
 }
 
+// A group reduces one value per wave, kept in group-shared slots indexed by ffxDofWaveIndex, in a loop over
+// `first` = 0, ffxDofWaveLaneCount(), ... below ffxDofWaveCount(): each lane folds in slot ffxDofLaneWaveSlot(first)
+// where it is below ffxDofWaveCount(), then the wave reduces its lanes (ffxDofWaveMin, ...), and every wave holds
+// the group's result. Where a wave has at least as many lanes as the group has waves (lavapipe: 8 and 8; GPUs: one
+// or two waves) that is one group-shared read per lane. One invocation reading every slot made 8 reads of a
+// uniform address, and lavapipe runs each group-shared read as a loop over the wave's lanes: that loop was 40% of
+// the colour downsample (docs/performance.md, "Wave slots read a lane each").
+FFX_DOF_INLINE FfxUInt32 ffxDofLaneWaveSlot(FfxUInt32 first) { return first + ffxDofWaveLaneIndex(); }
+
 // Size of MIP level `mip` of an image whose level 0 is `size` (the Vulkan/D3D rule).
 FFX_DOF_INLINE FfxUInt32x2 ffxDofMipSize(FfxUInt32x2 size, FfxUInt32 mip)
 {

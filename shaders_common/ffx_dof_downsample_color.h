@@ -597,13 +597,20 @@ FFX_DOF_INLINE void ffxDofDownsampleColor(FfxUInt32x2 groupId, FfxUInt32 localIn
     FfxFloat32 tileBrightRadiusSum = 0.0f;
     FfxFloat32x4 tileFarSums = FfxFloat32x4(0.0f, 0.0f, 0.0f, 0.0f);
     FFX_DOF_LOOP
-    for (FfxUInt32 wave = 0u; wave < ffxDofWaveCount(); ++wave)
+    for (FfxUInt32 first = 0u; first < ffxDofWaveCount(); first += ffxDofWaveLaneCount())
     {
-        FfxFloat32x4 waveFloors = ffxDofSharedWaveFloors[wave];
-        tileMinima = min(tileMinima, FfxFloat32x2(waveFloors.x, waveFloors.y));
-        tileBrightRadiusSum += waveFloors.z;
-        tileFarSums += ffxDofSharedWaveFarSums[wave];
+        FfxUInt32 wave = ffxDofLaneWaveSlot(first);
+        if (wave < ffxDofWaveCount())
+        {
+            FfxFloat32x4 waveFloors = ffxDofSharedWaveFloors[wave];
+            tileMinima = min(tileMinima, FfxFloat32x2(waveFloors.x, waveFloors.y));
+            tileBrightRadiusSum += waveFloors.z;
+            tileFarSums += ffxDofSharedWaveFarSums[wave];
+        }
     }
+    tileMinima = ffxDofWaveMin(tileMinima);
+    tileBrightRadiusSum = ffxDofWaveSum(tileBrightRadiusSum);
+    tileFarSums = ffxDofWaveSum(tileFarSums);
     // A bright far field behind nearer far content gives no far light: its far floor is none.
     if (ffxDofBrightFieldBehind(tileFarSums, tileBrightRadiusSum))
         tileMinima.x = FFX_DOF_HIGHLIGHT_NO_FLOOR;

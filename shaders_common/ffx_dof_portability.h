@@ -106,6 +106,9 @@
 // Which wave of the workgroup the invocation runs in, and how many waves the workgroup has.
 #define ffxDofWaveIndex(localIndex) gl_SubgroupID
 #define ffxDofWaveCount() gl_NumSubgroups
+// The invocation's lane in its wave, and how many lanes a wave has.
+#define ffxDofWaveLaneIndex() gl_SubgroupInvocationID
+#define ffxDofWaveLaneCount() gl_SubgroupSize
 // Sets bits of a group-shared word for the whole group, and counts a word's set bits.
 #define ffxDofGroupAtomicOr(word, bits) atomicOr(word, bits)
 #define ffxDofCountBits(x) FfxUInt32(bitCount(x))
@@ -183,6 +186,8 @@ typedef half4 FfxFloat16x4;
 // every D3D12 driver uses for a one-dimensional group (FidelityFX SPD relies on it too).
 #define ffxDofWaveIndex(localIndex) ((localIndex) / WaveGetLaneCount())
 #define ffxDofWaveCount() ((FfxUInt32(FFX_DOF_GROUP_THREADS) + WaveGetLaneCount() - 1u) / WaveGetLaneCount())
+#define ffxDofWaveLaneIndex() WaveGetLaneIndex()
+#define ffxDofWaveLaneCount() WaveGetLaneCount()
 #define ffxDofGroupAtomicOr(word, bits) InterlockedOr(word, bits)
 #define ffxDofCountBits(x) countbits(x)
 #define ffxDofFirstBitLow(x) firstbitlow(x)
@@ -294,6 +299,8 @@ inline glm::vec2 ffxDofUnpackHalf2(uint32_t bits) { return glm::unpackHalf2x16(b
 #define ffxDofWaveIsFirstLane() true
 #define ffxDofWaveIndex(localIndex) (localIndex)
 #define ffxDofWaveCount() FfxUInt32(FFX_DOF_GROUP_THREADS)
+#define ffxDofWaveLaneIndex() 0u
+#define ffxDofWaveLaneCount() 1u
 // The invocations of a CPU workgroup are threads (tests/shaders): the GCC / Clang builtin, as C++17 has no
 // std::atomic_ref for a plain word.
 inline void ffxDofGroupAtomicOr(uint32_t& word, uint32_t bits) { __atomic_fetch_or(&word, bits, __ATOMIC_RELAXED); }
