@@ -429,9 +429,11 @@ FFX_DOF_INLINE FfxUInt32x2 ffxDofLocalCoord(FfxUInt32 localIndex)
 // `first` = 0, ffxDofWaveLaneCount(), ... below ffxDofWaveCount(): each lane folds in slot ffxDofLaneWaveSlot(first)
 // where it is below ffxDofWaveCount(), then the wave reduces its lanes (ffxDofWaveMin, ...), and every wave holds
 // the group's result. Where a wave has at least as many lanes as the group has waves (lavapipe: 8 and 8; GPUs: one
-// or two waves) that is one group-shared read per lane. One invocation reading every slot made 8 reads of a
-// uniform address, and lavapipe runs each group-shared read as a loop over the wave's lanes: that loop was 40% of
-// the colour downsample (docs/performance.md, "Wave slots read a lane each").
+// or two waves) that is one group-shared read per lane. Every invocation reading every slot made 8 reads, and
+// lavapipe runs each group-shared read as a loop over the wave's lanes: in the colour downsample that was a third of
+// the pass (docs/performance.md, "Wave slots read a lane each"). The depth downsample keeps one invocation's loop
+// over the slots: there only its wave loops (lavapipe leaves a loop once no lane is active), and this way measured
+// slower.
 FFX_DOF_INLINE FfxUInt32 ffxDofLaneWaveSlot(FfxUInt32 first) { return first + ffxDofWaveLaneIndex(); }
 
 // Size of MIP level `mip` of an image whose level 0 is `size` (the Vulkan/D3D rule).
