@@ -7,11 +7,14 @@
 #endif
 
 #include <algorithm>
+#include <array>
 #include <atomic>
 #include <cstdlib>
 #include <cstring>
 #include <mutex>
+#include <thread>
 #include <unordered_map>
+#include <vector>
 
 using namespace ffxdof;
 using namespace ffxdof::vktest;
@@ -127,11 +130,13 @@ FfxDofErrorCode dispatchOnce(vkrun::Device& device, FfxDofContext* context, FfxD
 
 }  // namespace
 
-// 200 cycles, or FFX_DOF_LIFETIME_CYCLES: the AddressSanitizer build runs 40 (tests/vk/CMakeLists.txt), as each
-// cycle compiles every pipeline again and a leak shows in the first cycle that makes it.
+// 60 cycles, or FFX_DOF_LIFETIME_CYCLES: the AddressSanitizer build runs 12 (tests/vk/CMakeLists.txt). Each cycle
+// makes a backend and three contexts with it (two sizes, then ring merging off), so every cycle compiles the
+// pipelines of two permutations again (the backend keeps them for its contexts) and a leak shows in the first
+// cycle that makes it.
 static int lifetimeCycles() {
     const char* text = std::getenv("FFX_DOF_LIFETIME_CYCLES");
-    if (text == nullptr) return 200;
+    if (text == nullptr) return 60;
     char* end = nullptr;
     const long cycles = std::strtol(text, &end, 10);
     if (end == text || *end != '\0' || cycles < 4 || cycles > 100000)
@@ -143,7 +148,8 @@ TEST_CASE("create/dispatch/destroy cycles leak nothing", "[vulkan]") {
     const int cycles = lifetimeCycles();
     vkrun::Device& device = validatedDevice();
     const Scene scene = makeScene(24, 16, 3.0f);
-    EngineImages images(device, scene);
+    const Scene smaller = makeScene(13, 7, 3.0f);
+    EngineImages images(device, scene), smallerImages(device, smaller);
     CountingAllocator counter;
     const VkAllocationCallbacks callbacks = counter.callbacks();
 
@@ -153,16 +159,22 @@ TEST_CASE("create/dispatch/destroy cycles leak nothing", "[vulkan]") {
         description.maxFramesInFlight = 2;
         FfxDofBackend backend = nullptr;
         REQUIRE(ffxDofBackendCreateVK(&description, &backend) == FFX_DOF_OK);
-        FfxDofContextDescription contextInfo = contextDescription(backend, 24, 16);
-        FfxDofContext context = nullptr;
-        REQUIRE(ffxDofContextCreate(&context, &contextInfo) == FFX_DOF_OK);
-        // Three dispatches wrap the two-slot descriptor ring (views are destroyed and remade).
-        for (int frame = 0; frame < (cycle % 4 == 0 ? 3 : 1); ++frame) {
-            REQUIRE(dispatchOnce(device, &context, images.dispatch(scene)) == FFX_DOF_OK);
+        for (int made = 0; made < 3; ++made) {
+            const bool small = made == 1;
+            FfxDofContextDescription contextInfo = contextDescription(backend, small ? 13 : 24, small ? 7 : 16);
+            if (made == 2) contextInfo.flags |= FFX_DOF_DISABLE_RING_MERGE;
+            FfxDofContext context = nullptr;
+            REQUIRE(ffxDofContextCreate(&context, &contextInfo) == FFX_DOF_OK);
+            // Three dispatches wrap the two-slot descriptor ring (views are destroyed and remade).
+            for (int frame = 0; frame < (cycle % 4 == 0 ? 3 : 1); ++frame) {
+                const FfxDofDispatchDescription dispatch =
+                    small ? smallerImages.dispatch(smaller) : images.dispatch(scene);
+                REQUIRE(dispatchOnce(device, &context, dispatch) == FFX_DOF_OK);
+            }
+            REQUIRE(ffxDofBackendDestroy(backend) == FFX_DOF_ERROR_BACKEND_IN_USE);
+            REQUIRE(ffxDofContextDestroy(&context) == FFX_DOF_OK);
+            REQUIRE(context == nullptr);
         }
-        REQUIRE(ffxDofBackendDestroy(backend) == FFX_DOF_ERROR_BACKEND_IN_USE);
-        REQUIRE(ffxDofContextDestroy(&context) == FFX_DOF_OK);
-        REQUIRE(context == nullptr);
         REQUIRE(ffxDofBackendDestroy(backend) == FFX_DOF_OK);
         REQUIRE(counter.liveCount() == 0);
     }
@@ -173,6 +185,102 @@ TEST_CASE("create/dispatch/destroy cycles leak nothing", "[vulkan]") {
     // (tests/vk/lsan_driver.supp); at exit they would come from unloaded, unnamed modules.
     CHECK(__lsan_do_recoverable_leak_check() == 0);
 #endif
+    requireNoValidationMessages(device);
+}
+
+namespace {
+// The backend's vkCreateComputePipelines and vkDestroyPipeline, counted (pipelineCountingGetDeviceProcAddr).
+std::atomic<int> pipelinesCreated{0}, pipelinesDestroyed{0};
+PFN_vkCreateComputePipelines realCreateComputePipelines = nullptr;
+PFN_vkDestroyPipeline realDestroyPipeline = nullptr;
+
+VKAPI_ATTR VkResult VKAPI_CALL countingCreateComputePipelines(VkDevice device, VkPipelineCache cache, uint32_t count,
+                                                              const VkComputePipelineCreateInfo* infos,
+                                                              const VkAllocationCallbacks* allocator,
+                                                              VkPipeline* pipelines) {
+    pipelinesCreated += int(count);
+    return realCreateComputePipelines(device, cache, count, infos, allocator, pipelines);
+}
+
+VKAPI_ATTR void VKAPI_CALL countingDestroyPipeline(VkDevice device, VkPipeline pipeline,
+                                                   const VkAllocationCallbacks* allocator) {
+    if (pipeline != VK_NULL_HANDLE) ++pipelinesDestroyed;
+    realDestroyPipeline(device, pipeline, allocator);
+}
+
+VKAPI_ATTR PFN_vkVoidFunction VKAPI_CALL pipelineCountingGetDeviceProcAddr(VkDevice device, const char* name) {
+    if (std::strcmp(name, "vkCreateComputePipelines") == 0) {
+        realCreateComputePipelines = reinterpret_cast<PFN_vkCreateComputePipelines>(vkGetDeviceProcAddr(device, name));
+        return reinterpret_cast<PFN_vkVoidFunction>(&countingCreateComputePipelines);
+    }
+    if (std::strcmp(name, "vkDestroyPipeline") == 0) {
+        realDestroyPipeline = reinterpret_cast<PFN_vkDestroyPipeline>(vkGetDeviceProcAddr(device, name));
+        return reinterpret_cast<PFN_vkVoidFunction>(&countingDestroyPipeline);
+    }
+    return vkGetDeviceProcAddr(device, name);
+}
+}  // namespace
+
+TEST_CASE("a backend compiles each pipeline once for all its contexts and frees them with itself", "[vulkan]") {
+    vkrun::Device& device = validatedDevice();
+    const Scene scene = makeScene(24, 16, 3.0f);
+    EngineImages images(device, scene);
+    pipelinesCreated = 0;
+    pipelinesDestroyed = 0;
+    FfxDofBackendDescriptionVK description = device.backendDescription();
+    description.vkGetDeviceProcAddr = &pipelineCountingGetDeviceProcAddr;
+    FfxDofBackend backend = nullptr;
+    REQUIRE(ffxDofBackendCreateVK(&description, &backend) == FFX_DOF_OK);
+    // Makes a context, dispatches it once, destroys it; returns the pipelines its creation compiled.
+    const auto contextCompiles = [&](uint32_t width, uint32_t height, uint32_t flags) {
+        const int before = pipelinesCreated;
+        FfxDofContextDescription contextInfo = contextDescription(backend, width, height);
+        contextInfo.flags = flags;
+        FfxDofContext context = nullptr;
+        REQUIRE(ffxDofContextCreate(&context, &contextInfo) == FFX_DOF_OK);
+        const int compiled = pipelinesCreated - before;
+        if (width == 24 && height == 16) CHECK(dispatchOnce(device, &context, images.dispatch(scene)) == FFX_DOF_OK);
+        REQUIRE(ffxDofContextDestroy(&context) == FFX_DOF_OK);
+        return compiled;
+    };
+    const int first = contextCompiles(24, 16, 0);
+    CHECK(first >= int(vkrun::kPassCount));  // a pipeline per pass at least (the blur and composite one per tile list)
+    CHECK(pipelinesDestroyed == 0);          // the context's destruction kept them for the backend
+    // Another resolution (a resized window), then the first again: nothing compiled.
+    CHECK(contextCompiles(1920, 1080, 0) == 0);
+    CHECK(contextCompiles(24, 16, 0) == 0);
+    // Ring merging off changes the blur's permutations only: those, and only once.
+    const int ringMergeOff = contextCompiles(24, 16, FFX_DOF_DISABLE_RING_MERGE);
+    CHECK(ringMergeOff > 0);
+    CHECK(ringMergeOff < first);
+    CHECK(contextCompiles(40, 30, FFX_DOF_DISABLE_RING_MERGE) == 0);
+    CHECK(pipelinesDestroyed == 0);
+
+    // Contexts made on several threads at once with one backend: each pipeline is still compiled once.
+    const int beforeThreads = pipelinesCreated;
+    std::array<FfxDofContext, 4> contexts{};
+    std::array<FfxDofErrorCode, 4> made{};
+    {
+        std::vector<std::thread> threads;
+        for (size_t i = 0; i < contexts.size(); ++i) {
+            threads.emplace_back([&, i] {
+                FfxDofContextDescription contextInfo = contextDescription(backend, 24 + uint32_t(i), 16);
+                contextInfo.flags = FFX_DOF_REVERSE_DEPTH;  // permutations no context of this backend has made
+                made[i] = ffxDofContextCreate(&contexts[i], &contextInfo);
+            });
+        }
+        for (std::thread& thread : threads) thread.join();
+    }
+    for (size_t i = 0; i < contexts.size(); ++i) {
+        CHECK(made[i] == FFX_DOF_OK);
+        CHECK(ffxDofContextDestroy(&contexts[i]) == FFX_DOF_OK);
+    }
+    const int reversedDepth = pipelinesCreated - beforeThreads;
+    CHECK(reversedDepth > 0);
+    CHECK(reversedDepth < first);  // reversed depth changes the depth downsample's permutation only
+
+    REQUIRE(ffxDofBackendDestroy(backend) == FFX_DOF_OK);
+    CHECK(pipelinesDestroyed == pipelinesCreated);
     requireNoValidationMessages(device);
 }
 

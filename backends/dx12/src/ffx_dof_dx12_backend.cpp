@@ -31,6 +31,22 @@ const char* describeFormat(DXGI_FORMAT format, char (&buffer)[32]) {
     return buffer;
 }
 
+FfxDofErrorCode Backend::pipeline(const char* passName, const PassVariant& variant,
+                                  ComPtr<ID3D12PipelineState>* out) const {
+    return pipelines_.findOrCreate(variant.blob, out, [&](ComPtr<ID3D12PipelineState>* made) {
+        D3D12_COMPUTE_PIPELINE_STATE_DESC desc{};
+        desc.pRootSignature = rootSignature_.Get();
+        desc.CS = {variant.blob->words, variant.blob->wordCount * sizeof(uint32_t)};
+        const HRESULT hr = device_->CreateComputePipelineState(&desc, IID_PPV_ARGS(made->GetAddressOf()));
+        if (FAILED(hr))
+            return fail(
+                FFX_DOF_ERROR_BACKEND,
+                "ID3D12Device::CreateComputePipelineState failed for pass '%s' permutation %u (HRESULT 0x%08lx)",
+                passName, variant.permutationIndex, static_cast<unsigned long>(hr));
+        return FFX_DOF_OK;
+    });
+}
+
 FfxDofErrorCode Backend::init(const FfxDofBackendDescriptionDX12& description) {
     if (description.flags & ~kAllBackendFlags)
         return fail(FFX_DOF_ERROR_INVALID_FLAGS, "FfxDofBackendDescriptionDX12::flags 0x%x contain unknown bits 0x%x",

@@ -1,8 +1,9 @@
 // The D3D12 backend: the device, its axes, one root signature and one command signature, shared by every context made
-// with it (each context makes the pipeline states of its plan). Private to ffx-dof.
+// with it, and the pipeline states of their plans (each made once per backend). Private to ffx-dof.
 #pragma once
 
 #include "ffx_dof_backend.h"
+#include "ffx_dof_backend_cache.h"
 #include "ffx_dof_dx12.h"
 #include "ffx_dof_shader_table.h"
 
@@ -56,6 +57,9 @@ public:
     // One dispatch whose arguments are a tile list's in TILE_LIST_ARGS (FFX_DOF_TILE_LIST_ARGS_WORDS apart).
     ID3D12CommandSignature* tileListSignature() const { return tileListSignature_.Get(); }
     uint32_t framesInFlight() const { return framesInFlight_; }
+    // The pipeline state of one blob on the root signature, made for the first context that uses it and kept for the
+    // others until the backend is destroyed (ffx_dof_backend_cache.h).
+    FfxDofErrorCode pipeline(const char* passName, const PassVariant& variant, ComPtr<ID3D12PipelineState>* out) const;
     UINT descriptorSize() const { return descriptorSize_; }
 
 private:
@@ -66,6 +70,8 @@ private:
     ComPtr<ID3D12Device> device_;
     ComPtr<ID3D12RootSignature> rootSignature_;
     ComPtr<ID3D12CommandSignature> tileListSignature_;
+    // Keyed by the blob: static data of the shader tables, its address names the permutation.
+    mutable BackendObjectCache<const shaders::Blob*, ComPtr<ID3D12PipelineState>> pipelines_;  // a cache: const
     uint32_t framesInFlight_ = kDefaultFramesInFlight;
     UINT descriptorSize_ = 0;
     DeviceOptions deviceOptions_;

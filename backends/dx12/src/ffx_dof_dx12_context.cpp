@@ -161,16 +161,10 @@ FfxDofErrorCode Context::init() {
 FfxDofErrorCode Context::createPipelines() {
     for (uint32_t p = 0; p < kPassCount; ++p) {
         for (uint32_t v = 0; v < plan_.passes[p].variantCount; ++v) {
-            const PassVariant& variant = plan_.passes[p].variants[v];
-            D3D12_COMPUTE_PIPELINE_STATE_DESC desc{};
-            desc.pRootSignature = backend_.rootSignature();
-            desc.CS = {variant.blob->words, variant.blob->wordCount * sizeof(uint32_t)};
-            const HRESULT hr = backend_.device()->CreateComputePipelineState(&desc, IID_PPV_ARGS(&pipelines_[p][v]));
-            if (FAILED(hr))
-                return fail(FFX_DOF_ERROR_BACKEND,
-                            "ID3D12Device::CreateComputePipelineState failed for pass '%s' permutation %u (HRESULT "
-                            "0x%08lx)",
-                            kPassNames[p], variant.permutationIndex, static_cast<unsigned long>(hr));
+            if (const FfxDofErrorCode status =
+                    backend_.pipeline(kPassNames[p], plan_.passes[p].variants[v], &pipelines_[p][v]);
+                status != FFX_DOF_OK)
+                return status;
         }
     }
     return FFX_DOF_OK;

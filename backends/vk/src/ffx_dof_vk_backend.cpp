@@ -4,6 +4,8 @@
 #include "ffx_dof_vk_context.h"
 
 #include <new>
+#include <string>
+#include <vector>
 
 namespace ffxdof::vk {
 namespace {
@@ -23,7 +25,12 @@ FfxDofErrorCode failVk(VkResult result, const char* what) {
 }
 
 BackendVK::~BackendVK() {
-    // After a failed init the cache (and even the functions) may be missing.
+    // After a failed init the caches are empty (and even the functions may be missing).
+    pipelines_.clear([&](VkPipeline pipeline) { fn.vkDestroyPipeline(device, pipeline, allocator); });
+    layouts_.clear([&](const PassLayout& layout) {
+        fn.vkDestroyPipelineLayout(device, layout.pipeline, allocator);
+        fn.vkDestroyDescriptorSetLayout(device, layout.set, allocator);
+    });
     if (ownsPipelineCache_) fn.vkDestroyPipelineCache(device, pipelineCache, allocator);
 }
 
@@ -81,6 +88,77 @@ FfxDofErrorCode BackendVK::createContext(const ContextPlan& plan, std::unique_pt
     if (result != FFX_DOF_OK) return result;  // the partly built context is destroyed here
     *out = std::move(context);
     return FFX_DOF_OK;
+}
+
+FfxDofErrorCode BackendVK::passLayout(const PlannedPass& pass, PassLayout* out) {
+    const LayoutKey key{pass.sampledSlots, pass.storageSlots, pass.bufferSlots};
+    return layouts_.findOrCreate(key, out, [&](PassLayout* made) {
+        std::vector<VkDescriptorSetLayoutBinding> bindings;
+        for (const SlotClass& slotClass : kSlotClasses) {
+            const uint32_t slots = pass.*slotClass.slots;
+            for (uint32_t slot = 0; slot < 32; ++slot) {
+                if (!(slots & (1u << slot))) continue;
+                VkDescriptorSetLayoutBinding binding{};
+                binding.binding = slotClass.base + slot;
+                binding.descriptorType = slotClass.type;
+                binding.descriptorCount = 1;
+                binding.stageFlags = VK_SHADER_STAGE_COMPUTE_BIT;
+                bindings.push_back(binding);
+            }
+        }
+        auto setLayoutInfo =
+            makeInfo<VkDescriptorSetLayoutCreateInfo>(VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO);
+        setLayoutInfo.bindingCount = uint32_t(bindings.size());
+        setLayoutInfo.pBindings = bindings.data();
+        FFX_DOF_VK_CHECK(fn.vkCreateDescriptorSetLayout(device, &setLayoutInfo, allocator, &made->set),
+                         "vkCreateDescriptorSetLayout");
+
+        const VkPushConstantRange pushRange{VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof(FfxDofConstants)};
+        auto layoutInfo = makeInfo<VkPipelineLayoutCreateInfo>(VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO);
+        layoutInfo.setLayoutCount = 1;
+        layoutInfo.pSetLayouts = &made->set;
+        layoutInfo.pushConstantRangeCount = 1;
+        layoutInfo.pPushConstantRanges = &pushRange;
+        const VkResult created = fn.vkCreatePipelineLayout(device, &layoutInfo, allocator, &made->pipeline);
+        if (created != VK_SUCCESS) {
+            fn.vkDestroyDescriptorSetLayout(device, made->set, allocator);
+            return failVk(created, "vkCreatePipelineLayout");
+        }
+        return FFX_DOF_OK;
+    });
+}
+
+FfxDofErrorCode BackendVK::passPipeline(const char* passName, const shaders::Blob& blob, VkPipelineLayout layout,
+                                        bool wave64, VkPipeline* out) {
+    return pipelines_.findOrCreate(PipelineKey{&blob, layout, wave64}, out, [&](VkPipeline* made) {
+        auto moduleInfo = makeInfo<VkShaderModuleCreateInfo>(VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO);
+        moduleInfo.codeSize = blob.wordCount * sizeof(uint32_t);
+        moduleInfo.pCode = blob.words;
+        VkShaderModule module = VK_NULL_HANDLE;
+        FFX_DOF_VK_CHECK(fn.vkCreateShaderModule(device, &moduleInfo, allocator, &module), "vkCreateShaderModule");
+
+        auto subgroupSize = makeInfo<VkPipelineShaderStageRequiredSubgroupSizeCreateInfo>(
+            VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_REQUIRED_SUBGROUP_SIZE_CREATE_INFO);
+        subgroupSize.requiredSubgroupSize = kWave64;
+        auto pipelineInfo = makeInfo<VkComputePipelineCreateInfo>(VK_STRUCTURE_TYPE_COMPUTE_PIPELINE_CREATE_INFO);
+        pipelineInfo.stage.sType = VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO;
+        pipelineInfo.stage.stage = VK_SHADER_STAGE_COMPUTE_BIT;
+        pipelineInfo.stage.module = module;
+        pipelineInfo.stage.pName = "main";
+        if (wave64) {
+            // The wave64 shaders assume every subgroup is 64 lanes wide and full.
+            pipelineInfo.stage.pNext = &subgroupSize;
+            pipelineInfo.stage.flags = VK_PIPELINE_SHADER_STAGE_CREATE_REQUIRE_FULL_SUBGROUPS_BIT;
+        }
+        pipelineInfo.layout = layout;
+        const VkResult created = fn.vkCreateComputePipelines(device, pipelineCache, 1, &pipelineInfo, allocator, made);
+        fn.vkDestroyShaderModule(device, module, allocator);
+        if (created != VK_SUCCESS) {
+            const std::string what = std::string("vkCreateComputePipelines (") + passName + ")";
+            return failVk(created, what.c_str());
+        }
+        return FFX_DOF_OK;
+    });
 }
 
 bool BackendVK::findMemoryType(uint32_t typeBits, uint32_t* index, VkMemoryPropertyFlags required) const {

@@ -1,4 +1,4 @@
-// Creating a Vulkan context from its plan: images, pipelines, descriptor sets (the internal
+// Creating a Vulkan context from its plan: images, pipelines (the backend's), descriptor sets (the internal
 // resources written once, here).
 #include "ffx_dof_vk_context.h"
 
@@ -15,18 +15,6 @@ uint32_t bitCount(uint32_t bits) {
     return count;
 }
 
-// Vulkan binding numbers of the slot classes (ffx_dof_resources.h): class base + slot, set 0.
-struct SlotClass {
-    VkDescriptorType type;
-    uint32_t base;
-    uint32_t PlannedPass::*slots;
-};
-constexpr SlotClass kSlotClasses[] = {
-    {VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE, FFX_DOF_SRV_BASE, &PlannedPass::sampledSlots},
-    {VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, FFX_DOF_UAV_IMAGE_BASE, &PlannedPass::storageSlots},
-    {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, FFX_DOF_UAV_BUFFER_BASE, &PlannedPass::bufferSlots},
-};
-
 }  // namespace
 
 ContextVK::~ContextVK() {
@@ -34,11 +22,6 @@ ContextVK::~ContextVK() {
     const VkDevice device = backend_.device;
     const VkAllocationCallbacks* allocator = backend_.allocator;
     fn.vkDestroyDescriptorPool(device, descriptorPool_, allocator);
-    for (uint32_t pass = 0; pass < kPassCount; ++pass) {
-        for (VkPipeline pipeline : pipelines_[pass]) fn.vkDestroyPipeline(device, pipeline, allocator);
-        fn.vkDestroyPipelineLayout(device, pipelineLayouts_[pass], allocator);
-        fn.vkDestroyDescriptorSetLayout(device, setLayouts_[pass], allocator);
-    }
     for (InternalImage& image : images_) {
         for (VkImageView view : image.level) fn.vkDestroyImageView(device, view, allocator);
         fn.vkDestroyImageView(device, image.allLevels, allocator);
@@ -214,44 +197,7 @@ FfxDofErrorCode ContextVK::createReadback() {
     return FFX_DOF_OK;
 }
 
-FfxDofErrorCode ContextVK::createPipeline(uint32_t pass, const shaders::Blob& blob, VkPipeline* pipeline) {
-    const Functions& fn = backend_.fn;
-    const VkDevice device = backend_.device;
-    const VkAllocationCallbacks* allocator = backend_.allocator;
-    auto moduleInfo = makeInfo<VkShaderModuleCreateInfo>(VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO);
-    moduleInfo.codeSize = blob.wordCount * sizeof(uint32_t);
-    moduleInfo.pCode = blob.words;
-    VkShaderModule module = VK_NULL_HANDLE;
-    FFX_DOF_VK_CHECK(fn.vkCreateShaderModule(device, &moduleInfo, allocator, &module), "vkCreateShaderModule");
-
-    auto subgroupSize = makeInfo<VkPipelineShaderStageRequiredSubgroupSizeCreateInfo>(
-        VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_REQUIRED_SUBGROUP_SIZE_CREATE_INFO);
-    subgroupSize.requiredSubgroupSize = 64;
-    auto pipelineInfo = makeInfo<VkComputePipelineCreateInfo>(VK_STRUCTURE_TYPE_COMPUTE_PIPELINE_CREATE_INFO);
-    pipelineInfo.stage.sType = VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO;
-    pipelineInfo.stage.stage = VK_SHADER_STAGE_COMPUTE_BIT;
-    pipelineInfo.stage.module = module;
-    pipelineInfo.stage.pName = "main";
-    if (plan_.axes.wave64) {
-        // The wave64 shaders assume every subgroup is 64 lanes wide and full.
-        pipelineInfo.stage.pNext = &subgroupSize;
-        pipelineInfo.stage.flags = VK_PIPELINE_SHADER_STAGE_CREATE_REQUIRE_FULL_SUBGROUPS_BIT;
-    }
-    pipelineInfo.layout = pipelineLayouts_[pass];
-    const VkResult created =
-        fn.vkCreateComputePipelines(device, backend_.pipelineCache, 1, &pipelineInfo, allocator, pipeline);
-    fn.vkDestroyShaderModule(device, module, allocator);
-    if (created != VK_SUCCESS) {
-        const std::string what = std::string("vkCreateComputePipelines (") + kPassNames[pass] + ")";
-        return failVk(created, what.c_str());
-    }
-    return FFX_DOF_OK;
-}
-
 FfxDofErrorCode ContextVK::createPipelines() {
-    const Functions& fn = backend_.fn;
-    const VkDevice device = backend_.device;
-    const VkAllocationCallbacks* allocator = backend_.allocator;
     for (uint32_t pass = 0; pass < kPassCount; ++pass) {
         const PlannedPass& planned = plan_.passes[pass];
         for (uint32_t v = 0; v < planned.variantCount; ++v) {
@@ -260,37 +206,14 @@ FfxDofErrorCode ContextVK::createPipelines() {
                                     plan_.axes.half != 0, plan_.axes.wave64 != 0);
             if (supported != FFX_DOF_OK) return supported;
         }
-        std::vector<VkDescriptorSetLayoutBinding> bindings;
-        for (const SlotClass& slotClass : kSlotClasses) {
-            const uint32_t slots = planned.*slotClass.slots;
-            for (uint32_t slot = 0; slot < 32; ++slot) {
-                if (!(slots & (1u << slot))) continue;
-                VkDescriptorSetLayoutBinding binding{};
-                binding.binding = slotClass.base + slot;
-                binding.descriptorType = slotClass.type;
-                binding.descriptorCount = 1;
-                binding.stageFlags = VK_SHADER_STAGE_COMPUTE_BIT;
-                bindings.push_back(binding);
-            }
-        }
-        auto setLayoutInfo =
-            makeInfo<VkDescriptorSetLayoutCreateInfo>(VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO);
-        setLayoutInfo.bindingCount = uint32_t(bindings.size());
-        setLayoutInfo.pBindings = bindings.data();
-        FFX_DOF_VK_CHECK(fn.vkCreateDescriptorSetLayout(device, &setLayoutInfo, allocator, &setLayouts_[pass]),
-                         "vkCreateDescriptorSetLayout");
-
-        const VkPushConstantRange pushRange{VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof(FfxDofConstants)};
-        auto layoutInfo = makeInfo<VkPipelineLayoutCreateInfo>(VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO);
-        layoutInfo.setLayoutCount = 1;
-        layoutInfo.pSetLayouts = &setLayouts_[pass];
-        layoutInfo.pushConstantRangeCount = 1;
-        layoutInfo.pPushConstantRanges = &pushRange;
-        FFX_DOF_VK_CHECK(fn.vkCreatePipelineLayout(device, &layoutInfo, allocator, &pipelineLayouts_[pass]),
-                         "vkCreatePipelineLayout");
-
+        BackendVK::PassLayout layout;
+        if (const FfxDofErrorCode status = backend_.passLayout(planned, &layout); status != FFX_DOF_OK) return status;
+        setLayouts_[pass] = layout.set;
+        pipelineLayouts_[pass] = layout.pipeline;
         for (uint32_t v = 0; v < planned.variantCount; ++v) {
-            if (const FfxDofErrorCode status = createPipeline(pass, *planned.variants[v].blob, &pipelines_[pass][v]);
+            if (const FfxDofErrorCode status =
+                    backend_.passPipeline(kPassNames[pass], *planned.variants[v].blob, layout.pipeline,
+                                          plan_.axes.wave64 != 0, &pipelines_[pass][v]);
                 status != FFX_DOF_OK) {
                 return status;
             }

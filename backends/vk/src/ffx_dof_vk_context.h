@@ -1,5 +1,6 @@
-// A Vulkan context: the internal images and buffers of its plan, one pipeline per pass, descriptor
-// sets per frame in flight, the cache of engine-image views, and the recording of a dispatch.
+// A Vulkan context: the internal images and buffers of its plan, descriptor sets per frame in flight,
+// the cache of engine-image views, and the recording of a dispatch. Its pipelines and their layouts
+// are the backend's (BackendVK::passPipeline), kept for the contexts made after it.
 #pragma once
 
 #include "ffx_dof_readback_ring.h"
@@ -47,9 +48,8 @@ private:
     // GLOBALS, TILE_LIST_ARGS, TILE_LISTS and HIGHLIGHTS, by storage buffer slot.
     FfxDofErrorCode createBuffers();
     FfxDofErrorCode createReadback();
+    // Finds (or has the backend make) the layouts and pipelines of the plan's passes.
     FfxDofErrorCode createPipelines();
-    // One pipeline of the pass, on its layout (pipelineLayouts_[pass]).
-    FfxDofErrorCode createPipeline(uint32_t pass, const shaders::Blob& blob, VkPipeline* pipeline);
     FfxDofErrorCode createDescriptors();
     void writeInternalDescriptors();
     VkImageView internalView(const SlotTarget& target, bool storage) const;
@@ -82,6 +82,7 @@ private:
     VkDeviceMemory readbackMemory_ = VK_NULL_HANDLE;
     const float* readbackValues_ = nullptr;
 
+    // The backend's, not destroyed with the context.
     std::array<VkDescriptorSetLayout, kPassCount> setLayouts_{};
     std::array<VkPipelineLayout, kPassCount> pipelineLayouts_{};
     std::array<std::array<VkPipeline, kMaxPassVariants>, kPassCount> pipelines_{};  // [pass][variant]

@@ -1,6 +1,7 @@
 // ffx-dof bench: GPU timestamps of every pass, the total, the internal memory, a plain copy pass
-// measured in the same run (the device floor), and the host CPU time of recording one dispatch, on a
-// reproducible procedural scene (a built-in scene of the reference renderer, the floor by default).
+// measured in the same run (the device floor), the host CPU time of recording one dispatch and of
+// creating the context (the first, and again at half the size), on a reproducible procedural scene (a
+// built-in scene of the reference renderer, the floor by default).
 #include "cli_error.h"
 #include "commands.h"
 #include "effect_run.h"
@@ -118,6 +119,10 @@ void runBench(const BenchOptions& options) {
     const vkrun::RunResult result = runEffectOrThrow(
         *device, toHostImage(pinhole.color), toHostImage(options.width, options.height, depth.deviceDepth), settings);
 
+    // A context made again at another resolution (a resized window): the backend kept the pipelines.
+    const uint32_t resizedWidth = std::max(1u, options.width / 2), resizedHeight = std::max(1u, options.height / 2);
+    const double contextCreateAgainMs = vkrun::timeContextCreate(*device, settings, resizedWidth, resizedHeight);
+
     std::optional<ApertureCost> apertureCost;
     if (options.againstRound) {
         apertureCost = measureAgainstRound(*device, toHostImage(pinhole.color),
@@ -159,6 +164,10 @@ void runBench(const BenchOptions& options) {
         json["aliasableMemoryBytes"] = result.aliasableMemoryBytes;
         json["hostRecordUs"] = result.hostRecordMicroseconds;
         json["hostRecordCalls"] = kHostRecordCalls;
+        json["contextCreateMs"] = {{"first", result.contextCreateMilliseconds},
+                                   {"again", contextCreateAgainMs},
+                                   {"againWidth", resizedWidth},
+                                   {"againHeight", resizedHeight}};
         if (options.autofocus) {
             json["autofocus"] = {
                 {"x", options.autofocus->x}, {"y", options.autofocus->y}, {"region", options.autofocus->size}};
@@ -190,6 +199,8 @@ void runBench(const BenchOptions& options) {
                 static_cast<unsigned long long>(result.aliasableMemoryBytes));
     std::printf("  %-24s %10.1f us (median of %u ffxDofContextDispatch calls)\n", "host record",
                 result.hostRecordMicroseconds, kHostRecordCalls);
+    std::printf("  %-24s %10.1f ms the first (compiles the pipelines), %.1f ms again at %ux%u (a resize)\n",
+                "context create", result.contextCreateMilliseconds, contextCreateAgainMs, resizedWidth, resizedHeight);
     if (apertureCost) {
         std::printf("  %-24s %10.3f (blur + composite %.3f ms against %.3f ms round; median of %u pairs in turn)\n",
                     "aperture / round", apertureCost->ratio, apertureCost->shapedMs, apertureCost->roundMs,

@@ -84,6 +84,10 @@ public:
     // The backend description for this device; pEnabledFeatures is the very chain given to
     // vkCreateDevice (it lives as long as the Device).
     FfxDofBackendDescriptionVK backendDescription(uint32_t backendFlags = 0) const;
+    // The backend of this device with backendFlags and maxFramesInFlight (0: the backend's default),
+    // made on first use and kept until the Device is destroyed: runEffect and EffectSession make their
+    // contexts with it, so they share its pipelines (a backend compiles each once, docs/api.md).
+    FfxDofBackend sharedBackend(uint32_t backendFlags, uint32_t maxFramesInFlight = 0);
     const VkPhysicalDeviceFeatures2& enabledFeatures() const;
 
     // Messages of the validation layer (and any other debug-utils message of warning or error
@@ -179,6 +183,9 @@ struct RunResult {
     uint64_t aliasableMemoryBytes = 0;
     double hostRecordMicroseconds = -1.0;  // median over hostRecordCalls; -1 without them
     float autofocusDistance = 0.0f;        // the last dispatch's, with useAutofocus; else 0
+    // Host time of ffxDofContextCreate: with the pipeline compiles when the device's shared backend had not
+    // made a context of these settings' permutations before (Device::sharedBackend), else without.
+    double contextCreateMilliseconds = 0.0;
 };
 
 // Runs the effect once per repeat on color (RGBA) and depth (1 channel) of the same size and
@@ -186,12 +193,17 @@ struct RunResult {
 // code and ffxDofGetLastErrorMessage, a Vulkan error).
 RunResult runEffect(Device& device, const HostImage& color, const HostImage& depth, const RunSettings& settings);
 
+// Host milliseconds of one ffxDofContextCreate at width x height with the settings' flags, quality, cocLimitFactor
+// and backend switches, on the device's shared backend (the context is destroyed again): a context made again, at a
+// new resolution, once runEffect made one of the same permutations.
+double timeContextCreate(Device& device, const RunSettings& settings, uint32_t width, uint32_t height);
+
 // Runs the effect on frame after frame (ffx-dof apply over a sequence): the backend (its pipelines) is
-// created once, the engine images once per resolution and format, and the context for every frame,
+// the device's shared one, the engine images made once per resolution and format, and the context for every frame,
 // so each frame is dispatched as the first of its context (frame index 0, which seeds the kernel
 // jitter): a frame's output never depends on which frames ran before it. Only the settings' formats,
-// flags, quality, cocLimitFactor, cocScale/cocBias and float32 switch are used (no repeats, timings,
-// in-place or copy pass). Not thread-safe: one thread submits.
+// flags, quality, cocLimitFactor, cocScale/cocBias, aperture, autofocus and backend switches are used (no
+// repeats, timings, in-place or copy pass). Not thread-safe: one thread submits.
 class EffectSession {
 public:
     explicit EffectSession(Device& device);

@@ -44,7 +44,14 @@ struct Device::Impl {
     mutable std::mutex messagesMutex;  // the layer may call back from driver threads
     std::vector<std::string> messages;
 
+    struct SharedBackend {
+        uint32_t flags, maxFramesInFlight;
+        FfxDofBackend backend;
+    };
+    std::vector<SharedBackend> backends;
+
     ~Impl() {
+        for (const SharedBackend& shared : backends) ffxDofBackendDestroy(shared.backend);
         if (commandPool) vkDestroyCommandPool(device, commandPool, nullptr);
         if (device) vkDestroyDevice(device, nullptr);
         if (messenger) {
@@ -293,6 +300,19 @@ FfxDofBackendDescriptionVK Device::backendDescription(uint32_t backendFlags) con
     description.pEnabledFeatures = &impl_->enabled;
     description.flags = backendFlags;
     return description;
+}
+
+FfxDofBackend Device::sharedBackend(uint32_t backendFlags, uint32_t maxFramesInFlight) {
+    for (const Impl::SharedBackend& shared : impl_->backends) {
+        if (shared.flags == backendFlags && shared.maxFramesInFlight == maxFramesInFlight) return shared.backend;
+    }
+    FfxDofBackendDescriptionVK description = backendDescription(backendFlags);
+    description.maxFramesInFlight = maxFramesInFlight;
+    FfxDofBackend backend = nullptr;
+    impl_->backends.reserve(impl_->backends.size() + 1);
+    checkDof(ffxDofBackendCreateVK(&description, &backend), "ffxDofBackendCreateVK");
+    impl_->backends.push_back({backendFlags, maxFramesInFlight, backend});
+    return backend;
 }
 
 const VkPhysicalDeviceFeatures2& Device::enabledFeatures() const { return impl_->enabled; }

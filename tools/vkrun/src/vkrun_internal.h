@@ -63,7 +63,15 @@ inline const FfxDofAperture* apertureOrNull(const RunSettings& settings) {
 // The context's flags: RunSettings::contextFlags, with FFX_DOF_ENABLE_APERTURE_SHAPES when the aperture
 // is shaped (a harness run is one context and one aperture).
 inline uint32_t contextFlagsFor(const RunSettings& settings) {
-    return settings.contextFlags | (apertureOrNull(settings) ? uint32_t(FFX_DOF_ENABLE_APERTURE_SHAPES) : 0u);
+    return settings.contextFlags | (apertureOrNull(settings) ? uint32_t(FFX_DOF_ENABLE_APERTURE_SHAPES) : 0u) |
+           (settings.inPlace ? uint32_t(FFX_DOF_OUTPUT_PRE_INIT) : 0u);
+}
+
+// The FfxDofBackendFlagBitsVK of the settings' switches.
+inline uint32_t backendFlagsFor(const RunSettings& settings) {
+    return (settings.forceFloat32 ? uint32_t(FFX_DOF_VK_DISABLE_FLOAT16) : 0u) |
+           (settings.useHlsl ? uint32_t(FFX_DOF_VK_USE_HLSL_SHADERS) : 0u) |
+           (settings.disableWave64 ? uint32_t(FFX_DOF_VK_DISABLE_WAVE64) : 0u);
 }
 
 }  // namespace ffxdof::vkrun

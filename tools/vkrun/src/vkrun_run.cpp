@@ -20,14 +20,10 @@ double median(std::vector<double> values) {
     return values.size() % 2 ? values[middle] : 0.5 * (values[middle - 1] + values[middle]);
 }
 
-// Destroys a backend and a context in the right order, also when an exception leaves runEffect.
+// Destroys the context also when an exception leaves runEffect (the backend is the device's).
 struct Effect {
-    FfxDofBackend backend = nullptr;
     FfxDofContext context = nullptr;
-    ~Effect() {
-        ffxDofContextDestroy(&context);
-        ffxDofBackendDestroy(backend);
-    }
+    ~Effect() { ffxDofContextDestroy(&context); }
 };
 
 struct QueryPool {
@@ -256,8 +252,7 @@ RunResult runEffect(Device& device, const HostImage& color, const HostImage& dep
                                           ? VK_IMAGE_LAYOUT_DEPTH_STENCIL_READ_ONLY_OPTIMAL
                                           : VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL;
     const VkImageLayout outputLayout = VK_IMAGE_LAYOUT_GENERAL;
-    const uint32_t contextFlags =
-        contextFlagsFor(settings) | (settings.inPlace ? uint32_t(FFX_DOF_OUTPUT_PRE_INIT) : 0u);
+    const uint32_t contextFlags = contextFlagsFor(settings);
     colorImage.upload(color, colorLayout);
     depthImage.upload(depth, depthLayout);
     if (outputImage) {
@@ -269,21 +264,17 @@ RunResult runEffect(Device& device, const HostImage& color, const HostImage& dep
         settings.outputFormat == VK_FORMAT_R8G8B8A8_SRGB ? uint32_t(FFX_DOF_VK_RESOURCE_MUTABLE_FORMAT) : 0u;
 
     Effect effect;
-    uint32_t backendFlags = 0;
-    if (settings.forceFloat32) backendFlags |= FFX_DOF_VK_DISABLE_FLOAT16;
-    if (settings.useHlsl) backendFlags |= FFX_DOF_VK_USE_HLSL_SHADERS;
-    if (settings.disableWave64) backendFlags |= FFX_DOF_VK_DISABLE_WAVE64;
-    FfxDofBackendDescriptionVK backendDescription = device.backendDescription(backendFlags);
-    backendDescription.maxFramesInFlight = settings.maxFramesInFlight;
-    checkDof(ffxDofBackendCreateVK(&backendDescription, &effect.backend), "ffxDofBackendCreateVK");
 
     FfxDofContextDescription contextDescription{};
     contextDescription.flags = contextFlags;
     contextDescription.quality = settings.quality;
     contextDescription.resolution = {width, height};
-    contextDescription.backendInterface = effect.backend;
+    contextDescription.backendInterface = device.sharedBackend(backendFlagsFor(settings), settings.maxFramesInFlight);
     contextDescription.cocLimitFactor = settings.cocLimitFactor;
+    const auto createStart = std::chrono::steady_clock::now();
     checkDof(ffxDofContextCreate(&effect.context, &contextDescription), "ffxDofContextCreate");
+    const double createMilliseconds =
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - createStart).count();
 
     constexpr uint32_t kEffectQueries = FFX_DOF_VK_TIMESTAMP_COUNT;
     constexpr uint32_t kCopyQueries = 2;
@@ -331,6 +322,7 @@ RunResult runEffect(Device& device, const HostImage& color, const HostImage& dep
     }
 
     RunResult out;
+    out.contextCreateMilliseconds = createMilliseconds;
     const double msPerTick = device.timestampPeriod() * 1e-6;
     std::array<std::vector<double>, kPassCount> passTimes;
     std::vector<double> totals, copies;
@@ -364,6 +356,19 @@ RunResult runEffect(Device& device, const HostImage& color, const HostImage& dep
     out.aliasableMemoryBytes = memory.aliasableUsageInBytes;
     out.output = result.download(settings.inPlace ? colorLayout : outputLayout);
     return out;
+}
+
+double timeContextCreate(Device& device, const RunSettings& settings, uint32_t width, uint32_t height) {
+    FfxDofContextDescription description{};
+    description.flags = contextFlagsFor(settings);
+    description.quality = settings.quality;
+    description.resolution = {width, height};
+    description.backendInterface = device.sharedBackend(backendFlagsFor(settings), settings.maxFramesInFlight);
+    description.cocLimitFactor = settings.cocLimitFactor;
+    Effect effect;
+    const auto start = std::chrono::steady_clock::now();
+    checkDof(ffxDofContextCreate(&effect.context, &description), "ffxDofContextCreate");
+    return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
 }
 
 }  // namespace ffxdof::vkrun

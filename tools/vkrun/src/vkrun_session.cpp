@@ -1,4 +1,4 @@
-// EffectSession: the effect over a sequence of frames with one backend and reused engine images.
+// EffectSession: the effect over a sequence of frames with the device's backend and reused engine images.
 #include "vkrun_internal.h"
 
 #include <memory>
@@ -15,12 +15,9 @@ struct Context {
 
 struct EffectSession::Impl {
     Device& device;
-    FfxDofBackend backend = nullptr;
-    bool backendFloat32 = false;
     std::unique_ptr<GpuImage> color, depth, output;
 
     explicit Impl(Device& d) : device(d) {}
-    ~Impl() { ffxDofBackendDestroy(backend); }
 
     static bool matches(const std::unique_ptr<GpuImage>& image, uint32_t width, uint32_t height, VkFormat format) {
         return image && image->width() == width && image->height() == height && image->format() == format;
@@ -45,14 +42,6 @@ HostImage EffectSession::run(const HostImage& color, const HostImage& depth, con
     }
     Impl& s = *impl_;
     const uint32_t width = color.width, height = color.height;
-    if (!s.backend || s.backendFloat32 != settings.forceFloat32) {
-        ffxDofBackendDestroy(s.backend);
-        s.backend = nullptr;
-        FfxDofBackendDescriptionVK description =
-            s.device.backendDescription(settings.forceFloat32 ? uint32_t(FFX_DOF_VK_DISABLE_FLOAT16) : 0u);
-        checkDof(ffxDofBackendCreateVK(&description, &s.backend), "ffxDofBackendCreateVK");
-        s.backendFloat32 = settings.forceFloat32;
-    }
     const VkImageUsageFlags transfers = VK_IMAGE_USAGE_TRANSFER_SRC_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT;
     if (!Impl::matches(s.color, width, height, settings.colorFormat)) {
         s.color = std::make_unique<GpuImage>(s.device, width, height, settings.colorFormat,
@@ -75,7 +64,8 @@ HostImage EffectSession::run(const HostImage& color, const HostImage& depth, con
     const VkImageLayout outputLayout = VK_IMAGE_LAYOUT_GENERAL;
     s.color->upload(color, colorLayout);
     s.depth->upload(depth, depthLayout);
-    if (settings.contextFlags & FFX_DOF_OUTPUT_PRE_INIT) {
+    const uint32_t contextFlags = contextFlagsFor(settings);
+    if (contextFlags & FFX_DOF_OUTPUT_PRE_INIT) {
         s.output->upload(color, outputLayout);
     } else {
         // Only its layout matters: every pixel is written.
@@ -96,10 +86,10 @@ HostImage EffectSession::run(const HostImage& color, const HostImage& depth, con
     // A fresh context per frame: its first dispatch uses frame index 0 (see the class comment).
     Context context;
     FfxDofContextDescription description{};
-    description.flags = contextFlagsFor(settings);
+    description.flags = contextFlags;
     description.quality = settings.quality;
     description.resolution = {width, height};
-    description.backendInterface = s.backend;
+    description.backendInterface = s.device.sharedBackend(backendFlagsFor(settings), settings.maxFramesInFlight);
     description.cocLimitFactor = settings.cocLimitFactor;
     checkDof(ffxDofContextCreate(&context.handle, &description), "ffxDofContextCreate");
 
