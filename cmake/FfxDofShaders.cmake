@@ -96,6 +96,11 @@ function(ffx_dof_add_shader_library target)
   endif()
 
   set(common_args --language ${source_language} --namespace ${arg_NAMESPACE} ${dxc_args})
+  # FFX_DOF_SHADER_CACHE_DIR: permutations another build (another configuration, commit or build folder) compiled
+  # are read back, not compiled again (tools/test.sh: the sanitizer build reads the Release build's).
+  if(FFX_DOF_SHADER_CACHE_DIR AND NOT arg_LANGUAGE STREQUAL "dxil")
+    list(APPEND common_args --cache-dir "${FFX_DOF_SHADER_CACHE_DIR}")
+  endif()
   foreach(dir IN LISTS arg_INCLUDE_DIRS)
     list(APPEND common_args -I ${dir})
   endforeach()

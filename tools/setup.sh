@@ -13,6 +13,7 @@ packages=(
   libvulkan-dev libvulkan-volk-dev
   libglm-dev libopenexr-dev libimath-dev libpng-dev libstb-dev
   libcli11-dev nlohmann-json3-dev
+  libxxhash-dev  # ffx-dof-shaderc's permutation cache keys (XXH3-128)
   # tests: Catch2, formatting check (clang-format over `git ls-files`), Vulkan on lavapipe with validation,
   # the Direct3D 12 backend cross-compiled with MinGW-w64
   catch2 clang-format git

@@ -19,8 +19,12 @@ step() { printf '\n== %s (%ss elapsed)\n' "$1" "$SECONDS"; }
 step "formatting (clang-format)"
 bash tools/check-format.sh
 
+# Both builds file their shader permutations in one cache (docs/permutations.md, "The permutation cache"):
+# the sanitizer build, whose shaders are the Release build's, compiles none of them again.
+shader_cache="$PWD/build/shader-cache"
+
 step "configure + build (Release)"
-cmake --preset default >/dev/null
+cmake --preset default -DFFX_DOF_SHADER_CACHE_DIR="$shader_cache" >/dev/null
 bash tools/check-packages.sh build/default   # every system file CMake found comes from a tools/setup.sh package
 cmake --build --preset default -j "$jobs"
 
@@ -30,7 +34,8 @@ ctest --preset default -j "$jobs"
 step "host tests under ASan + UBSan"
 # The shader permutations are compiled by the Release build's ffx-dof-shaderc (FFX_DOF_SHADERC): the
 # same blobs, five times faster than the instrumented tool; the tool's own tests still run it under ASan.
-cmake --preset asan -DFFX_DOF_SHADERC="$PWD/build/default/tools/shaderc/ffx-dof-shaderc" >/dev/null
+cmake --preset asan -DFFX_DOF_SHADERC="$PWD/build/default/tools/shaderc/ffx-dof-shaderc" \
+  -DFFX_DOF_SHADER_CACHE_DIR="$shader_cache" >/dev/null
 bash tools/check-packages.sh build/asan
 cmake --build --preset asan -j "$jobs"
 ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 ctest --preset asan -j "$jobs"

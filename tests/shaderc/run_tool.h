@@ -17,22 +17,29 @@ namespace fs = std::filesystem;
 struct RunResult {
     int exitCode = -1;
     std::string stderrText;
+    std::string stdoutText;
 };
 
-// Runs the tool with `arguments` (shell-quoted by the caller), capturing stderr.
+// Runs the tool with `arguments` (shell-quoted by the caller), capturing stderr and stdout.
 inline RunResult runTool(const std::string& arguments) {
     // One file per process: CTest runs the test cases of this file in parallel processes.
-    const fs::path errFile = fs::path(FFX_DOF_TEST_WORK_DIR) / ("stderr." + std::to_string(getpid()) + ".txt");
+    const std::string pid = std::to_string(getpid());
+    const fs::path errFile = fs::path(FFX_DOF_TEST_WORK_DIR) / ("stderr." + pid + ".txt");
+    const fs::path outFile = fs::path(FFX_DOF_TEST_WORK_DIR) / ("stdout." + pid + ".txt");
     fs::create_directories(FFX_DOF_TEST_WORK_DIR);
-    const std::string command =
-        std::string("'") + FFX_DOF_SHADERC_EXE + "' " + arguments + " 2>'" + errFile.string() + "' >/dev/null";
+    const std::string command = std::string("'") + FFX_DOF_SHADERC_EXE + "' " + arguments + " 2>'" + errFile.string() +
+                                "' >'" + outFile.string() + "'";
     const int status = std::system(command.c_str());
     RunResult result;
     result.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    std::ifstream in(errFile);
-    std::ostringstream text;
-    text << in.rdbuf();
-    result.stderrText = text.str();
+    const auto read = [](const fs::path& path) {
+        std::ifstream in(path);
+        std::ostringstream text;
+        text << in.rdbuf();
+        return text.str();
+    };
+    result.stderrText = read(errFile);
+    result.stdoutText = read(outFile);
     return result;
 }
 

@@ -3,10 +3,12 @@
 
 #include "run_tool.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <string>
+#include <vector>
 
 namespace fs = std::filesystem;
 using namespace ffxdof::test;
@@ -89,4 +91,98 @@ TEST_CASE("a compile failure exits non-zero with context and leaves old outputs 
     std::string text((std::istreambuf_iterator<char>(kept)), std::istreambuf_iterator<char>());
     CHECK(text == "previous");
     CHECK(!fs::exists(out / "ffx_dof_error_glsl.cpp"));
+}
+
+TEST_CASE("the permutation cache: a second build reads every permutation back, a changed header compiles again",
+          "[cli][cache]") {
+    // The test pass copied, so that its header can change.
+    const fs::path work = freshOutDir("cache");
+    const fs::path shaders = work / "shaders", cache = work / "cache";
+    fs::create_directories(shaders);
+    for (const char* file : {"ffx_dof_test.glsl", "ffx_dof_test_common.h"})
+        fs::copy_file(fs::path(kShaders) / file, shaders / file);
+    const auto build = [&](const fs::path& out, bool cached) {
+        return runTool("'" + (shaders / "ffx_dof_test.glsl").string() + "' --pass test -I '" + shaders.string() +
+                       "' '-DFFX_HALF={0,1}' '-DFFX_DOF_TEST_SCALE={1,2}' --define FFX_DOF_TEST_WIDE=0 -o '" +
+                       out.string() + "'" + (cached ? " --cache-dir '" + cache.string() + "'" : std::string()));
+    };
+    const auto cacheFiles = [&] {
+        std::vector<fs::path> files;
+        for (const auto& entry : fs::directory_iterator(cache)) files.push_back(entry.path());
+        std::sort(files.begin(), files.end());
+        return files;
+    };
+    const auto sameOutputs = [&](const fs::path& a, const fs::path& b) {
+        for (const char* file : {"ffx_dof_test_glsl.h", "ffx_dof_test_glsl.cpp", "ffx_dof_test_glsl.json"}) {
+            INFO(file);
+            if (readText(a / file) != readText(b / file)) return false;
+        }
+        return true;
+    };
+
+    const RunResult uncached = build(work / "uncached", false);
+    REQUIRE(uncached.exitCode == 0);
+    const RunResult first = build(work / "first", true);
+    INFO(first.stderrText);
+    REQUIRE(first.exitCode == 0);
+    CHECK(first.stdoutText.find("0 from the cache, 4 compiled") != std::string::npos);
+    CHECK(sameOutputs(work / "uncached", work / "first"));
+    const std::vector<fs::path> filed = cacheFiles();
+    REQUIRE(filed.size() == 4);
+    for (const fs::path& file : filed) CHECK(file.extension() == ".spv");
+
+    const RunResult second = build(work / "second", true);
+    REQUIRE(second.exitCode == 0);
+    CHECK(second.stdoutText.find("4 from the cache, 0 compiled") != std::string::npos);
+    CHECK(sameOutputs(work / "first", work / "second"));
+
+    // An entry that is not SPIR-V (a disk error, an interrupted copy) is compiled again and filed anew.
+    std::ofstream(filed[0], std::ios::binary | std::ios::trunc) << "not SPIR-V";
+    const RunResult repaired = build(work / "repaired", true);
+    REQUIRE(repaired.exitCode == 0);
+    CHECK(repaired.stdoutText.find("3 from the cache, 1 compiled") != std::string::npos);
+    CHECK(sameOutputs(work / "first", work / "repaired"));
+    CHECK(readText(filed[0]).rfind("not SPIR-V", 0) != 0);
+
+    // The entries are what a hit returns: two swapped, the tables change (so nothing was compiled).
+    const std::string a = readText(filed[0]), b = readText(filed[1]);
+    std::ofstream(filed[0], std::ios::binary | std::ios::trunc) << b;
+    std::ofstream(filed[1], std::ios::binary | std::ios::trunc) << a;
+    REQUIRE(build(work / "swapped", true).exitCode == 0);
+    CHECK_FALSE(sameOutputs(work / "first", work / "swapped"));
+    std::ofstream(filed[0], std::ios::binary | std::ios::trunc) << a;
+    std::ofstream(filed[1], std::ios::binary | std::ios::trunc) << b;
+
+    // An included header changes the key of every permutation that includes it.
+    std::string header = readText(shaders / "ffx_dof_test_common.h");
+    const size_t at = header.find("FFX_DOF_TEST_GROUP_SIZE 8");
+    REQUIRE(at != std::string::npos);
+    header.replace(at, std::string("FFX_DOF_TEST_GROUP_SIZE 8").size(), "FFX_DOF_TEST_GROUP_SIZE 4");
+    std::ofstream(shaders / "ffx_dof_test_common.h", std::ios::binary | std::ios::trunc) << header;
+    const RunResult changed = build(work / "changed", true);
+    REQUIRE(changed.exitCode == 0);
+    CHECK(changed.stdoutText.find("0 from the cache, 4 compiled") != std::string::npos);
+    CHECK_FALSE(sameOutputs(work / "first", work / "changed"));
+    CHECK(cacheFiles().size() == 8);
+    for (const fs::path& file : cacheFiles()) CHECK(file.extension() == ".spv");  // no temporaries left
+
+    // Bad use: a folder that cannot be made, and DXIL (the cache keeps SPIR-V only).
+    const fs::path blocker = work / "not_a_folder";
+    std::ofstream(blocker) << "x";
+    const std::pair<std::string, std::string> bad[] = {
+        {" --cache-dir '" + (blocker / "cache").string() + "'", "not_a_folder"},
+        {" --language hlsl --dxc /bin/true --cache-dir '" + cache.string() + "'", "--dxc"},
+    };
+    for (const auto& [arguments, expected] : bad) {
+        const fs::path out = work / "bad";
+        const RunResult result =
+            runTool("'" + (shaders / "ffx_dof_test.glsl").string() + "' --pass test -I '" + shaders.string() +
+                    "' '-DFFX_HALF={0,1}' -o '" + out.string() + "'" + arguments);
+        INFO(arguments << "\n" << result.stderrText);
+        CHECK(result.exitCode == 1);
+        CHECK(result.stderrText.rfind("ffx-dof-shaderc: error: ", 0) == 0);
+        CHECK(result.stderrText.find(expected) != std::string::npos);
+        CHECK(lineCount(result.stderrText) == 1);
+        CHECK(isEmptyOrAbsent(out));
+    }
 }

@@ -159,6 +159,67 @@ std::vector<uint32_t> optimize(const CompileOptions& options, const std::vector<
     return optimized;
 }
 
+// Sets up `shader` as every permutation of the pass is read: front end, Vulkan target, and for HLSL what
+// dxc -spirv does by default. Returns the messages to parse (or preprocess) with.
+// The source as glslang takes it: the shader keeps these pointers until it is parsed.
+struct ShaderSource {
+    const char* strings[1];
+    int lengths[1];
+    const char* names[1];
+    ShaderSource(const std::string& source, const std::string& name)
+        : strings{source.c_str()}, lengths{static_cast<int>(source.size())}, names{name.c_str()} {}
+};
+
+EShMessages configureShader(glslang::TShader& shader, const CompileOptions& options, const ShaderSource& source,
+                            const std::string& preamble) {
+    const bool hlsl = options.language == Language::Hlsl;
+    shader.setStringsWithLengthsAndNames(source.strings, source.lengths, source.names, 1);
+    shader.setPreamble(preamble.c_str());
+    shader.setEnvInput(hlsl ? glslang::EShSourceHlsl : glslang::EShSourceGlsl, EShLangCompute, glslang::EShClientVulkan,
+                       100);
+    shader.setEnvClient(glslang::EShClientVulkan, glslang::EShTargetVulkan_1_1);
+    shader.setEnvTarget(glslang::EShTargetSpv, glslang::EShTargetSpv_1_3);
+    shader.setEntryPoint("main");
+    auto messages = static_cast<EShMessages>(EShMsgSpvRules | EShMsgVulkanRules);
+    if (hlsl) {
+        // What dxc -spirv does by default: HLSL packing of constant buffers, real 16-bit types
+        // (-enable-16bit-types), registers mapped to bindings with per-class shifts.
+        messages = static_cast<EShMessages>(messages | EShMsgReadHlsl | EShMsgHlslOffsets | EShMsgHlslEnable16BitTypes);
+        shader.setHlslIoMapping(true);
+        // RWTexture2D<float3> would otherwise be declared Rgba32f and written with 3 components
+        // (VUID-RuntimeSpirv-OpImageWrite-07112): glslang 12 has no [[vk::image_format]], so storage
+        // images are typeless (Unknown format) as with dxc's default; the device needs
+        // shaderStorageImageWriteWithoutFormat, which the Vulkan backend requires anyway.
+        shader.setNoStorageFormat(true);
+        // DXIL binds by register: its reflection must see the registers unshifted.
+        const HlslBindingShifts shifts = options.dxc.empty() ? options.hlslShifts : HlslBindingShifts{};
+        shader.setShiftBinding(glslang::EResTexture, shifts.texture);
+        shader.setShiftBinding(glslang::EResUav, shifts.uav);
+        shader.setShiftBinding(glslang::EResSampler, shifts.sampler);
+        shader.setShiftBinding(glslang::EResUbo, shifts.constantBuffer);
+    }
+    return messages;
+}
+
+int defaultVersion(const CompileOptions& options) { return options.language == Language::Hlsl ? 100 : 450; }
+
+// spirv-val; its messages, indented, in *messages.
+bool validate(const std::vector<uint32_t>& spirv, std::string* messages) {
+    spvtools::SpirvTools tools(SPV_ENV_VULKAN_1_1);
+    tools.SetMessageConsumer([messages](spv_message_level_t, const char*, const spv_position_t&, const char* message) {
+        *messages += "  " + std::string(message) + "\n";
+    });
+    return tools.Validate(spirv.data(), spirv.size(), spvtools::ValidatorOptions());
+}
+
+// What decides a permutation's SPIR-V besides the tool and the preprocessed source (PermutationCache::key).
+std::string cacheIdentity(const CompileOptions& options, const std::string& preamble) {
+    const HlslBindingShifts& shifts = options.hlslShifts;
+    return std::string(languageName(options.language)) + (options.optimize ? " optimized" : " unoptimized") +
+           " shifts t" + std::to_string(shifts.texture) + " u" + std::to_string(shifts.uav) + " s" +
+           std::to_string(shifts.sampler) + " b" + std::to_string(shifts.constantBuffer) + "\n" + preamble;
+}
+
 }  // namespace
 
 GlslangProcess::GlslangProcess() { glslang::InitializeProcess(); }
@@ -184,41 +245,33 @@ CompiledShader compilePermutation(const CompileOptions& options, const std::vect
         }
     }
 
-    const bool hlsl = options.language == Language::Hlsl;
-    glslang::TShader shader(EShLangCompute);
-    const char* strings[] = {source.c_str()};
-    const int lengths[] = {static_cast<int>(source.size())};
     const std::string sourceName = sourcePath.string();
-    const char* names[] = {sourceName.c_str()};
-    shader.setStringsWithLengthsAndNames(strings, lengths, names, 1);
-    shader.setPreamble(preamble.c_str());
-    shader.setEnvInput(hlsl ? glslang::EShSourceHlsl : glslang::EShSourceGlsl, EShLangCompute, glslang::EShClientVulkan,
-                       100);
-    shader.setEnvClient(glslang::EShClientVulkan, glslang::EShTargetVulkan_1_1);
-    shader.setEnvTarget(glslang::EShTargetSpv, glslang::EShTargetSpv_1_3);
-    shader.setEntryPoint("main");
-    auto messages = static_cast<EShMessages>(EShMsgSpvRules | EShMsgVulkanRules);
-    if (hlsl) {
-        // What dxc -spirv does by default: HLSL packing of constant buffers, real 16-bit types
-        // (-enable-16bit-types), registers mapped to bindings with per-class shifts.
-        messages = static_cast<EShMessages>(messages | EShMsgReadHlsl | EShMsgHlslOffsets | EShMsgHlslEnable16BitTypes);
-        shader.setHlslIoMapping(true);
-        // RWTexture2D<float3> would otherwise be declared Rgba32f and written with 3 components
-        // (VUID-RuntimeSpirv-OpImageWrite-07112): glslang 12 has no [[vk::image_format]], so storage
-        // images are typeless (Unknown format) as with dxc's default; the device needs
-        // shaderStorageImageWriteWithoutFormat, which the Vulkan backend requires anyway.
-        shader.setNoStorageFormat(true);
-        // DXIL binds by register: its reflection must see the registers unshifted.
-        const HlslBindingShifts shifts = dxil ? HlslBindingShifts{} : options.hlslShifts;
-        shader.setShiftBinding(glslang::EResTexture, shifts.texture);
-        shader.setShiftBinding(glslang::EResUav, shifts.uav);
-        shader.setShiftBinding(glslang::EResSampler, shifts.sampler);
-        shader.setShiftBinding(glslang::EResUbo, shifts.constantBuffer);
+    const ShaderSource shaderSource(source, sourceName);
+    // With a cache (SPIR-V only): the preprocessed source names the permutation; a hit skips the rest.
+    std::string cacheKey;
+    if (options.cache && !dxil) {
+        glslang::TShader preprocessor(EShLangCompute);
+        const EShMessages messages = configureShader(preprocessor, options, shaderSource, preamble);
+        Includer includer(options, &result.openedFiles);
+        std::string preprocessed;
+        // A failure here is reported by the parse below, with its source context.
+        if (preprocessor.preprocess(GetDefaultResources(), defaultVersion(options), ENoProfile, false, false, messages,
+                                    &preprocessed, includer)) {
+            cacheKey = options.cache->key(cacheIdentity(options, preamble), preprocessed);
+            std::vector<uint32_t> cached = options.cache->find(cacheKey);
+            std::string ignored;
+            if (!cached.empty() && validate(cached, &ignored)) {
+                result.spirv = std::move(cached);
+                return result;
+            }
+        }
     }
 
+    glslang::TShader shader(EShLangCompute);
+    const EShMessages messages = configureShader(shader, options, shaderSource, preamble);
     Includer includer(options, &result.openedFiles);
     const std::string where = describePermutation(options, permutation);
-    if (!shader.parse(GetDefaultResources(), hlsl ? 100 : 450, false, messages, includer)) {
+    if (!shader.parse(GetDefaultResources(), defaultVersion(options), false, messages, includer)) {
         const std::string includeError = includer.error().empty() ? "" : "  " + includer.error() + "\n";
         throw Error(where + ": compile error\n" + includeError + withSourceContext(shader.getInfoLog(), sourcePath));
     }
@@ -241,14 +294,10 @@ CompiledShader compilePermutation(const CompileOptions& options, const std::vect
     }
 
     std::string validatorMessages;
-    spvtools::SpirvTools tools(SPV_ENV_VULKAN_1_1);
-    tools.SetMessageConsumer(
-        [&validatorMessages](spv_message_level_t, const char*, const spv_position_t&, const char* message) {
-            validatorMessages += "  " + std::string(message) + "\n";
-        });
-    if (!tools.Validate(spirv.data(), spirv.size(), spvtools::ValidatorOptions())) {
+    if (!validate(spirv, &validatorMessages)) {
         throw Error(where + ": spirv-val rejected the binary\n" + validatorMessages);
     }
+    if (!cacheKey.empty()) options.cache->store(cacheKey, spirv);
     result.spirv = std::move(spirv);
     if (dxil) result.dxil = compileDxil(options, permutation, where);
     return result;

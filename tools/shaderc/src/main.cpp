@@ -4,6 +4,7 @@
 #include <CLI/CLI.hpp>
 
 #include <cstdio>
+#include <memory>
 
 namespace {
 
@@ -22,6 +23,7 @@ struct Arguments {
     std::string cppNamespace = "ffxdof::shaders";
     std::string depfile;
     std::string dxc;
+    std::string cacheDir;
     unsigned jobs = 0;
 };
 
@@ -83,6 +85,13 @@ int run(const Arguments& args) {
         axes.push_back(std::move(axis));
     }
 
+    std::unique_ptr<PermutationCache> cache;
+    if (!args.cacheDir.empty()) {
+        if (!args.dxc.empty()) throw Error("--cache-dir keeps SPIR-V only; it cannot be combined with --dxc");
+        cache = std::make_unique<PermutationCache>(args.cacheDir);
+        options.cache = cache.get();
+    }
+
     const PassBuild build = buildPass(options, axes, args.jobs);
 
     const fs::path outDir = args.outDir;
@@ -101,8 +110,10 @@ int run(const Arguments& args) {
     };
     if (!args.depfile.empty()) files.emplace_back(args.depfile, emitDepfile(header, build.dependencies));
     writeFilesAtomically(files);
-    std::printf("ffx-dof-shaderc: %s (%s): %zu permutations, %zu unique blobs\n", args.pass.c_str(),
+    std::printf("ffx-dof-shaderc: %s (%s): %zu permutations, %zu unique blobs", args.pass.c_str(),
                 tableLanguage(options), build.permutationToBlob.size(), build.blobs.size());
+    if (cache) std::printf(", %u from the cache, %u compiled", cache->hits(), cache->misses());
+    std::printf("\n");
     return 0;
 }
 
@@ -126,6 +137,9 @@ int main(int argc, char** argv) {
     app.add_option("--depfile", args.depfile, "Write a Makefile-syntax depfile of every file read");
     app.add_option("--dxc", args.dxc,
                    "Emit DXIL (table language \"dxil\") by running this dxc per permutation; HLSL only");
+    app.add_option("--cache-dir", args.cacheDir,
+                   "Look each permutation's SPIR-V up in this folder before compiling it, and file it there after "
+                   "(keyed by this executable, the options and the preprocessed source); not with --dxc");
     app.add_option("-j,--jobs", args.jobs, "Worker threads (default: all cores)");
     try {
         app.parse(argc, argv);

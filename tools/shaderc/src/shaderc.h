@@ -8,6 +8,7 @@
 
 #include "ffx_dof_shader_table.h"
 
+#include <atomic>
 #include <cstdint>
 #include <filesystem>
 #include <map>
@@ -68,6 +69,8 @@ struct HlslBindingShifts {
     uint32_t constantBuffer = 0;
 };
 
+class PermutationCache;
+
 struct CompileOptions {
     std::string pass;  // for messages and table names
     Language language = Language::Glsl;
@@ -79,6 +82,38 @@ struct CompileOptions {
     // Not empty: HLSL only; the blobs are DXIL from this dxc, the table's language is "dxil" and
     // the SPIR-V is compiled only to reflect the bindings (registers and spaces, not shifted).
     fs::path dxc;
+    // Not null: SPIR-V permutations are looked up there before they are compiled, and filed there after
+    // (--cache-dir; not with dxc). Not owned.
+    PermutationCache* cache = nullptr;
+};
+
+// The permutation cache (--cache-dir, cache.cpp): each compiled permutation's SPIR-V in a file named by a
+// 128-bit XXH3 of everything that decides it: this executable's bytes (glslang and SPIRV-Tools are linked
+// into it), the compile options, the defines and the preprocessed source with every include. A build of
+// another configuration, another commit or a clean build folder that compiles the same permutation reads it
+// back instead of compiling it again. Thread-safe; several processes may share one folder (files are written
+// whole and renamed into place).
+class PermutationCache {
+public:
+    // Creates the folder if needed; throws Error when it cannot, or when this executable cannot be read.
+    explicit PermutationCache(const fs::path& folder);
+
+    // The key of one permutation: `identity` is everything but the preprocessed source (options, defines).
+    std::string key(const std::string& identity, const std::string& preprocessed) const;
+    // The SPIR-V filed under key, or empty when there is none, or the file is not a whole SPIR-V module.
+    std::vector<uint32_t> find(const std::string& key);
+    // Files the SPIR-V under key. A failure to write (a full disk) is reported once on stderr, not thrown:
+    // the build's outputs do not depend on the cache.
+    void store(const std::string& key, const std::vector<uint32_t>& spirv);
+
+    uint32_t hits() const { return hits_; }
+    uint32_t misses() const { return misses_; }
+
+private:
+    fs::path folder_;
+    std::string toolDigest_;  // XXH3-128 of this executable, hex
+    std::atomic<uint32_t> hits_{0}, misses_{0};
+    std::atomic<bool> warned_{false};
 };
 
 // The language the emitted table names: "glsl", "hlsl" (both SPIR-V) or "dxil".
