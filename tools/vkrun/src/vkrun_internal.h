@@ -74,4 +74,16 @@ inline uint32_t backendFlagsFor(const RunSettings& settings) {
            (settings.disableWave64 ? uint32_t(FFX_DOF_VK_DISABLE_WAVE64) : 0u);
 }
 
+// The context description of a harness run at width x height, on the device's shared backend for the settings.
+inline FfxDofContextDescription contextDescriptionFor(Device& device, const RunSettings& settings, uint32_t width,
+                                                      uint32_t height) {
+    FfxDofContextDescription description{};
+    description.flags = contextFlagsFor(settings);
+    description.quality = settings.quality;
+    description.resolution = {width, height};
+    description.backendInterface = device.sharedBackend(backendFlagsFor(settings), settings.maxFramesInFlight);
+    description.cocLimitFactor = settings.cocLimitFactor;
+    return description;
+}
+
 }  // namespace ffxdof::vkrun

@@ -252,7 +252,6 @@ RunResult runEffect(Device& device, const HostImage& color, const HostImage& dep
                                           ? VK_IMAGE_LAYOUT_DEPTH_STENCIL_READ_ONLY_OPTIMAL
                                           : VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL;
     const VkImageLayout outputLayout = VK_IMAGE_LAYOUT_GENERAL;
-    const uint32_t contextFlags = contextFlagsFor(settings);
     colorImage.upload(color, colorLayout);
     depthImage.upload(depth, depthLayout);
     if (outputImage) {
@@ -265,12 +264,7 @@ RunResult runEffect(Device& device, const HostImage& color, const HostImage& dep
 
     Effect effect;
 
-    FfxDofContextDescription contextDescription{};
-    contextDescription.flags = contextFlags;
-    contextDescription.quality = settings.quality;
-    contextDescription.resolution = {width, height};
-    contextDescription.backendInterface = device.sharedBackend(backendFlagsFor(settings), settings.maxFramesInFlight);
-    contextDescription.cocLimitFactor = settings.cocLimitFactor;
+    const FfxDofContextDescription contextDescription = contextDescriptionFor(device, settings, width, height);
     const auto createStart = std::chrono::steady_clock::now();
     checkDof(ffxDofContextCreate(&effect.context, &contextDescription), "ffxDofContextCreate");
     const double createMilliseconds =
@@ -359,12 +353,7 @@ RunResult runEffect(Device& device, const HostImage& color, const HostImage& dep
 }
 
 double timeContextCreate(Device& device, const RunSettings& settings, uint32_t width, uint32_t height) {
-    FfxDofContextDescription description{};
-    description.flags = contextFlagsFor(settings);
-    description.quality = settings.quality;
-    description.resolution = {width, height};
-    description.backendInterface = device.sharedBackend(backendFlagsFor(settings), settings.maxFramesInFlight);
-    description.cocLimitFactor = settings.cocLimitFactor;
+    const FfxDofContextDescription description = contextDescriptionFor(device, settings, width, height);
     Effect effect;
     const auto start = std::chrono::steady_clock::now();
     checkDof(ffxDofContextCreate(&effect.context, &description), "ffxDofContextCreate");

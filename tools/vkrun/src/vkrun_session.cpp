@@ -85,12 +85,7 @@ HostImage EffectSession::run(const HostImage& color, const HostImage& depth, con
 
     // A fresh context per frame: its first dispatch uses frame index 0 (see the class comment).
     Context context;
-    FfxDofContextDescription description{};
-    description.flags = contextFlags;
-    description.quality = settings.quality;
-    description.resolution = {width, height};
-    description.backendInterface = s.device.sharedBackend(backendFlagsFor(settings), settings.maxFramesInFlight);
-    description.cocLimitFactor = settings.cocLimitFactor;
+    const FfxDofContextDescription description = contextDescriptionFor(s.device, settings, width, height);
     checkDof(ffxDofContextCreate(&context.handle, &description), "ffxDofContextCreate");
 
     FfxDofDispatchDescription dispatch{};
