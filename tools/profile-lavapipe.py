@@ -12,7 +12,11 @@ their size and those instructions. Which shader a large function is follows from
 (the blur's is the largest).
 
     python3 tools/profile-lavapipe.py [--bin build/default/tools/cli/ffx-dof] [--seconds 8] [--top 12]
-        [-- bench options, e.g. --width 1920 --height 1080 --quality 10 --float32]
+        [--annotate DIR] [-- bench options, e.g. --width 1920 --height 1080 --quality 10 --float32]
+
+With --annotate, each printed function's disassembly goes to DIR/function-RANK.txt with its samples per
+instruction: a group-shared read shows there as a loop over the lanes whose stores to the stack and reloads
+(one per 32-bit component) take most of the samples.
 
 Needs perf (linux-perf), gdb and objdump (tools/setup.sh installs them) and permission to trace the
 process (root, or kernel.perf_event_paranoid <= 1 and ptrace allowed). Shares are of one process, so
@@ -69,6 +73,9 @@ def main():
     parser.add_argument("--seconds", type=float, default=8.0, help="how long to sample, after the warm-up")
     parser.add_argument("--warmup", type=float, default=5.0, help="seconds of bench before sampling starts")
     parser.add_argument("--top", type=int, default=12, help="functions to print")
+    parser.add_argument("--annotate", metavar="DIR",
+                        help="also write each printed function's disassembly with its samples per instruction to "
+                             "DIR/function-RANK.txt (the hot loops of a shader)")
     parser.add_argument("bench_args", nargs="*", help="options for `ffx-dof bench` (after --)")
     args = parser.parse_args()
 
@@ -116,10 +123,12 @@ def main():
         # Functions: from the start of a mapping or the instruction after a `ret` to the next.
         starts = []
         kinds = collections.defaultdict(collections.Counter)  # per function: gathers, per-lane loads
+        listing = []  # every instruction of every mapping, in address order per mapping
         for start, end, path in dumps:
             if not os.path.exists(path):
                 fail(f"gdb could not read {start:#x}-{end:#x} (ptrace not allowed?)")
             instructions = disassemble(path, start)
+            listing += instructions
             function = start
             starts.append(function)
             for i, (_, text) in enumerate(instructions):
@@ -147,6 +156,13 @@ def main():
             size = starts[starts.index(function) + 1] - function
             print(f"{rank:>4} {size:>7} {100.0 * count / total:5.1f}% {kinds[function]['gathers']:>7} "
                   f"{kinds[function]['lane loads']:>10}")
+            if args.annotate:
+                os.makedirs(args.annotate, exist_ok=True)
+                with open(os.path.join(args.annotate, f"function-{rank}.txt"), "w") as out:
+                    out.write(f"# rank {rank}: {size} bytes at {function:#x}, {count} of {total} samples\n")
+                    for address, text in listing:
+                        if function <= address < function + size:
+                            out.write(f"{ips.get(address, 0):>7} {address:#x} {text}\n")
 
 
 if __name__ == "__main__":
