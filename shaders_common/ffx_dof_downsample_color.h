@@ -491,6 +491,13 @@ FFX_DOF_INLINE FfxFloat32 ffxDofLightRimCocInQuad(FfxFloat32x2 around[16], FfxUI
     return ffxDofLightRimCoc(rim, around[centre].x, around[centre].y);
 }
 
+// Whether a pixel of rim sample `rimSample` (ffxDofRimSample) may be a light's rim, where no pixel around it is dimmer
+// than `threshold` / FFX_DOF_LIGHT_RIM_CONTRAST: ffxDofLightRimCoc's test against that bound.
+FFX_DOF_INLINE FfxBoolean ffxDofMayBeLightRim(FfxFloat32x2 rimSample, FfxFloat32 threshold)
+{
+    return rimSample.y <= -1.0f && rimSample.x > 0.0f && rimSample.x >= threshold;
+}
+
 FFX_DOF_INLINE FfxFloat32x3 ffxDofRgb(FfxFloat32x4 color) { return FfxFloat32x3(color.x, color.y, color.z); }
 
 FFX_DOF_INLINE void ffxDofDownsampleColor(FfxUInt32x2 groupId, FfxUInt32 localIndex)
@@ -569,25 +576,6 @@ FFX_DOF_INLINE void ffxDofDownsampleColor(FfxUInt32x2 groupId, FfxUInt32 localIn
         ffxDofSharedWaveFarSums[ffxDofWaveIndex(localIndex)] = farSums;
     }
     ffxDofGroupBarrier();
-    // The quad's 4 x 4 neighbourhood read once for its four pixels (16 group-shared reads instead of 36: on
-    // lavapipe each is a loop over the lanes).
-    FfxFloat32x2 around[16];
-    FFX_DOF_UNROLL
-    for (FfxUInt32 k = 0u; k < 16u; ++k)
-    {
-        if (k == 5u || k == 6u || k == 9u || k == 10u)
-            continue;
-        around[k] = ffxDofSharedRimSample[(cell.y + k / 4u - 1u) * FFX_DOF_RIM_SIDE + cell.x + k % 4u - 1u];
-    }
-    around[5] = rim0;
-    around[6] = rim1;
-    around[9] = rim2;
-    around[10] = rim3;
-    FfxFloat32 coc0 = ffxDofLightRimCocInQuad(around, 0u);
-    FfxFloat32 coc1 = ffxDofLightRimCocInQuad(around, 1u);
-    FfxFloat32 coc2 = ffxDofLightRimCocInQuad(around, 2u);
-    FfxFloat32 coc3 = ffxDofLightRimCocInQuad(around, 3u);
-
     // Highlights: the light of pixels far brighter than the tile's floor leaves the half-res colour for the
     // composite's full-resolution discs (ffx_dof_highlights.h), one per quadrant of the tile.
     // The floors: of the tile and its border (the waves' minima above), so that every pixel of a light within it
@@ -611,6 +599,40 @@ FFX_DOF_INLINE void ffxDofDownsampleColor(FfxUInt32x2 groupId, FfxUInt32 localIn
     tileMinima = ffxDofWaveMin(tileMinima);
     tileBrightRadiusSum = ffxDofWaveSum(tileBrightRadiusSum);
     tileFarSums = ffxDofWaveSum(tileFarSums);
+
+    // The radii the quad's pixels are downsampled with (light rims). No pixel of the rim grid is dimmer than the
+    // tile's dimmest (tileMinima.y, before the far floor below may change x), so a pixel at most
+    // FFX_DOF_LIGHT_RIM_CONTRAST times as bright as that is no rim whatever its neighbours: a quad without
+    // brighter far pixels keeps its radii and reads none of its 12 neighbours (ffxDofLightRimCocInQuad would
+    // return the same; on lavapipe the reads were a third of the pass, docs/performance.md, "Light rims only where
+    // the tile's contrast allows them").
+    FfxFloat32 rimThreshold = FFX_DOF_LIGHT_RIM_CONTRAST * tileMinima.y;
+    FfxFloat32 coc0 = rim0.y;
+    FfxFloat32 coc1 = rim1.y;
+    FfxFloat32 coc2 = rim2.y;
+    FfxFloat32 coc3 = rim3.y;
+    if (ffxDofMayBeLightRim(rim0, rimThreshold) || ffxDofMayBeLightRim(rim1, rimThreshold) ||
+        ffxDofMayBeLightRim(rim2, rimThreshold) || ffxDofMayBeLightRim(rim3, rimThreshold))
+    {
+        // The quad's 4 x 4 neighbourhood read once for its four pixels (12 group-shared reads instead of 32: on
+        // lavapipe each is a loop over the lanes).
+        FfxFloat32x2 around[16];
+        FFX_DOF_UNROLL
+        for (FfxUInt32 k = 0u; k < 16u; ++k)
+        {
+            if (k == 5u || k == 6u || k == 9u || k == 10u)
+                continue;
+            around[k] = ffxDofSharedRimSample[(cell.y + k / 4u - 1u) * FFX_DOF_RIM_SIDE + cell.x + k % 4u - 1u];
+        }
+        around[5] = rim0;
+        around[6] = rim1;
+        around[9] = rim2;
+        around[10] = rim3;
+        coc0 = ffxDofLightRimCocInQuad(around, 0u);
+        coc1 = ffxDofLightRimCocInQuad(around, 1u);
+        coc2 = ffxDofLightRimCocInQuad(around, 2u);
+        coc3 = ffxDofLightRimCocInQuad(around, 3u);
+    }
     // A bright far field behind nearer far content gives no far light: its far floor is none.
     if (ffxDofBrightFieldBehind(tileFarSums, tileBrightRadiusSum))
         tileMinima.x = FFX_DOF_HIGHLIGHT_NO_FLOOR;
@@ -618,10 +640,10 @@ FFX_DOF_INLINE void ffxDofDownsampleColor(FfxUInt32x2 groupId, FfxUInt32 localIn
         FfxFloat32x3(tileMinima.x, tileMinima.y, ffxDofFarSurround(FfxFloat32x2(tileFarSums.x, tileFarSums.y))));
     FfxFloat32x3 tileFloors = ffxDofUnpackHighlightFloors(packedFloors);
     FfxFloat32x4 shares =
-        FfxFloat32x4(ffxDofHighlightShare(around[5].x, coc0, ffxDofHighlightFloor(tileFloors, coc0), scale),
-                     ffxDofHighlightShare(around[6].x, coc1, ffxDofHighlightFloor(tileFloors, coc1), scale),
-                     ffxDofHighlightShare(around[9].x, coc2, ffxDofHighlightFloor(tileFloors, coc2), scale),
-                     ffxDofHighlightShare(around[10].x, coc3, ffxDofHighlightFloor(tileFloors, coc3), scale));
+        FfxFloat32x4(ffxDofHighlightShare(rim0.x, coc0, ffxDofHighlightFloor(tileFloors, coc0), scale),
+                     ffxDofHighlightShare(rim1.x, coc1, ffxDofHighlightFloor(tileFloors, coc1), scale),
+                     ffxDofHighlightShare(rim2.x, coc2, ffxDofHighlightFloor(tileFloors, coc2), scale),
+                     ffxDofHighlightShare(rim3.x, coc3, ffxDofHighlightFloor(tileFloors, coc3), scale));
     if (ffxDofQuadCutByEdge(quad, constants.fullSize))
         shares = FfxFloat32x4(0.0f, 0.0f, 0.0f, 0.0f);
     FfxDofHighlightSums highlightSums =

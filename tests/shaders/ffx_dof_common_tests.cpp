@@ -345,6 +345,49 @@ TEST_CASE("Light rims: every other pixel keeps its own radius", "[downsample]") 
     CHECK(lightRimCoc(0.0f, -14.0f, blackBeside) == -14.0f);
 }
 
+TEST_CASE("Light rims: a pixel the tile's dimmest pixel rules out keeps its radius whatever its neighbours",
+          "[downsample]") {
+    // Pass 2 reads no neighbour for a quad none of whose pixels ffxDofMayBeLightRim admits against the dimmest
+    // pixel of the whole rim grid. Sound only if the full test never gives such a pixel another radius: random
+    // neighbourhoods of lights, rims and dim surfaces at mixed depths.
+    std::mt19937 random(29);
+    std::uniform_real_distribution<float> unit(0.0f, 1.0f);
+    auto luminanceOf = [&]() {
+        const float kind = unit(random);
+        return kind < 0.1f ? 0.0f : kind < 0.3f ? 1000.0f * unit(random) : 2.0f * unit(random);
+    };
+    auto cocOf = [&]() { return unit(random) < 0.2f ? 6.0f * unit(random) - 3.0f : -20.0f * unit(random); };
+    int ruledOut = 0;
+    int admitted = 0;
+    int rimsAmongAdmitted = 0;
+    for (int trial = 0; trial < 20000; ++trial) {
+        const float luminance = luminanceOf();
+        const float coc = cocOf();
+        std::vector<std::pair<float, float>> neighbours(8);
+        float dimmest = luminance;  // over the pixel and its neighbours: no more than the grid's
+        for (auto& [neighbourLuminance, neighbourCoc] : neighbours) {
+            neighbourLuminance = luminanceOf();
+            neighbourCoc = unit(random) < 0.5f ? coc + 2.0f * unit(random) - 1.0f : cocOf();
+            dimmest = std::min(dimmest, neighbourLuminance);
+        }
+        // The grid's dimmest pixel may lie outside the 3 x 3: anywhere from 0 to the neighbourhood's dimmest.
+        const float gridDimmest = dimmest * (trial % 3 == 0 ? 1.0f : unit(random));
+        const float rimCoc = lightRimCoc(luminance, coc, neighbours);
+        if (!ffxDofMayBeLightRim(FfxFloat32x2(luminance, coc), FFX_DOF_LIGHT_RIM_CONTRAST * gridDimmest)) {
+            ++ruledOut;
+            INFO("luminance " << luminance << ", radius " << coc << ", grid's dimmest " << gridDimmest);
+            CHECK(rimCoc == coc);
+        } else {
+            ++admitted;
+            rimsAmongAdmitted += rimCoc != coc;
+        }
+    }
+    // Both sides were exercised, and the bound is not so loose that it admits nothing but rims.
+    CHECK(ruledOut > 2000);
+    CHECK(rimsAmongAdmitted > 100);
+    CHECK(rimsAmongAdmitted < admitted);
+}
+
 TEST_CASE("Light rims: the border ring of the rim grid names each border cell once", "[downsample]") {
     const uint32_t side = FFX_DOF_RIM_SIDE;
     std::set<std::pair<uint32_t, uint32_t>> cells;
