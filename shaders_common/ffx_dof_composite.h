@@ -193,8 +193,18 @@ FFX_DOF_GROUPSHARED FfxUInt32x2 ffxDofSharedRawFar[FFX_DOF_RAW_SIDE * FFX_DOF_RA
 // Per raw texel what the post-filter reads of each of its neighbours, in one read: the luminance of its
 // near and far colour, its near opacity and far validity.
 FFX_DOF_GROUPSHARED FfxFloat32x4 ffxDofSharedRawSummary[FFX_DOF_RAW_SIDE * FFX_DOF_RAW_SIDE];
-FFX_DOF_GROUPSHARED FfxDofFloat3 ffxDofSharedNear[FFX_DOF_FILTERED_SIDE * FFX_DOF_FILTERED_SIDE];
-FFX_DOF_GROUPSHARED FfxDofFloat3 ffxDofSharedFar[FFX_DOF_FILTERED_SIDE * FFX_DOF_FILTERED_SIDE];
+// The post-filtered near and far colours, which each quad's upsample reads for 9 texels: in the 16-bit permutations as
+// halves in two words (ffxDofPackFilteredColor, exact there: the colours are halves already), so that a read moves two
+// components instead of three. On lavapipe a group-shared read is a loop over the lanes that moves one component at
+// a time: the composite took 0.89 to 0.98 times as long at 1080p (docs/performance.md, "Filtered colours in two
+// words"). The 32-bit permutations keep the colours' full precision.
+#if FFX_HALF
+#define FfxDofFilteredColor FfxUInt32x2
+#else
+#define FfxDofFilteredColor FfxDofFloat3
+#endif
+FFX_DOF_GROUPSHARED FfxDofFilteredColor ffxDofSharedNear[FFX_DOF_FILTERED_SIDE * FFX_DOF_FILTERED_SIDE];
+FFX_DOF_GROUPSHARED FfxDofFilteredColor ffxDofSharedFar[FFX_DOF_FILTERED_SIDE * FFX_DOF_FILTERED_SIDE];
 FFX_DOF_GROUPSHARED FfxFloat32x2 ffxDofSharedAlpha[FFX_DOF_FILTERED_SIDE * FFX_DOF_FILTERED_SIDE];
 FFX_DOF_GROUPSHARED FfxFloat32 ffxDofSharedCoc[FFX_DOF_FILTERED_SIDE * FFX_DOF_FILTERED_SIDE];
 // Per tile of the 9 around the group's (ffxDofTileAround): its highlights' floors (ffxDofLoadGivenHighlightFloors:
@@ -376,6 +386,14 @@ FFX_DOF_INLINE FfxDofFloat3 ffxDofUnpackRawColor(FfxUInt32x2 packed)
     return FfxDofFloat3(FfxDofFloat(redGreen.x), FfxDofFloat(redGreen.y), FfxDofFloat(ffxDofUnpackHalf2(packed.y).x));
 }
 
+#if FFX_HALF
+FFX_DOF_INLINE FfxUInt32x2 ffxDofPackFilteredColor(FfxDofFloat3 color) { return ffxDofPackRawColor(color); }
+FFX_DOF_INLINE FfxDofFloat3 ffxDofUnpackFilteredColor(FfxUInt32x2 packed) { return ffxDofUnpackRawColor(packed); }
+#else
+FFX_DOF_INLINE FfxDofFloat3 ffxDofPackFilteredColor(FfxDofFloat3 color) { return color; }
+FFX_DOF_INLINE FfxDofFloat3 ffxDofUnpackFilteredColor(FfxDofFloat3 packed) { return packed; }
+#endif
+
 // Post-filter of filtered texel `index` (raw texel (x + 1, y + 1)).
 FFX_DOF_INLINE void ffxDofPostFilterTexel(FfxUInt32 index)
 {
@@ -428,8 +446,8 @@ FFX_DOF_INLINE void ffxDofPostFilterTexel(FfxUInt32 index)
     FfxDofFloat3 farColor = ffxDofUnpackRawColor(ffxDofSharedRawFar[center]);
     if (centerAlpha.y > 0.0f)
         farColor = farColor * FfxDofFloat(ffxDofOutlierGain(farCenterLuminance, farRange.x, farRange.y));
-    ffxDofSharedNear[index] = nearColor;
-    ffxDofSharedFar[index] = farColor;
+    ffxDofSharedNear[index] = ffxDofPackFilteredColor(nearColor);
+    ffxDofSharedFar[index] = ffxDofPackFilteredColor(farColor);
     ffxDofSharedAlpha[index] = FfxFloat32x2(opacitySum * (1.0f / 9.0f), centerAlpha.y);
 }
 
@@ -1243,8 +1261,8 @@ FFX_DOF_INLINE void ffxDofCompositeTile(FfxUInt32 listedTile, FfxUInt32 localInd
     {
         FfxUInt32 index = blockIndex + (b / 3u) * FfxUInt32(FFX_DOF_FILTERED_SIDE) + b % 3u;
         blockAlpha[b] = ffxDofSharedAlpha[index];
-        blockNear[b] = ffxDofSharedNear[index];
-        blockFar[b] = ffxDofSharedFar[index];
+        blockNear[b] = ffxDofUnpackFilteredColor(ffxDofSharedNear[index]);
+        blockFar[b] = ffxDofUnpackFilteredColor(ffxDofSharedFar[index]);
         blockCoc[b] = ffxDofSharedCoc[index];
     }
     // The quad's radii, and the own-surface gathers of those of its pixels that take one, in one walk.

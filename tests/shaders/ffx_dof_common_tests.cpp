@@ -1896,7 +1896,8 @@ void postFilterNearTexels(const std::function<float(int, int)>& opacity, const s
         }
     for (uint32_t index = 0; index < uint32_t(FFX_DOF_FILTERED_SIDE * FFX_DOF_FILTERED_SIDE); ++index) {
         ffxDofPostFilterTexel(index);
-        *filteredLight += double(ffxDofSharedAlpha[index].x) * double(ffxDofSharedNear[index].y);
+        *filteredLight +=
+            double(ffxDofSharedAlpha[index].x) * double(ffxDofUnpackFilteredColor(ffxDofSharedNear[index]).y);
     }
 }
 }  // namespace
@@ -1920,7 +1921,8 @@ TEST_CASE("The near post-filter keeps a small disc's light and a near surface's 
     for (int y = 0; y < FFX_DOF_FILTERED_SIDE; ++y)
         for (int x = 0; x < FFX_DOF_FILTERED_SIDE; ++x) {
             INFO("filtered texel (" << x << ", " << y << ")");
-            const glm::vec3 kept = glm::vec3(ffxDofSharedNear[size_t(y) * FFX_DOF_FILTERED_SIDE + size_t(x)]);
+            const glm::vec3 kept =
+                glm::vec3(ffxDofUnpackFilteredColor(ffxDofSharedNear[size_t(y) * FFX_DOF_FILTERED_SIDE + size_t(x)]));
             CHECK(kept.y == Approx(ffxDofUnpackRawColor(ffxDofPackRawColor(FfxDofFloat3(textured(x + 1, y + 1)))).y));
         }
 }
