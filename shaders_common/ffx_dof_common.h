@@ -419,6 +419,18 @@ FFX_DOF_INLINE FfxFloat32x4 ffxDofScaleColor(FfxFloat32x4 color, FfxFloat32 scal
 
 // ---- Workgroup and tile arithmetic --------------------------------------------------------------
 
+// Cell `index` (0 to 4 (side - 1) - 1) of the border ring of a square grid of `side` cells: the top row, the bottom
+// row, then the sides.
+FFX_DOF_INLINE FfxUInt32x2 ffxDofBorderCell(FfxUInt32 index, FfxUInt32 side)
+{
+    if (index < side)
+        return FfxUInt32x2(index, 0u);
+    if (index < 2u * side)
+        return FfxUInt32x2(index - side, side - 1u);
+    FfxUInt32 row = index - 2u * side;
+    return FfxUInt32x2(row < side - 2u ? 0u : side - 1u, 1u + row % (side - 2u));
+}
+
 // Position of an invocation in its 8 x 8 workgroup.
 FFX_DOF_INLINE FfxUInt32x2 ffxDofLocalCoord(FfxUInt32 localIndex)
 {

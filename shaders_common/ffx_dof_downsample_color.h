@@ -462,18 +462,6 @@ FFX_DOF_INLINE FfxFloat32 ffxDofFarLuminance(FfxFloat32x2 rimSample)
     return rimSample.y <= -FFX_DOF_IN_FOCUS_RADIUS ? rimSample.x : FFX_DOF_FLOAT32_MAX;
 }
 
-// Cell `index` of the border ring of the rim grid: the top row, the bottom row, then the sides.
-FFX_DOF_INLINE FfxUInt32x2 ffxDofRimBorderCell(FfxUInt32 index)
-{
-    FfxUInt32 side = FfxUInt32(FFX_DOF_RIM_SIDE);
-    if (index < side)
-        return FfxUInt32x2(index, 0u);
-    if (index < 2u * side)
-        return FfxUInt32x2(index - side, side - 1u);
-    FfxUInt32 row = index - 2u * side;
-    return FfxUInt32x2(row < side - 2u ? 0u : side - 1u, 1u + row % (side - 2u));
-}
-
 // The radius pixel `inQuad` (0: top-left .. 3: bottom-right) of a quad is downsampled with, from the quad's 4 x 4
 // neighbourhood of (luminance, radius), row by row from its top-left neighbour.
 FFX_DOF_INLINE FfxFloat32 ffxDofLightRimCocInQuad(FfxFloat32x2 around[16], FfxUInt32 inQuad)
@@ -553,7 +541,7 @@ FFX_DOF_INLINE void ffxDofDownsampleColor(FfxUInt32x2 groupId, FfxUInt32 localIn
     FFX_DOF_LOOP
     for (FfxUInt32 border = localIndex; border < 4u * (FFX_DOF_RIM_SIDE - 1u); border += FFX_DOF_GROUP_THREADS)
     {
-        FfxUInt32x2 borderCell = ffxDofRimBorderCell(border);
+        FfxUInt32x2 borderCell = ffxDofBorderCell(border, FfxUInt32(FFX_DOF_RIM_SIDE));
         FfxUInt32x2 pixel =
             FfxUInt32x2(clamp(origin + FfxInt32x2(borderCell), FfxInt32x2(0, 0), FfxInt32x2(lastPixel)));
         FfxFloat32 borderingUnclamped = ffxDofUnclampedCoc(ffxDofLoadInputDepth(pixel), constants);

@@ -388,18 +388,20 @@ TEST_CASE("Light rims: a pixel the tile's dimmest pixel rules out keeps its radi
     CHECK(rimsAmongAdmitted < admitted);
 }
 
-TEST_CASE("Light rims: the border ring of the rim grid names each border cell once", "[downsample]") {
-    const uint32_t side = FFX_DOF_RIM_SIDE;
-    std::set<std::pair<uint32_t, uint32_t>> cells;
-    for (uint32_t index = 0; index < 4 * (side - 1); ++index) {
-        const FfxUInt32x2 cell = ffxDofRimBorderCell(index);
-        INFO("index " << index << ": (" << cell.x << ", " << cell.y << ")");
-        CHECK((cell.x == 0 || cell.x == side - 1 || cell.y == 0 || cell.y == side - 1));
-        CHECK(cell.x < side);
-        CHECK(cell.y < side);
-        cells.insert({cell.x, cell.y});
+TEST_CASE("The border ring of a grid names each border cell once (the rim grid, the composite's filtered texels)",
+          "[downsample][composite]") {
+    for (const uint32_t side : {uint32_t(FFX_DOF_RIM_SIDE), uint32_t(FFX_DOF_FILTERED_SIDE), 3u}) {
+        std::set<std::pair<uint32_t, uint32_t>> cells;
+        for (uint32_t index = 0; index < 4 * (side - 1); ++index) {
+            const FfxUInt32x2 cell = ffxDofBorderCell(index, side);
+            INFO("side " << side << ", index " << index << ": (" << cell.x << ", " << cell.y << ")");
+            CHECK((cell.x == 0 || cell.x == side - 1 || cell.y == 0 || cell.y == side - 1));
+            CHECK(cell.x < side);
+            CHECK(cell.y < side);
+            cells.insert({cell.x, cell.y});
+        }
+        CHECK(cells.size() == size_t(4 * (side - 1)));
     }
-    CHECK(cells.size() == size_t(4 * (side - 1)));
 }
 
 TEST_CASE("Bilateral reduce keeps the energy of a small far light in front of a farther background", "[downsample]") {
