@@ -334,11 +334,17 @@ FFX_DOF_INLINE FfxDofLightRim ffxDofLightRimAdd(FfxDofLightRim rim, FfxFloat32 l
     return rim;
 }
 
+// Whether a far pixel of `luminance` is the rim of a light, the dimmest pixel of its own surface around it (itself
+// included) `dimmest`; with a lower bound of that for `dimmest`, whether it may be one.
+FFX_DOF_INLINE FfxBoolean ffxDofIsLightRim(FfxFloat32 luminance, FfxFloat32 coc, FfxFloat32 dimmest)
+{
+    return coc <= -1.0f && luminance > 0.0f && luminance >= FFX_DOF_LIGHT_RIM_CONTRAST * dimmest;
+}
+
 // The radius the pixel is downsampled with: a light's rim takes the light's.
 FFX_DOF_INLINE FfxFloat32 ffxDofLightRimCoc(FfxDofLightRim rim, FfxFloat32 luminance, FfxFloat32 coc)
 {
-    FfxBoolean rimOfLight = coc <= -1.0f && luminance > 0.0f && luminance >= FFX_DOF_LIGHT_RIM_CONTRAST * rim.dimmest;
-    return rimOfLight ? rim.nearest : coc;
+    return ffxDofIsLightRim(luminance, coc, rim.dimmest) ? rim.nearest : coc;
 }
 
 // ---- HDR range --------------------------------------------------------------------------------------
@@ -479,13 +485,6 @@ FFX_DOF_INLINE FfxFloat32 ffxDofLightRimCocInQuad(FfxFloat32x2 around[16], FfxUI
     return ffxDofLightRimCoc(rim, around[centre].x, around[centre].y);
 }
 
-// Whether a pixel of rim sample `rimSample` (ffxDofRimSample) may be a light's rim, where no pixel around it is dimmer
-// than `threshold` / FFX_DOF_LIGHT_RIM_CONTRAST: ffxDofLightRimCoc's test against that bound.
-FFX_DOF_INLINE FfxBoolean ffxDofMayBeLightRim(FfxFloat32x2 rimSample, FfxFloat32 threshold)
-{
-    return rimSample.y <= -1.0f && rimSample.x > 0.0f && rimSample.x >= threshold;
-}
-
 FFX_DOF_INLINE FfxFloat32x3 ffxDofRgb(FfxFloat32x4 color) { return FfxFloat32x3(color.x, color.y, color.z); }
 
 FFX_DOF_INLINE void ffxDofDownsampleColor(FfxUInt32x2 groupId, FfxUInt32 localIndex)
@@ -589,18 +588,16 @@ FFX_DOF_INLINE void ffxDofDownsampleColor(FfxUInt32x2 groupId, FfxUInt32 localIn
     tileFarSums = ffxDofWaveSum(tileFarSums);
 
     // The radii the quad's pixels are downsampled with (light rims). No pixel of the rim grid is dimmer than the
-    // tile's dimmest (tileMinima.y, before the far floor below may change x), so a pixel at most
-    // FFX_DOF_LIGHT_RIM_CONTRAST times as bright as that is no rim whatever its neighbours: a quad without
-    // brighter far pixels keeps its radii and reads none of its 12 neighbours (ffxDofLightRimCocInQuad would
-    // return the same; on lavapipe the reads were a third of the pass, docs/performance.md, "Light rims only where
-    // the tile's contrast allows them").
-    FfxFloat32 rimThreshold = FFX_DOF_LIGHT_RIM_CONTRAST * tileMinima.y;
+    // tile's dimmest (tileMinima.y, before the far floor below may change x), so a pixel that is no rim against that
+    // is none whatever its neighbours: a quad without such far pixels keeps its radii and reads none of its 12
+    // neighbours (ffxDofLightRimCocInQuad would return the same; on lavapipe the reads were a third of the pass,
+    // docs/performance.md, "Light rims only where the tile's contrast allows them").
     FfxFloat32 coc0 = rim0.y;
     FfxFloat32 coc1 = rim1.y;
     FfxFloat32 coc2 = rim2.y;
     FfxFloat32 coc3 = rim3.y;
-    if (ffxDofMayBeLightRim(rim0, rimThreshold) || ffxDofMayBeLightRim(rim1, rimThreshold) ||
-        ffxDofMayBeLightRim(rim2, rimThreshold) || ffxDofMayBeLightRim(rim3, rimThreshold))
+    if (ffxDofIsLightRim(rim0.x, rim0.y, tileMinima.y) || ffxDofIsLightRim(rim1.x, rim1.y, tileMinima.y) ||
+        ffxDofIsLightRim(rim2.x, rim2.y, tileMinima.y) || ffxDofIsLightRim(rim3.x, rim3.y, tileMinima.y))
     {
         // The quad's 4 x 4 neighbourhood read once for its four pixels (12 group-shared reads instead of 32: on
         // lavapipe each is a loop over the lanes).

@@ -347,7 +347,7 @@ TEST_CASE("Light rims: every other pixel keeps its own radius", "[downsample]") 
 
 TEST_CASE("Light rims: a pixel the tile's dimmest pixel rules out keeps its radius whatever its neighbours",
           "[downsample]") {
-    // Pass 2 reads no neighbour for a quad none of whose pixels ffxDofMayBeLightRim admits against the dimmest
+    // Pass 2 reads no neighbour for a quad none of whose pixels ffxDofIsLightRim admits against the dimmest
     // pixel of the whole rim grid. Sound only if the full test never gives such a pixel another radius: random
     // neighbourhoods of lights, rims and dim surfaces at mixed depths.
     std::mt19937 random(29);
@@ -373,7 +373,7 @@ TEST_CASE("Light rims: a pixel the tile's dimmest pixel rules out keeps its radi
         // The grid's dimmest pixel may lie outside the 3 x 3: anywhere from 0 to the neighbourhood's dimmest.
         const float gridDimmest = dimmest * (trial % 3 == 0 ? 1.0f : unit(random));
         const float rimCoc = lightRimCoc(luminance, coc, neighbours);
-        if (!ffxDofMayBeLightRim(FfxFloat32x2(luminance, coc), FFX_DOF_LIGHT_RIM_CONTRAST * gridDimmest)) {
+        if (!ffxDofIsLightRim(luminance, coc, gridDimmest)) {
             ++ruledOut;
             INFO("luminance " << luminance << ", radius " << coc << ", grid's dimmest " << gridDimmest);
             CHECK(rimCoc == coc);
