@@ -196,20 +196,16 @@ FFX_DOF_GROUPSHARED FfxUInt32x2 ffxDofSharedRawFar[FFX_DOF_RAW_SIDE * FFX_DOF_RA
 // Per raw texel what the post-filter reads of each of its neighbours, in one read: the luminance of its
 // near and far colour, its near opacity and far validity.
 FFX_DOF_GROUPSHARED FfxFloat32x4 ffxDofSharedRawSummary[FFX_DOF_RAW_SIDE * FFX_DOF_RAW_SIDE];
-// The post-filtered near and far colours, which each quad's upsample reads for 9 texels: in the 16-bit permutations as
-// halves in two words (ffxDofPackFilteredColor, exact there: the colours are halves already), so that a read moves two
-// components instead of three. On lavapipe a group-shared read is a loop over the lanes that moves one component at
-// a time: the composite took 0.89 to 0.98 times as long at 1080p (docs/performance.md, "Filtered colours in two
-// words"). The 32-bit permutations keep the colours' full precision.
-#if FFX_HALF
-#define FfxDofFilteredColor FfxUInt32x2
-#else
-#define FfxDofFilteredColor FfxDofFloat3
-#endif
-FFX_DOF_GROUPSHARED FfxDofFilteredColor ffxDofSharedNear[FFX_DOF_FILTERED_SIDE * FFX_DOF_FILTERED_SIDE];
-FFX_DOF_GROUPSHARED FfxDofFilteredColor ffxDofSharedFar[FFX_DOF_FILTERED_SIDE * FFX_DOF_FILTERED_SIDE];
-FFX_DOF_GROUPSHARED FfxFloat32x2 ffxDofSharedAlpha[FFX_DOF_FILTERED_SIDE * FFX_DOF_FILTERED_SIDE];
-FFX_DOF_GROUPSHARED FfxFloat32 ffxDofSharedCoc[FFX_DOF_FILTERED_SIDE * FFX_DOF_FILTERED_SIDE];
+// The post-filtered texels, which each quad's upsample reads for 8 texels (ffxDofStoreFilteredTexel): the near colour
+// with the far validity, the far colour with the radius, each as four halves in two words, and the near opacity. On
+// lavapipe a group-shared read is a loop over the lanes that moves one 32-bit component at a time: five components a
+// texel instead of nine (32-bit) or seven (16-bit; docs/performance.md, "Filtered texels in five words"). Validity (0
+// or 1) and radius (from HALF_COC) are exact as halves, and so are the 16-bit permutations' colours; the 32-bit ones
+// round theirs to 11 significant bits, as a half-float layer image between two passes would, far below the 6 and 5
+// bits of the B10G11R11 layers they are filtered from.
+FFX_DOF_GROUPSHARED FfxUInt32x2 ffxDofSharedNear[FFX_DOF_FILTERED_SIDE * FFX_DOF_FILTERED_SIDE];
+FFX_DOF_GROUPSHARED FfxUInt32x2 ffxDofSharedFar[FFX_DOF_FILTERED_SIDE * FFX_DOF_FILTERED_SIDE];
+FFX_DOF_GROUPSHARED FfxFloat32 ffxDofSharedOpacity[FFX_DOF_FILTERED_SIDE * FFX_DOF_FILTERED_SIDE];
 // Per tile of the 9 around the group's (ffxDofTileAround): its highlights' floors (ffxDofLoadGivenHighlightFloors:
 // ffxDofNoHighlightFloors for a tile whose pixels gave no light).
 FFX_DOF_GROUPSHARED FfxUInt32 ffxDofSharedTilesAround[9];
@@ -389,13 +385,14 @@ FFX_DOF_INLINE FfxDofFloat3 ffxDofUnpackRawColor(FfxUInt32x2 packed)
     return FfxDofFloat3(FfxDofFloat(redGreen.x), FfxDofFloat(redGreen.y), FfxDofFloat(ffxDofUnpackHalf2(packed.y).x));
 }
 
-#if FFX_HALF
-FFX_DOF_INLINE FfxUInt32x2 ffxDofPackFilteredColor(FfxDofFloat3 color) { return ffxDofPackRawColor(color); }
-FFX_DOF_INLINE FfxDofFloat3 ffxDofUnpackFilteredColor(FfxUInt32x2 packed) { return ffxDofUnpackRawColor(packed); }
-#else
-FFX_DOF_INLINE FfxDofFloat3 ffxDofPackFilteredColor(FfxDofFloat3 color) { return color; }
-FFX_DOF_INLINE FfxDofFloat3 ffxDofUnpackFilteredColor(FfxDofFloat3 packed) { return packed; }
-#endif
+// A colour and one more value as four halves in two words (ffxDofStoreFilteredTexel).
+FFX_DOF_INLINE FfxUInt32x2 ffxDofPackColorAnd(FfxDofFloat3 color, FfxFloat32 extra)
+{
+    return FfxUInt32x2(ffxDofPackHalf2(FfxFloat32x2(FfxFloat32(color.x), FfxFloat32(color.y))),
+                       ffxDofPackHalf2(FfxFloat32x2(FfxFloat32(color.z), extra)));
+}
+FFX_DOF_INLINE FfxDofFloat3 ffxDofUnpackColorOf(FfxUInt32x2 packed) { return ffxDofUnpackRawColor(packed); }
+FFX_DOF_INLINE FfxFloat32 ffxDofUnpackExtraOf(FfxUInt32x2 packed) { return ffxDofUnpackHalf2(packed.y).y; }
 
 // What the upsample reads of a filtered texel.
 struct FfxDofFilteredTexel
@@ -406,7 +403,7 @@ struct FfxDofFilteredTexel
     FfxFloat32 coc;
 };
 
-// Post-filter of filtered texel `index` (raw texel (x + 1, y + 1)), stored for the group's upsamples and returned.
+// Post-filter of filtered texel `index` (raw texel (x + 1, y + 1)), its radius left 0 (ffxDofFilterTexel).
 FFX_DOF_INLINE FfxDofFilteredTexel ffxDofPostFilterTexel(FfxUInt32 index)
 {
     FfxUInt32 x = index % FfxUInt32(FFX_DOF_FILTERED_SIDE);
@@ -468,14 +465,38 @@ FFX_DOF_INLINE FfxDofFilteredTexel ffxDofPostFilterTexel(FfxUInt32 index)
     filtered.farColor = farColor;
     filtered.alpha = FfxFloat32x2(opacitySum * (1.0f / 9.0f), centerAlpha.y);
     filtered.coc = 0.0f;
-    ffxDofSharedNear[index] = ffxDofPackFilteredColor(nearColor);
-    ffxDofSharedFar[index] = ffxDofPackFilteredColor(farColor);
-    ffxDofSharedAlpha[index] = filtered.alpha;
+    return filtered;
+}
+
+// Filtered texel `index` as the group's upsamples read it (ffxDofStoreFilteredTexel).
+FFX_DOF_INLINE FfxDofFilteredTexel ffxDofLoadFilteredTexel(FfxUInt32 index)
+{
+    FfxUInt32x2 near = ffxDofSharedNear[index];
+    FfxUInt32x2 far = ffxDofSharedFar[index];
+    FfxDofFilteredTexel filtered;
+    filtered.nearColor = ffxDofUnpackColorOf(near);
+    filtered.farColor = ffxDofUnpackColorOf(far);
+    filtered.alpha = FfxFloat32x2(ffxDofSharedOpacity[index], ffxDofUnpackExtraOf(near));
+    filtered.coc = ffxDofUnpackExtraOf(far);
+    return filtered;
+}
+
+// Stores filtered texel `index` for the group's upsamples and returns it as they read it (ffxDofLoadFilteredTexel),
+// so that the invocation that filtered it upsamples from the same values.
+FFX_DOF_INLINE FfxDofFilteredTexel ffxDofStoreFilteredTexel(FfxUInt32 index, FfxDofFilteredTexel filtered)
+{
+    FfxUInt32x2 near = ffxDofPackColorAnd(filtered.nearColor, filtered.alpha.y);
+    FfxUInt32x2 far = ffxDofPackColorAnd(filtered.farColor, filtered.coc);
+    ffxDofSharedNear[index] = near;
+    ffxDofSharedFar[index] = far;
+    ffxDofSharedOpacity[index] = filtered.alpha.x;
+    filtered.nearColor = ffxDofUnpackColorOf(near);
+    filtered.farColor = ffxDofUnpackColorOf(far);
     return filtered;
 }
 
 // ffxDofPostFilterTexel of filtered texel `index` and its radius (the filtered grid's top-left at half-res texel
-// `filteredOrigin`), both stored for the group's upsamples and returned.
+// `filteredOrigin`), stored for the group's upsamples and returned as they read it (ffxDofStoreFilteredTexel).
 FFX_DOF_INLINE FfxDofFilteredTexel ffxDofFilterTexel(FfxUInt32 index, FfxInt32x2 filteredOrigin, FfxUInt32x2 halfSize)
 {
     FfxDofFilteredTexel filtered = ffxDofPostFilterTexel(index);
@@ -484,8 +505,7 @@ FFX_DOF_INLINE FfxDofFilteredTexel ffxDofFilterTexel(FfxUInt32 index, FfxInt32x2
                                                          FfxInt32(index / FfxUInt32(FFX_DOF_FILTERED_SIDE))),
                              halfSize);
     filtered.coc = ffxDofLoadHalfCoc(texel);
-    ffxDofSharedCoc[index] = filtered.coc;
-    return filtered;
+    return ffxDofStoreFilteredTexel(index, filtered);
 }
 
 // The input color of a full-res pixel within one pixel of the tile that holds `ownPixel` (a pixel
@@ -1306,10 +1326,11 @@ FFX_DOF_INLINE void ffxDofCompositeTile(FfxUInt32 listedTile, FfxUInt32 localInd
             blockCoc[b] = blockCentre.coc;
             continue;
         }
-        blockAlpha[b] = ffxDofSharedAlpha[index];
-        blockNear[b] = ffxDofUnpackFilteredColor(ffxDofSharedNear[index]);
-        blockFar[b] = ffxDofUnpackFilteredColor(ffxDofSharedFar[index]);
-        blockCoc[b] = ffxDofSharedCoc[index];
+        FfxDofFilteredTexel filtered = ffxDofLoadFilteredTexel(index);
+        blockAlpha[b] = filtered.alpha;
+        blockNear[b] = filtered.nearColor;
+        blockFar[b] = filtered.farColor;
+        blockCoc[b] = filtered.coc;
     }
     // The quad's radii, and the own-surface gathers of those of its pixels that take one, in one walk.
     FfxFloat32x4 cocs = FfxFloat32x4(0.0f, 0.0f, 0.0f, 0.0f);

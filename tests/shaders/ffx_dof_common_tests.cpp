@@ -1897,9 +1897,9 @@ void postFilterNearTexels(const std::function<float(int, int)>& opacity, const s
             *rawLight += double(opacity(x, y)) * double(ffxDofUnpackRawColor(ffxDofSharedRawNear[index]).y);
         }
     for (uint32_t index = 0; index < uint32_t(FFX_DOF_FILTERED_SIDE * FFX_DOF_FILTERED_SIDE); ++index) {
-        ffxDofPostFilterTexel(index);
-        *filteredLight +=
-            double(ffxDofSharedAlpha[index].x) * double(ffxDofUnpackFilteredColor(ffxDofSharedNear[index]).y);
+        ffxDofStoreFilteredTexel(index, ffxDofPostFilterTexel(index));
+        const FfxDofFilteredTexel filtered = ffxDofLoadFilteredTexel(index);
+        *filteredLight += double(filtered.alpha.x) * double(filtered.nearColor.y);
     }
 }
 }  // namespace
@@ -1924,7 +1924,7 @@ TEST_CASE("The near post-filter keeps a small disc's light and a near surface's 
         for (int x = 0; x < FFX_DOF_FILTERED_SIDE; ++x) {
             INFO("filtered texel (" << x << ", " << y << ")");
             const glm::vec3 kept =
-                glm::vec3(ffxDofUnpackFilteredColor(ffxDofSharedNear[size_t(y) * FFX_DOF_FILTERED_SIDE + size_t(x)]));
+                glm::vec3(ffxDofLoadFilteredTexel(uint32_t(y) * FFX_DOF_FILTERED_SIDE + uint32_t(x)).nearColor);
             CHECK(kept.y == Approx(ffxDofUnpackRawColor(ffxDofPackRawColor(FfxDofFloat3(textured(x + 1, y + 1)))).y));
         }
 }
