@@ -193,9 +193,9 @@ FFX_DOF_INLINE FfxFloat32 ffxDofFarBlend(FfxFloat32 absCoc, FfxFloat32 farValidi
 // under the 16 KiB that every Vulkan device has, with the summaries below.
 FFX_DOF_GROUPSHARED FfxUInt32x2 ffxDofSharedRawNear[FFX_DOF_RAW_SIDE * FFX_DOF_RAW_SIDE];
 FFX_DOF_GROUPSHARED FfxUInt32x2 ffxDofSharedRawFar[FFX_DOF_RAW_SIDE * FFX_DOF_RAW_SIDE];
-// Per raw texel what the post-filter reads of each of its neighbours, in one read: the luminance of its
-// near and far colour, its near opacity and far validity.
-FFX_DOF_GROUPSHARED FfxFloat32x4 ffxDofSharedRawSummary[FFX_DOF_RAW_SIDE * FFX_DOF_RAW_SIDE];
+// Per raw texel what the post-filter reads of each of its neighbours, in one read of two words
+// (ffxDofPackRawSummary): the luminance of its near and far colour, its near opacity and far validity.
+FFX_DOF_GROUPSHARED FfxUInt32x2 ffxDofSharedRawSummary[FFX_DOF_RAW_SIDE * FFX_DOF_RAW_SIDE];
 // The post-filtered texels, which each quad's upsample reads for 8 texels (ffxDofStoreFilteredTexel): the near colour
 // with the far validity, the far colour with the radius, each as four halves in two words, and the near opacity. On
 // lavapipe a group-shared read is a loop over the lanes that moves one 32-bit component at a time: five components a
@@ -385,6 +385,24 @@ FFX_DOF_INLINE FfxDofFloat3 ffxDofUnpackRawColor(FfxUInt32x2 packed)
     return FfxDofFloat3(FfxDofFloat(redGreen.x), FfxDofFloat(redGreen.y), FfxDofFloat(ffxDofUnpackHalf2(packed.y).x));
 }
 
+// What the post-filter reads of a raw texel (ffxDofPostFilterTexel) in two words: the luminances of its near and far
+// colours as halves, and its near opacity as a float whose sign bit holds the far validity (0 or 1; the opacity is
+// never negative). Two components a read instead of four (docs/performance.md, "Filtered texels in five words"). The
+// opacities stay exact, as the 3 x 3 mean sums them; a luminance only sets the range that the outlier gain clamps a
+// texel's luminance to (ffxDofOutlierGain), which 11 significant bits move by at most 0.05%.
+FFX_DOF_INLINE FfxUInt32x2 ffxDofPackRawSummary(FfxFloat32 nearLuminance, FfxFloat32 farLuminance, FfxFloat32x2 alpha)
+{
+    return FfxUInt32x2(ffxDofPackHalf2(FfxFloat32x2(nearLuminance, farLuminance)),
+                       ffxDofAsUInt(alpha.x) | (alpha.y > 0.0f ? 0x80000000u : 0u));
+}
+// (near luminance, far luminance, near opacity, far validity) of ffxDofPackRawSummary.
+FFX_DOF_INLINE FfxFloat32x4 ffxDofUnpackRawSummary(FfxUInt32x2 packed)
+{
+    FfxFloat32x2 luminances = ffxDofUnpackHalf2(packed.x);
+    return FfxFloat32x4(luminances.x, luminances.y, ffxDofAsFloat(packed.y & 0x7fffffffu),
+                        (packed.y & 0x80000000u) != 0u ? 1.0f : 0.0f);
+}
+
 // A colour and one more value as four halves in two words (ffxDofStoreFilteredTexel).
 FFX_DOF_INLINE FfxUInt32x2 ffxDofPackColorAnd(FfxDofFloat3 color, FfxFloat32 extra)
 {
@@ -409,7 +427,7 @@ FFX_DOF_INLINE FfxDofFilteredTexel ffxDofPostFilterTexel(FfxUInt32 index)
     FfxUInt32 x = index % FfxUInt32(FFX_DOF_FILTERED_SIDE);
     FfxUInt32 y = index / FfxUInt32(FFX_DOF_FILTERED_SIDE);
     FfxUInt32 center = (y + 1u) * FfxUInt32(FFX_DOF_RAW_SIDE) + x + 1u;
-    FfxFloat32x4 centerSummary = ffxDofSharedRawSummary[center];
+    FfxFloat32x4 centerSummary = ffxDofUnpackRawSummary(ffxDofSharedRawSummary[center]);
     FfxFloat32x2 centerAlpha = FfxFloat32x2(centerSummary.z, centerSummary.w);
     FfxFloat32 nearCenterLuminance = centerSummary.x;
     FfxFloat32 farCenterLuminance = centerSummary.y;
@@ -423,7 +441,7 @@ FFX_DOF_INLINE FfxDofFilteredTexel ffxDofPostFilterTexel(FfxUInt32 index)
     for (FfxUInt32 k = 0u; k < 9u; ++k)
     {
         FfxUInt32 raw = (y + k / 3u) * FfxUInt32(FFX_DOF_RAW_SIDE) + x + k % 3u;
-        FfxFloat32x4 summary = k == 4u ? centerSummary : ffxDofSharedRawSummary[raw];
+        FfxFloat32x4 summary = k == 4u ? centerSummary : ffxDofUnpackRawSummary(ffxDofSharedRawSummary[raw]);
         opacities[k] = summary.z;
         // Texels without a value take the centre's luminance so they do not widen the range; the
         // centre itself is not a neighbour.
@@ -1222,7 +1240,7 @@ FFX_DOF_INLINE void ffxDofCompositeTile(FfxUInt32 listedTile, FfxUInt32 localInd
         ffxDofSharedRawNear[index] = ffxDofPackRawColor(nearColor);
         ffxDofSharedRawFar[index] = ffxDofPackRawColor(farColor);
         ffxDofSharedRawSummary[index] =
-            FfxFloat32x4(ffxDofLuminance(nearColor), ffxDofLuminance(farColor), alpha.x, alpha.y);
+            ffxDofPackRawSummary(ffxDofLuminance(nearColor), ffxDofLuminance(farColor), alpha);
     }
     ffxDofGroupBarrier();
     // The full-res neighbourhood of the own-surface gather, after the barrier above: in place, the

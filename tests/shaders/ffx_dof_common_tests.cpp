@@ -1893,7 +1893,8 @@ void postFilterNearTexels(const std::function<float(int, int)>& opacity, const s
             const size_t index = size_t(y) * FFX_DOF_RAW_SIDE + size_t(x);
             ffxDofSharedRawNear[index] = ffxDofPackRawColor(near);
             ffxDofSharedRawFar[index] = ffxDofPackRawColor(FfxDofFloat3(0.0f));
-            ffxDofSharedRawSummary[index] = glm::vec4(ffxDofLuminance(near), 0.0f, opacity(x, y), 0.0f);
+            ffxDofSharedRawSummary[index] =
+                ffxDofPackRawSummary(ffxDofLuminance(near), 0.0f, glm::vec2(opacity(x, y), 0.0f));
             *rawLight += double(opacity(x, y)) * double(ffxDofUnpackRawColor(ffxDofSharedRawNear[index]).y);
         }
     for (uint32_t index = 0; index < uint32_t(FFX_DOF_FILTERED_SIDE * FFX_DOF_FILTERED_SIDE); ++index) {
