@@ -186,6 +186,9 @@ FFX_DOF_INLINE FfxFloat32 ffxDofFarBlend(FfxFloat32 absCoc, FfxFloat32 farValidi
 #if FFX_DOF_FILTERED_SIDE != FFX_DOF_GROUP_SIDE + 2 || 4 * (FFX_DOF_FILTERED_SIDE - 1) > FFX_DOF_GROUP_THREADS
 #error "the filtered grid must be the group's quads' block centres and a ring of at most a texel an invocation"
 #endif
+#if FFX_DOF_RAW_SIDE != FFX_DOF_FILTERED_SIDE + 2 || 8 * (FFX_DOF_RAW_SIDE - 2) > 2 * FFX_DOF_GROUP_THREADS
+#error "the raw grid must be the block centres' raw texels and two rings of at most two texels an invocation"
+#endif
 
 // The raw near and far colours as 16-bit floats, whatever the permutation's precision: exact, since
 // NEAR_COLOR and FAR_COLOR are B10G11R11 floats (5-bit exponents like a half's, 6 or 5 mantissa bits),
@@ -412,6 +415,55 @@ FFX_DOF_INLINE FfxUInt32x2 ffxDofPackColorAnd(FfxDofFloat3 color, FfxFloat32 ext
 FFX_DOF_INLINE FfxDofFloat3 ffxDofUnpackColorOf(FfxUInt32x2 packed) { return ffxDofUnpackRawColor(packed); }
 FFX_DOF_INLINE FfxFloat32 ffxDofUnpackExtraOf(FfxUInt32x2 packed) { return ffxDofUnpackHalf2(packed.y).y; }
 
+// A raw texel as group-shared memory holds it (ffxDofLoadRawTexel).
+struct FfxDofRawTexel
+{
+    FfxUInt32x2 nearColor;  // ffxDofPackRawColor
+    FfxUInt32x2 farColor;   // ffxDofPackRawColor
+    FfxUInt32x2 summary;    // ffxDofPackRawSummary
+};
+
+// Raw texel `cell` of the group's raw grid (its top-left at half-res texel `rawOrigin`, clamped to the image): loaded
+// from the layers, stored for the post-filter and returned.
+FFX_DOF_INLINE FfxDofRawTexel ffxDofLoadRawTexel(FfxUInt32x2 cell, FfxInt32x2 rawOrigin, FfxUInt32x2 halfSize)
+{
+    FfxInt32x2 texel = ffxDofClampHalfTexel(rawOrigin + FfxInt32x2(cell), halfSize);
+    FfxDofFloat3 nearColor = ffxDofLoadNearColor(texel);
+    FfxDofFloat3 farColor = ffxDofLoadFarColor(texel);
+    FfxDofRawTexel raw;
+    raw.nearColor = ffxDofPackRawColor(nearColor);
+    raw.farColor = ffxDofPackRawColor(farColor);
+    raw.summary =
+        ffxDofPackRawSummary(ffxDofLuminance(nearColor), ffxDofLuminance(farColor), ffxDofLoadLayerAlpha(texel));
+    FfxUInt32 index = cell.y * FfxUInt32(FFX_DOF_RAW_SIDE) + cell.x;
+    ffxDofSharedRawNear[index] = raw.nearColor;
+    ffxDofSharedRawFar[index] = raw.farColor;
+    ffxDofSharedRawSummary[index] = raw.summary;
+    return raw;
+}
+
+// The raw texel a filtered texel `index` is centred on, from group-shared memory.
+FFX_DOF_INLINE FfxDofRawTexel ffxDofRawCentreOf(FfxUInt32 index)
+{
+    FfxUInt32 centre = (index / FfxUInt32(FFX_DOF_FILTERED_SIDE) + 1u) * FfxUInt32(FFX_DOF_RAW_SIDE) +
+                       index % FfxUInt32(FFX_DOF_FILTERED_SIDE) + 1u;
+    FfxDofRawTexel raw;
+    raw.nearColor = ffxDofSharedRawNear[centre];
+    raw.farColor = ffxDofSharedRawFar[centre];
+    raw.summary = ffxDofSharedRawSummary[centre];
+    return raw;
+}
+
+// Cell `index` (0 to 79) of the two rings of the raw grid around its interior of 8 x 8 (ffxDofCompositeTile): the
+// outer ring, then the one inside it.
+FFX_DOF_INLINE FfxUInt32x2 ffxDofRawRingCell(FfxUInt32 index)
+{
+    FfxUInt32 outerCells = 4u * (FfxUInt32(FFX_DOF_RAW_SIDE) - 1u);
+    if (index < outerCells)
+        return ffxDofBorderCell(index, FfxUInt32(FFX_DOF_RAW_SIDE));
+    return ffxDofBorderCell(index - outerCells, FfxUInt32(FFX_DOF_RAW_SIDE) - 2u) + FfxUInt32x2(1u, 1u);
+}
+
 // What the upsample reads of a filtered texel.
 struct FfxDofFilteredTexel
 {
@@ -421,13 +473,13 @@ struct FfxDofFilteredTexel
     FfxFloat32 coc;
 };
 
-// Post-filter of filtered texel `index` (raw texel (x + 1, y + 1)), its radius left 0 (ffxDofFilterTexel).
-FFX_DOF_INLINE FfxDofFilteredTexel ffxDofPostFilterTexel(FfxUInt32 index)
+// Post-filter of filtered texel `index` (raw texel (x + 1, y + 1), `centre`: ffxDofRawCentreOf(index) or the same
+// from registers), its radius left 0 (ffxDofFilterTexel).
+FFX_DOF_INLINE FfxDofFilteredTexel ffxDofPostFilterTexel(FfxUInt32 index, FfxDofRawTexel centre)
 {
     FfxUInt32 x = index % FfxUInt32(FFX_DOF_FILTERED_SIDE);
     FfxUInt32 y = index / FfxUInt32(FFX_DOF_FILTERED_SIDE);
-    FfxUInt32 center = (y + 1u) * FfxUInt32(FFX_DOF_RAW_SIDE) + x + 1u;
-    FfxFloat32x4 centerSummary = ffxDofUnpackRawSummary(ffxDofSharedRawSummary[center]);
+    FfxFloat32x4 centerSummary = ffxDofUnpackRawSummary(centre.summary);
     FfxFloat32x2 centerAlpha = FfxFloat32x2(centerSummary.z, centerSummary.w);
     FfxFloat32 nearCenterLuminance = centerSummary.x;
     FfxFloat32 farCenterLuminance = centerSummary.y;
@@ -451,7 +503,7 @@ FFX_DOF_INLINE FfxDofFilteredTexel ffxDofPostFilterTexel(FfxUInt32 index)
         farRange = FfxFloat32x2(min(farRange.x, farLuminance), max(farRange.y, farLuminance));
         opacitySum += summary.z;
     }
-    FfxDofFloat3 centerNear = ffxDofUnpackRawColor(ffxDofSharedRawNear[center]);
+    FfxDofFloat3 centerNear = ffxDofUnpackRawColor(centre.nearColor);
     FfxDofFloat3 nearColor = centerNear;
     if (centerAlpha.x > 0.0f)
         nearColor = nearColor * FfxDofFloat(ffxDofOutlierGain(nearCenterLuminance, nearRange.x, nearRange.y));
@@ -475,7 +527,7 @@ FFX_DOF_INLINE FfxDofFilteredTexel ffxDofPostFilterTexel(FfxUInt32 index)
         nearColor =
             ffxDofToDofFloat3(ffxDofLerp(ffxDofToFloat32x3(nearColor), premultiplied / opacitySum, borrowedShare));
     }
-    FfxDofFloat3 farColor = ffxDofUnpackRawColor(ffxDofSharedRawFar[center]);
+    FfxDofFloat3 farColor = ffxDofUnpackRawColor(centre.farColor);
     if (centerAlpha.y > 0.0f)
         farColor = farColor * FfxDofFloat(ffxDofOutlierGain(farCenterLuminance, farRange.x, farRange.y));
     FfxDofFilteredTexel filtered;
@@ -515,9 +567,10 @@ FFX_DOF_INLINE FfxDofFilteredTexel ffxDofStoreFilteredTexel(FfxUInt32 index, Ffx
 
 // ffxDofPostFilterTexel of filtered texel `index` and its radius (the filtered grid's top-left at half-res texel
 // `filteredOrigin`), stored for the group's upsamples and returned as they read it (ffxDofStoreFilteredTexel).
-FFX_DOF_INLINE FfxDofFilteredTexel ffxDofFilterTexel(FfxUInt32 index, FfxInt32x2 filteredOrigin, FfxUInt32x2 halfSize)
+FFX_DOF_INLINE FfxDofFilteredTexel ffxDofFilterTexel(FfxUInt32 index, FfxDofRawTexel centre, FfxInt32x2 filteredOrigin,
+                                                     FfxUInt32x2 halfSize)
 {
-    FfxDofFilteredTexel filtered = ffxDofPostFilterTexel(index);
+    FfxDofFilteredTexel filtered = ffxDofPostFilterTexel(index, centre);
     FfxInt32x2 texel =
         ffxDofClampHalfTexel(filteredOrigin + FfxInt32x2(FfxInt32(index % FfxUInt32(FFX_DOF_FILTERED_SIDE)),
                                                          FfxInt32(index / FfxUInt32(FFX_DOF_FILTERED_SIDE))),
@@ -1227,21 +1280,15 @@ FFX_DOF_INLINE void ffxDofCompositeTile(FfxUInt32 listedTile, FfxUInt32 localInd
         ffxDofSharedTilesAround[localIndex] = ffxDofLoadGivenHighlightFloors(around, rangeAndPeak, constants.tileCount);
     }
     FfxInt32x2 tileOrigin = FfxInt32x2(groupId * FfxUInt32(FFX_DOF_TILE_SIZE));
-    for (FfxUInt32 index = localIndex; index < FfxUInt32(FFX_DOF_RAW_SIDE * FFX_DOF_RAW_SIDE);
+    // Each invocation loads the raw texel its quad's block centre is filtered from (the raw grid's interior, one texel
+    // an invocation) and keeps it for that post-filter below, then the two rings around the interior: three
+    // group-shared reads of two words fewer an invocation.
+    FfxInt32x2 rawOrigin = tileOrigin - FfxInt32x2(2, 2);
+    FfxUInt32x2 quadTexel = ffxDofLocalCoord(localIndex);
+    FfxDofRawTexel blockCentreRaw = ffxDofLoadRawTexel(quadTexel + FfxUInt32x2(2u, 2u), rawOrigin, constants.halfSize);
+    for (FfxUInt32 index = localIndex; index < FfxUInt32(FFX_DOF_RAW_SIDE * FFX_DOF_RAW_SIDE - FFX_DOF_GROUP_THREADS);
          index += FfxUInt32(FFX_DOF_GROUP_THREADS))
-    {
-        FfxInt32x2 texel = ffxDofClampHalfTexel(tileOrigin - FfxInt32x2(2, 2) +
-                                                    FfxInt32x2(FfxInt32(index % FfxUInt32(FFX_DOF_RAW_SIDE)),
-                                                               FfxInt32(index / FfxUInt32(FFX_DOF_RAW_SIDE))),
-                                                constants.halfSize);
-        FfxDofFloat3 nearColor = ffxDofLoadNearColor(texel);
-        FfxDofFloat3 farColor = ffxDofLoadFarColor(texel);
-        FfxFloat32x2 alpha = ffxDofLoadLayerAlpha(texel);
-        ffxDofSharedRawNear[index] = ffxDofPackRawColor(nearColor);
-        ffxDofSharedRawFar[index] = ffxDofPackRawColor(farColor);
-        ffxDofSharedRawSummary[index] =
-            ffxDofPackRawSummary(ffxDofLuminance(nearColor), ffxDofLuminance(farColor), alpha);
-    }
+        ffxDofLoadRawTexel(ffxDofRawRingCell(index), rawOrigin, constants.halfSize);
     ffxDofGroupBarrier();
     // The full-res neighbourhood of the own-surface gather, after the barrier above: in place, the
     // input of the group's own tile is read from group-shared memory (ffxDofCompositeInput).
@@ -1293,15 +1340,14 @@ FFX_DOF_INLINE void ffxDofCompositeTile(FfxUInt32 listedTile, FfxUInt32 localInd
     // invocation), which its upsample then takes from registers, then the ring around the interior (the first
     // 4 (FFX_DOF_FILTERED_SIDE - 1) invocations): one group-shared read of 9 fewer per quad.
     FfxInt32x2 filteredOrigin = tileOrigin - FfxInt32x2(1, 1);
-    FfxUInt32x2 quadTexel = ffxDofLocalCoord(localIndex);
     FfxUInt32 blockIndex = quadTexel.y * FfxUInt32(FFX_DOF_FILTERED_SIDE) + quadTexel.x;
-    FfxDofFilteredTexel blockCentre =
-        ffxDofFilterTexel(blockIndex + FfxUInt32(FFX_DOF_FILTERED_SIDE) + 1u, filteredOrigin, constants.halfSize);
+    FfxDofFilteredTexel blockCentre = ffxDofFilterTexel(blockIndex + FfxUInt32(FFX_DOF_FILTERED_SIDE) + 1u,
+                                                        blockCentreRaw, filteredOrigin, constants.halfSize);
     if (localIndex < 4u * (FfxUInt32(FFX_DOF_FILTERED_SIDE) - 1u))
     {
         FfxUInt32x2 ringCell = ffxDofBorderCell(localIndex, FfxUInt32(FFX_DOF_FILTERED_SIDE));
-        ffxDofFilterTexel(ringCell.y * FfxUInt32(FFX_DOF_FILTERED_SIDE) + ringCell.x, filteredOrigin,
-                          constants.halfSize);
+        FfxUInt32 ringIndex = ringCell.y * FfxUInt32(FFX_DOF_FILTERED_SIDE) + ringCell.x;
+        ffxDofFilterTexel(ringIndex, ffxDofRawCentreOf(ringIndex), filteredOrigin, constants.halfSize);
     }
     ffxDofGroupBarrier();
 

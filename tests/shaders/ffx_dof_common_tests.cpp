@@ -404,6 +404,26 @@ TEST_CASE("The border ring of a grid names each border cell once (the rim grid, 
     }
 }
 
+TEST_CASE("The composite's raw grid is its invocations' block centres and two rings, each cell once", "[composite]") {
+    std::set<std::pair<uint32_t, uint32_t>> cells;
+    for (uint32_t local = 0; local < uint32_t(FFX_DOF_GROUP_THREADS); ++local) {
+        const FfxUInt32x2 cell = ffxDofLocalCoord(local) + FfxUInt32x2(2u, 2u);
+        cells.insert({cell.x, cell.y});
+    }
+    const uint32_t ringCells = uint32_t(FFX_DOF_RAW_SIDE * FFX_DOF_RAW_SIDE - FFX_DOF_GROUP_THREADS);
+    for (uint32_t index = 0; index < ringCells; ++index) {
+        const FfxUInt32x2 cell = ffxDofRawRingCell(index);
+        INFO("ring index " << index << ": (" << cell.x << ", " << cell.y << ")");
+        CHECK(cell.x < uint32_t(FFX_DOF_RAW_SIDE));
+        CHECK(cell.y < uint32_t(FFX_DOF_RAW_SIDE));
+        // Outside the interior, which the block centres cover.
+        CHECK((cell.x < 2u || cell.x >= uint32_t(FFX_DOF_RAW_SIDE) - 2u || cell.y < 2u ||
+               cell.y >= uint32_t(FFX_DOF_RAW_SIDE) - 2u));
+        cells.insert({cell.x, cell.y});
+    }
+    CHECK(cells.size() == size_t(FFX_DOF_RAW_SIDE * FFX_DOF_RAW_SIDE));
+}
+
 TEST_CASE("Bilateral reduce keeps the energy of a small far light in front of a farther background", "[downsample]") {
     // A light of radius -10.4 among background pixels of -16 (1, 2 or 3 of the quad's pixels), 1000x
     // brighter: the texel holds the quad's plain average (energy kept) with the light's radius.
@@ -1898,7 +1918,7 @@ void postFilterNearTexels(const std::function<float(int, int)>& opacity, const s
             *rawLight += double(opacity(x, y)) * double(ffxDofUnpackRawColor(ffxDofSharedRawNear[index]).y);
         }
     for (uint32_t index = 0; index < uint32_t(FFX_DOF_FILTERED_SIDE * FFX_DOF_FILTERED_SIDE); ++index) {
-        ffxDofStoreFilteredTexel(index, ffxDofPostFilterTexel(index));
+        ffxDofStoreFilteredTexel(index, ffxDofPostFilterTexel(index, ffxDofRawCentreOf(index)));
         const FfxDofFilteredTexel filtered = ffxDofLoadFilteredTexel(index);
         *filteredLight += double(filtered.alpha.x) * double(filtered.nearColor.y);
     }
