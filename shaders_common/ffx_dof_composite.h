@@ -541,13 +541,13 @@ FFX_DOF_INLINE FfxDofFilteredTexel ffxDofPostFilterTexel(FfxUInt32 index, FfxDof
 // Filtered texel `index` as the group's upsamples read it (ffxDofStoreFilteredTexel).
 FFX_DOF_INLINE FfxDofFilteredTexel ffxDofLoadFilteredTexel(FfxUInt32 index)
 {
-    FfxUInt32x2 near = ffxDofSharedNear[index];
-    FfxUInt32x2 far = ffxDofSharedFar[index];
+    FfxUInt32x2 packedNear = ffxDofSharedNear[index];
+    FfxUInt32x2 packedFar = ffxDofSharedFar[index];
     FfxDofFilteredTexel filtered;
-    filtered.nearColor = ffxDofUnpackColorOf(near);
-    filtered.farColor = ffxDofUnpackColorOf(far);
-    filtered.alpha = FfxFloat32x2(ffxDofSharedOpacity[index], ffxDofUnpackExtraOf(near));
-    filtered.coc = ffxDofUnpackExtraOf(far);
+    filtered.nearColor = ffxDofUnpackColorOf(packedNear);
+    filtered.farColor = ffxDofUnpackColorOf(packedFar);
+    filtered.alpha = FfxFloat32x2(ffxDofSharedOpacity[index], ffxDofUnpackExtraOf(packedNear));
+    filtered.coc = ffxDofUnpackExtraOf(packedFar);
     return filtered;
 }
 
@@ -555,13 +555,13 @@ FFX_DOF_INLINE FfxDofFilteredTexel ffxDofLoadFilteredTexel(FfxUInt32 index)
 // so that the invocation that filtered it upsamples from the same values.
 FFX_DOF_INLINE FfxDofFilteredTexel ffxDofStoreFilteredTexel(FfxUInt32 index, FfxDofFilteredTexel filtered)
 {
-    FfxUInt32x2 near = ffxDofPackColorAnd(filtered.nearColor, filtered.alpha.y);
-    FfxUInt32x2 far = ffxDofPackColorAnd(filtered.farColor, filtered.coc);
-    ffxDofSharedNear[index] = near;
-    ffxDofSharedFar[index] = far;
+    FfxUInt32x2 packedNear = ffxDofPackColorAnd(filtered.nearColor, filtered.alpha.y);
+    FfxUInt32x2 packedFar = ffxDofPackColorAnd(filtered.farColor, filtered.coc);
+    ffxDofSharedNear[index] = packedNear;
+    ffxDofSharedFar[index] = packedFar;
     ffxDofSharedOpacity[index] = filtered.alpha.x;
-    filtered.nearColor = ffxDofUnpackColorOf(near);
-    filtered.farColor = ffxDofUnpackColorOf(far);
+    filtered.nearColor = ffxDofUnpackColorOf(packedNear);
+    filtered.farColor = ffxDofUnpackColorOf(packedFar);
     return filtered;
 }
 
