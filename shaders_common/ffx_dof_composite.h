@@ -377,11 +377,16 @@ FFX_DOF_INLINE FfxFloat32 ffxDofHighlightVisibilityPast(FfxFloat32x2 pixelCentre
     return 1.0f;
 }
 
-FFX_DOF_INLINE FfxUInt32x2 ffxDofPackRawColor(FfxDofFloat3 color)
+// A colour and one more value as four halves in two words (the raw colours' fourth half is 0; the filtered texels',
+// ffxDofStoreFilteredTexel, holds the far validity or the radius).
+FFX_DOF_INLINE FfxUInt32x2 ffxDofPackColorAnd(FfxDofFloat3 color, FfxFloat32 extra)
 {
     return FfxUInt32x2(ffxDofPackHalf2(FfxFloat32x2(FfxFloat32(color.x), FfxFloat32(color.y))),
-                       ffxDofPackHalf2(FfxFloat32x2(FfxFloat32(color.z), 0.0f)));
+                       ffxDofPackHalf2(FfxFloat32x2(FfxFloat32(color.z), extra)));
 }
+FFX_DOF_INLINE FfxFloat32 ffxDofUnpackExtraOf(FfxUInt32x2 packed) { return ffxDofUnpackHalf2(packed.y).y; }
+
+FFX_DOF_INLINE FfxUInt32x2 ffxDofPackRawColor(FfxDofFloat3 color) { return ffxDofPackColorAnd(color, 0.0f); }
 FFX_DOF_INLINE FfxDofFloat3 ffxDofUnpackRawColor(FfxUInt32x2 packed)
 {
     FfxFloat32x2 redGreen = ffxDofUnpackHalf2(packed.x);
@@ -405,15 +410,6 @@ FFX_DOF_INLINE FfxFloat32x4 ffxDofUnpackRawSummary(FfxUInt32x2 packed)
     return FfxFloat32x4(luminances.x, luminances.y, ffxDofAsFloat(packed.y & 0x7fffffffu),
                         (packed.y & 0x80000000u) != 0u ? 1.0f : 0.0f);
 }
-
-// A colour and one more value as four halves in two words (ffxDofStoreFilteredTexel).
-FFX_DOF_INLINE FfxUInt32x2 ffxDofPackColorAnd(FfxDofFloat3 color, FfxFloat32 extra)
-{
-    return FfxUInt32x2(ffxDofPackHalf2(FfxFloat32x2(FfxFloat32(color.x), FfxFloat32(color.y))),
-                       ffxDofPackHalf2(FfxFloat32x2(FfxFloat32(color.z), extra)));
-}
-FFX_DOF_INLINE FfxDofFloat3 ffxDofUnpackColorOf(FfxUInt32x2 packed) { return ffxDofUnpackRawColor(packed); }
-FFX_DOF_INLINE FfxFloat32 ffxDofUnpackExtraOf(FfxUInt32x2 packed) { return ffxDofUnpackHalf2(packed.y).y; }
 
 // A raw texel as group-shared memory holds it (ffxDofLoadRawTexel).
 struct FfxDofRawTexel
@@ -544,8 +540,8 @@ FFX_DOF_INLINE FfxDofFilteredTexel ffxDofLoadFilteredTexel(FfxUInt32 index)
     FfxUInt32x2 packedNear = ffxDofSharedNear[index];
     FfxUInt32x2 packedFar = ffxDofSharedFar[index];
     FfxDofFilteredTexel filtered;
-    filtered.nearColor = ffxDofUnpackColorOf(packedNear);
-    filtered.farColor = ffxDofUnpackColorOf(packedFar);
+    filtered.nearColor = ffxDofUnpackRawColor(packedNear);
+    filtered.farColor = ffxDofUnpackRawColor(packedFar);
     filtered.alpha = FfxFloat32x2(ffxDofSharedOpacity[index], ffxDofUnpackExtraOf(packedNear));
     filtered.coc = ffxDofUnpackExtraOf(packedFar);
     return filtered;
@@ -560,8 +556,8 @@ FFX_DOF_INLINE FfxDofFilteredTexel ffxDofStoreFilteredTexel(FfxUInt32 index, Ffx
     ffxDofSharedNear[index] = packedNear;
     ffxDofSharedFar[index] = packedFar;
     ffxDofSharedOpacity[index] = filtered.alpha.x;
-    filtered.nearColor = ffxDofUnpackColorOf(packedNear);
-    filtered.farColor = ffxDofUnpackColorOf(packedFar);
+    filtered.nearColor = ffxDofUnpackRawColor(packedNear);
+    filtered.farColor = ffxDofUnpackRawColor(packedFar);
     return filtered;
 }
 
