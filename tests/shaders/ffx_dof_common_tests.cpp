@@ -404,6 +404,40 @@ TEST_CASE("The border ring of a grid names each border cell once (the rim grid, 
     }
 }
 
+TEST_CASE("The composite's packed texels keep what they claim to keep exactly", "[composite]") {
+    // Raw summaries: every LAYER_ALPHA code's opacity and validity come back bit for bit; the luminances as halves.
+    for (int code = 0; code < 256; ++code) {
+        const glm::vec2 alpha = ffxDofUnpackLayerAlpha((float(code) + 0.25f) / 255.0f);
+        const glm::vec4 summary = ffxDofUnpackRawSummary(ffxDofPackRawSummary(3.0f, 0.1f, alpha));
+        INFO("code " << code);
+        CHECK(ffxDofAsUInt(summary.z) == ffxDofAsUInt(alpha.x));
+        CHECK(summary.w == alpha.y);
+        CHECK(summary.x == 3.0f);
+        CHECK(summary.y == Approx(0.1f).epsilon(1.0 / 2048.0));
+    }
+    // Filtered texels: validity, radius (a HALF_COC value) and opacity exact; colours rounded to halves, and the
+    // texel returned to the invocation that stored it is the one the others load.
+    for (const float radius : {-27.0f, -3.3984375f, 0.0f, 0.49975586f, 12.5f}) {
+        for (const float validity : {0.0f, 1.0f}) {
+            FfxDofFilteredTexel texel;
+            texel.nearColor = FfxDofFloat3(0.1f, 2.0f, 4000.0f);
+            texel.farColor = FfxDofFloat3(1.0f / 3.0f, 0.0f, 65.5f);
+            texel.alpha = glm::vec2(0.123456789f, validity);
+            texel.coc = radius;
+            const FfxDofFilteredTexel stored = ffxDofStoreFilteredTexel(7, texel);
+            const FfxDofFilteredTexel loaded = ffxDofLoadFilteredTexel(7);
+            INFO("radius " << radius << ", validity " << validity);
+            CHECK(loaded.coc == radius);
+            CHECK(loaded.alpha.y == validity);
+            CHECK(loaded.alpha.x == texel.alpha.x);
+            CHECK(glm::vec3(loaded.nearColor) == glm::vec3(stored.nearColor));
+            CHECK(glm::vec3(loaded.farColor) == glm::vec3(stored.farColor));
+            CHECK(float(loaded.farColor.x) == Approx(1.0f / 3.0f).epsilon(1.0 / 2048.0));
+            CHECK(float(loaded.nearColor.z) == 4000.0f);
+        }
+    }
+}
+
 TEST_CASE("The composite's raw grid is its invocations' block centres and two rings, each cell once", "[composite]") {
     std::set<std::pair<uint32_t, uint32_t>> cells;
     for (uint32_t local = 0; local < uint32_t(FFX_DOF_GROUP_THREADS); ++local) {
