@@ -448,6 +448,10 @@ FFX_DOF_INLINE FfxUInt32x2 ffxDofLocalCoord(FfxUInt32 localIndex)
 // slower.
 FFX_DOF_INLINE FfxUInt32 ffxDofLaneWaveSlot(FfxUInt32 first) { return first + ffxDofWaveLaneIndex(); }
 
+// Whether the condition holds in any lane of the wave, for a branch the whole wave takes or skips: by the wave
+// arithmetic every pass needs anyway (ffxDofWaveAnyTrue would add the vote operations to a device's requirements).
+FFX_DOF_INLINE FfxBoolean ffxDofWaveAny(FfxBoolean condition) { return ffxDofWaveMax(condition ? 1u : 0u) != 0u; }
+
 // Size of MIP level `mip` of an image whose level 0 is `size` (the Vulkan/D3D rule).
 FFX_DOF_INLINE FfxUInt32x2 ffxDofMipSize(FfxUInt32x2 size, FfxUInt32 mip)
 {

@@ -409,7 +409,10 @@ FFX_DOF_GROUPSHARED FfxFloat32x4 ffxDofSharedHighlightEnergyLight[FFX_DOF_GROUP_
 FFX_DOF_GROUPSHARED FfxFloat32x4 ffxDofSharedHighlightPlaceRadius[FFX_DOF_GROUP_THREADS];
 // The anisotropy (xy) and the near pixels' light (z) in one array: one group-shared read for both.
 FFX_DOF_GROUPSHARED FfxFloat32x4 ffxDofSharedHighlightAnisotropyNear[FFX_DOF_GROUP_THREADS];
-FFX_DOF_GROUPSHARED FfxUInt32 ffxDofSharedHighlightAny;
+// Bit i (of word i / 32): quad i stored its sums, which only the quads of a wave where some quad gives light do (the
+// others' sums hold none, and most groups give no light): 12 components a quad (docs/performance.md, "Floors and
+// highlight sums where a wave gives light").
+FFX_DOF_GROUPSHARED FfxUInt32 ffxDofSharedHighlightQuads[FFX_DOF_GROUP_THREADS / 32];
 
 FFX_DOF_INLINE void ffxDofStoreSharedHighlightSums(FfxUInt32 index, FfxDofHighlightSums sums)
 {
@@ -428,6 +431,22 @@ FFX_DOF_INLINE FfxDofHighlightSums ffxDofSharedHighlightSums(FfxUInt32 index)
     sums.nearLight = anisotropyNear.z;
     return sums;
 }
+// Quad `index`'s sums: those it stored, else none (the sums of a quad whose wave gave no light).
+FFX_DOF_INLINE FfxDofHighlightSums ffxDofQuadSharedHighlightSums(FfxUInt32 index)
+{
+    if ((ffxDofSharedHighlightQuads[index / 32u] & (1u << (index % 32u))) != 0u)
+        return ffxDofSharedHighlightSums(index);
+    return ffxDofNoHighlightSums();
+}
+// Whether any quad of the group gives light.
+FFX_DOF_INLINE FfxBoolean ffxDofGroupGivesHighlights()
+{
+    FfxUInt32 stored = 0u;
+    FFX_DOF_UNROLL
+    for (FfxUInt32 word = 0u; word < FfxUInt32(FFX_DOF_GROUP_THREADS / 32); ++word)
+        stored |= ffxDofSharedHighlightQuads[word];
+    return stored != 0u;
+}
 
 // The quadrants' sums are two levels up the tree: the chain's loop runs at least that far.
 #define FFX_DOF_HIGHLIGHT_QUADRANT_LEVEL 2u
@@ -437,10 +456,14 @@ FFX_DOF_INLINE FfxDofHighlightSums ffxDofSharedHighlightSums(FfxUInt32 index)
 #define FFX_DOF_DOWNSAMPLE_COLOR_LEVELS 3
 #endif
 
-// Per wave, over the group's pixels and border: the dimmest far luminance, the dimmest luminance (the floors its far
-// and near highlights stand on, ffxDofPackHighlightFloors) and the radii of the far pixels above white; and the far
-// sums (ffxDofFarSums: the far surround, and whether the tile is a bright far field behind nearer far content).
-FFX_DOF_GROUPSHARED FfxFloat32x4 ffxDofSharedWaveFloors[FFX_DOF_GROUP_THREADS];
+// Per wave, over the group's pixels and border: the dimmest luminance (the floor near highlights stand on, and the
+// light rims' bound); the dimmest far luminance (the far highlights' floor, ffxDofPackHighlightFloors) and the radii
+// of the far pixels above white; and the far sums (ffxDofFarSums: the far surround, and whether the tile is a bright
+// far field behind nearer far content). Every wave reads the first; only a wave with a pixel above white, or the one
+// that stores the tile's floors, reads the others (docs/performance.md, "Floors and highlight sums where a wave
+// gives light").
+FFX_DOF_GROUPSHARED FfxFloat32 ffxDofSharedWaveDimmest[FFX_DOF_GROUP_THREADS];
+FFX_DOF_GROUPSHARED FfxFloat32x2 ffxDofSharedWaveFarFloors[FFX_DOF_GROUP_THREADS];
 FFX_DOF_GROUPSHARED FfxFloat32x4 ffxDofSharedWaveFarSums[FFX_DOF_GROUP_THREADS];
 
 // Scaled in 32-bit (and clamped to the half range) before any conversion to 16 bits.
@@ -522,8 +545,8 @@ FFX_DOF_INLINE void ffxDofDownsampleColor(FfxUInt32x2 groupId, FfxUInt32 localIn
     ffxDofSharedRimSample[cell.y * FFX_DOF_RIM_SIDE + cell.x + 1u] = rim1;
     ffxDofSharedRimSample[(cell.y + 1u) * FFX_DOF_RIM_SIDE + cell.x] = rim2;
     ffxDofSharedRimSample[(cell.y + 1u) * FFX_DOF_RIM_SIDE + cell.x + 1u] = rim3;
-    if (localIndex == 0u)
-        ffxDofSharedHighlightAny = 0u;
+    if (localIndex < FfxUInt32(FFX_DOF_GROUP_THREADS / 32))
+        ffxDofSharedHighlightQuads[localIndex] = 0u;
     // The highlights' floors (below): the dimmest far pixel and the dimmest pixel of the group's and of the border,
     // per wave here.
     FfxFloat32 dimmestFar = min(min(ffxDofFarLuminance(rim0), ffxDofFarLuminance(rim1)),
@@ -559,45 +582,32 @@ FFX_DOF_INLINE void ffxDofDownsampleColor(FfxUInt32x2 groupId, FfxUInt32 localIn
     brightRadiusSum = ffxDofWaveSum(brightRadiusSum);
     if (ffxDofWaveIsFirstLane())
     {
-        ffxDofSharedWaveFloors[ffxDofWaveIndex(localIndex)] = FfxFloat32x4(dimmestFar, dimmest, brightRadiusSum, 0.0f);
+        ffxDofSharedWaveDimmest[ffxDofWaveIndex(localIndex)] = dimmest;
+        ffxDofSharedWaveFarFloors[ffxDofWaveIndex(localIndex)] = FfxFloat32x2(dimmestFar, brightRadiusSum);
         ffxDofSharedWaveFarSums[ffxDofWaveIndex(localIndex)] = farSums;
     }
     ffxDofGroupBarrier();
-    // Highlights: the light of pixels far brighter than the tile's floor leaves the half-res colour for the
-    // composite's full-resolution discs (ffx_dof_highlights.h), one per quadrant of the tile.
-    // The floors: of the tile and its border (the waves' minima above), so that every pixel of a light within it
-    // gives its light (a light split between both paths drew its rest from the layers 1.05 to 1.10 times too
-    // bright, docs/technique.md); as the composite reads them back (ffxDofPackHighlightFloors).
-    FfxFloat32x2 tileMinima = FfxFloat32x2(FFX_DOF_FLOAT32_MAX, FFX_DOF_FLOAT32_MAX);
-    FfxFloat32 tileBrightRadiusSum = 0.0f;
-    FfxFloat32x4 tileFarSums = FfxFloat32x4(0.0f, 0.0f, 0.0f, 0.0f);
+    FfxFloat32 tileDimmest = FFX_DOF_FLOAT32_MAX;
     FFX_DOF_LOOP
     for (FfxUInt32 first = 0u; first < ffxDofWaveCount(); first += ffxDofWaveLaneCount())
     {
         FfxUInt32 wave = ffxDofLaneWaveSlot(first);
         if (wave < ffxDofWaveCount())
-        {
-            FfxFloat32x4 waveFloors = ffxDofSharedWaveFloors[wave];
-            tileMinima = min(tileMinima, FfxFloat32x2(waveFloors.x, waveFloors.y));
-            tileBrightRadiusSum += waveFloors.z;
-            tileFarSums += ffxDofSharedWaveFarSums[wave];
-        }
+            tileDimmest = min(tileDimmest, ffxDofSharedWaveDimmest[wave]);
     }
-    tileMinima = ffxDofWaveMin(tileMinima);
-    tileBrightRadiusSum = ffxDofWaveSum(tileBrightRadiusSum);
-    tileFarSums = ffxDofWaveSum(tileFarSums);
+    tileDimmest = ffxDofWaveMin(tileDimmest);
 
     // The radii the quad's pixels are downsampled with (light rims). No pixel of the rim grid is dimmer than the
-    // tile's dimmest (tileMinima.y, before the far floor below may change x), so a pixel that is no rim against that
-    // is none whatever its neighbours: a quad without such far pixels keeps its radii and reads none of its 12
-    // neighbours (ffxDofLightRimCocInQuad would return the same; on lavapipe the reads were a third of the pass,
-    // docs/performance.md, "Light rims only where the tile's contrast allows them").
+    // tile's dimmest, so a pixel that is no rim against that is none whatever its neighbours: a quad without such far
+    // pixels keeps its radii and reads none of its 12 neighbours (ffxDofLightRimCocInQuad would return the same; on
+    // lavapipe the reads were a third of the pass, docs/performance.md, "Light rims only where the tile's contrast
+    // allows them").
     FfxFloat32 coc0 = rim0.y;
     FfxFloat32 coc1 = rim1.y;
     FfxFloat32 coc2 = rim2.y;
     FfxFloat32 coc3 = rim3.y;
-    if (ffxDofIsLightRim(rim0.x, rim0.y, tileMinima.y) || ffxDofIsLightRim(rim1.x, rim1.y, tileMinima.y) ||
-        ffxDofIsLightRim(rim2.x, rim2.y, tileMinima.y) || ffxDofIsLightRim(rim3.x, rim3.y, tileMinima.y))
+    if (ffxDofIsLightRim(rim0.x, rim0.y, tileDimmest) || ffxDofIsLightRim(rim1.x, rim1.y, tileDimmest) ||
+        ffxDofIsLightRim(rim2.x, rim2.y, tileDimmest) || ffxDofIsLightRim(rim3.x, rim3.y, tileDimmest))
     {
         // The quad's 4 x 4 neighbourhood read once for its four pixels (12 group-shared reads instead of 32: on
         // lavapipe each is a loop over the lanes).
@@ -618,27 +628,63 @@ FFX_DOF_INLINE void ffxDofDownsampleColor(FfxUInt32x2 groupId, FfxUInt32 localIn
         coc2 = ffxDofLightRimCocInQuad(around, 2u);
         coc3 = ffxDofLightRimCocInQuad(around, 3u);
     }
-    // A bright far field behind nearer far content gives no far light: its far floor is none.
-    if (ffxDofBrightFieldBehind(tileFarSums, tileBrightRadiusSum))
-        tileMinima.x = FFX_DOF_HIGHLIGHT_NO_FLOOR;
-    FfxUInt32 packedFloors = ffxDofPackHighlightFloors(
-        FfxFloat32x3(tileMinima.x, tileMinima.y, ffxDofFarSurround(FfxFloat32x2(tileFarSums.x, tileFarSums.y))));
-    FfxFloat32x3 tileFloors = ffxDofUnpackHighlightFloors(packedFloors);
-    FfxFloat32x4 shares =
-        FfxFloat32x4(ffxDofHighlightShare(rim0.x, coc0, ffxDofHighlightFloor(tileFloors, coc0), scale),
-                     ffxDofHighlightShare(rim1.x, coc1, ffxDofHighlightFloor(tileFloors, coc1), scale),
-                     ffxDofHighlightShare(rim2.x, coc2, ffxDofHighlightFloor(tileFloors, coc2), scale),
-                     ffxDofHighlightShare(rim3.x, coc3, ffxDofHighlightFloor(tileFloors, coc3), scale));
+    // Highlights: the light of pixels far brighter than the tile's floor leaves the half-res colour for the
+    // composite's full-resolution discs (ffx_dof_highlights.h), one per quadrant of the tile.
+    // The floors: of the tile and its border (the waves' minima above), so that every pixel of a light within it
+    // gives its light (a light split between both paths drew its rest from the layers 1.05 to 1.10 times too
+    // bright, docs/technique.md); as the composite reads them back (ffxDofPackHighlightFloors). A pixel not above
+    // white gives nothing over any floors (ffxDofHighlightBrightness), so a wave none of whose pixels is reads them
+    // only where it holds the invocation that stores them.
+    FfxUInt32 packedFloors = 0u;
+    FfxFloat32x4 shares = FfxFloat32x4(0.0f, 0.0f, 0.0f, 0.0f);
+    FfxBoolean quadAboveWhite =
+        max(max(ffxDofHighlightBrightness(rim0.x, scale), ffxDofHighlightBrightness(rim1.x, scale)),
+            max(ffxDofHighlightBrightness(rim2.x, scale), ffxDofHighlightBrightness(rim3.x, scale))) > 0.0f;
+    if (ffxDofWaveAny(quadAboveWhite || localIndex == 1u))
+    {
+        FfxFloat32 tileDimmestFar = FFX_DOF_FLOAT32_MAX;
+        FfxFloat32 tileBrightRadiusSum = 0.0f;
+        FfxFloat32x4 tileFarSums = FfxFloat32x4(0.0f, 0.0f, 0.0f, 0.0f);
+        FFX_DOF_LOOP
+        for (FfxUInt32 first = 0u; first < ffxDofWaveCount(); first += ffxDofWaveLaneCount())
+        {
+            FfxUInt32 wave = ffxDofLaneWaveSlot(first);
+            if (wave < ffxDofWaveCount())
+            {
+                FfxFloat32x2 waveFarFloors = ffxDofSharedWaveFarFloors[wave];
+                tileDimmestFar = min(tileDimmestFar, waveFarFloors.x);
+                tileBrightRadiusSum += waveFarFloors.y;
+                tileFarSums += ffxDofSharedWaveFarSums[wave];
+            }
+        }
+        tileDimmestFar = ffxDofWaveMin(tileDimmestFar);
+        tileBrightRadiusSum = ffxDofWaveSum(tileBrightRadiusSum);
+        tileFarSums = ffxDofWaveSum(tileFarSums);
+        // A bright far field behind nearer far content gives no far light: its far floor is none.
+        if (ffxDofBrightFieldBehind(tileFarSums, tileBrightRadiusSum))
+            tileDimmestFar = FFX_DOF_HIGHLIGHT_NO_FLOOR;
+        packedFloors = ffxDofPackHighlightFloors(
+            FfxFloat32x3(tileDimmestFar, tileDimmest, ffxDofFarSurround(FfxFloat32x2(tileFarSums.x, tileFarSums.y))));
+        FfxFloat32x3 tileFloors = ffxDofUnpackHighlightFloors(packedFloors);
+        shares = FfxFloat32x4(ffxDofHighlightShare(rim0.x, coc0, ffxDofHighlightFloor(tileFloors, coc0), scale),
+                              ffxDofHighlightShare(rim1.x, coc1, ffxDofHighlightFloor(tileFloors, coc1), scale),
+                              ffxDofHighlightShare(rim2.x, coc2, ffxDofHighlightFloor(tileFloors, coc2), scale),
+                              ffxDofHighlightShare(rim3.x, coc3, ffxDofHighlightFloor(tileFloors, coc3), scale));
+    }
     if (ffxDofQuadCutByEdge(quad, constants.fullSize))
         shares = FfxFloat32x4(0.0f, 0.0f, 0.0f, 0.0f);
     FfxDofHighlightSums highlightSums =
         ffxDofQuadHighlightSums(FfxFloat32x3(input0.x, input0.y, input0.z), FfxFloat32x3(input1.x, input1.y, input1.z),
                                 FfxFloat32x3(input2.x, input2.y, input2.z), FfxFloat32x3(input3.x, input3.y, input3.z),
                                 FfxFloat32x4(coc0, coc1, coc2, coc3), shares, FfxFloat32x2(local * 2u));
-    ffxDofStoreSharedHighlightSums(localIndex, highlightSums);
-    if (ffxDofHighlightSumsHoldLight(highlightSums))
+    FfxBoolean quadGivesLight = ffxDofHighlightSumsHoldLight(highlightSums);
+    if (ffxDofWaveAny(quadGivesLight))
     {
-        ffxDofGroupAtomicOr(ffxDofSharedHighlightAny, 1u);
+        ffxDofStoreSharedHighlightSums(localIndex, highlightSums);
+        ffxDofGroupAtomicOr(ffxDofSharedHighlightQuads[localIndex / 32u], 1u << (localIndex % 32u));
+    }
+    if (quadGivesLight)
+    {
         input0 = FfxFloat32x4(FfxFloat32x3(input0.x, input0.y, input0.z) * (1.0f - shares.x), input0.w);
         input1 = FfxFloat32x4(FfxFloat32x3(input1.x, input1.y, input1.z) * (1.0f - shares.y), input1.w);
         input2 = FfxFloat32x4(FfxFloat32x3(input2.x, input2.y, input2.z) * (1.0f - shares.z), input2.w);
@@ -693,12 +739,17 @@ FFX_DOF_INLINE void ffxDofDownsampleColor(FfxUInt32x2 groupId, FfxUInt32 localIn
                                               reduced.lightOffset));
                 }
             }
-            // A group none of whose quads gives light skips its sums (a branch of the whole group on a GPU).
-            if (mip <= FFX_DOF_HIGHLIGHT_QUADRANT_LEVEL && ffxDofSharedHighlightAny != 0u)
+            // A group none of whose quads gives light skips its sums (a branch of the whole group on a GPU). The
+            // first level reads the quads' sums where they stored them, the second what the first level's blocks
+            // stored (every one of them, in a group with light).
+            if (mip <= FFX_DOF_HIGHLIGHT_QUADRANT_LEVEL && ffxDofGroupGivesHighlights())
             {
                 highlightSums = ffxDofAddHighlightSums(
-                    ffxDofAddHighlightSums(highlightSums, ffxDofSharedHighlightSums(i1)),
-                    ffxDofAddHighlightSums(ffxDofSharedHighlightSums(i2), ffxDofSharedHighlightSums(i3)));
+                    ffxDofAddHighlightSums(
+                        highlightSums, mip == 1u ? ffxDofQuadSharedHighlightSums(i1) : ffxDofSharedHighlightSums(i1)),
+                    ffxDofAddHighlightSums(
+                        mip == 1u ? ffxDofQuadSharedHighlightSums(i2) : ffxDofSharedHighlightSums(i2),
+                        mip == 1u ? ffxDofQuadSharedHighlightSums(i3) : ffxDofSharedHighlightSums(i3)));
                 if (mip < FFX_DOF_HIGHLIGHT_QUADRANT_LEVEL)
                     ffxDofStoreSharedHighlightSums(localIndex, highlightSums);
             }
@@ -723,7 +774,7 @@ FFX_DOF_INLINE void ffxDofDownsampleColor(FfxUInt32x2 groupId, FfxUInt32 localIn
     // whether they gave any (from an invocation that stores no quadrant's words).
     if (localIndex == 1u)
         ffxDofStoreHighlightWord(ffxDofHighlightFloorWord(groupId, constants.tileCount),
-                                 packedFloors | (ffxDofSharedHighlightAny != 0u ? FFX_DOF_HIGHLIGHT_GIVEN_BIT : 0u));
+                                 packedFloors | (ffxDofGroupGivesHighlights() ? FFX_DOF_HIGHLIGHT_GIVEN_BIT : 0u));
 }
 
 #endif  // FFX_DOF_DOWNSAMPLE_COLOR_H

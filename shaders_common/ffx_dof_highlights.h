@@ -89,6 +89,13 @@ FFX_DOF_INLINE FfxFloat32 ffxDofHighlightRadiusRamp(FfxFloat32 coc)
 // mean by its light over the tile's 324 pixels. Taken above the mean as well, a light lying across tiles of
 // different means split between the two paths unevenly, and issue 17's square lights kept 0.96 to 1.02 of their
 // energy instead of 1.00 (docs/technique.md, "A bright far field is not a light").
+// How far above display white a pixel of this luminance is, from 0 at white to 1 at twice it: the first factor of
+// ffxDofHighlightShare, so a pixel where it is 0 gives no light whatever its floors (pass 2 reads the floors only in
+// waves with a pixel above white).
+FFX_DOF_INLINE FfxFloat32 ffxDofHighlightBrightness(FfxFloat32 luminance, FfxFloat32 scale)
+{
+    return ffxDofSaturate(luminance / ffxDofHighlightWhite(scale) - 1.0f);
+}
 FFX_DOF_INLINE FfxFloat32 ffxDofHighlightShare(FfxFloat32 luminance, FfxFloat32 coc, FfxFloat32x2 floorAndSurround,
                                                FfxFloat32 scale)
 {
@@ -96,7 +103,7 @@ FFX_DOF_INLINE FfxFloat32 ffxDofHighlightShare(FfxFloat32 luminance, FfxFloat32 
         return 0.0f;
     FfxFloat32 floorLuminance = floorAndSurround.x;
     FfxFloat32 surround = max(floorAndSurround.y, floorLuminance);
-    FfxFloat32 bright = ffxDofSaturate(luminance / ffxDofHighlightWhite(scale) - 1.0f);
+    FfxFloat32 bright = ffxDofHighlightBrightness(luminance, scale);
     FfxFloat32 contrast = ffxDofSaturate(luminance / max(FFX_DOF_HIGHLIGHT_CONTRAST * surround, 1e-30f) - 1.0f);
     return bright * contrast * ffxDofHighlightRadiusRamp(coc) * ffxDofSaturate(1.0f - floorLuminance / luminance);
 }
@@ -306,6 +313,17 @@ FFX_DOF_INLINE FfxDofHighlightSums ffxDofAddHighlightSums(FfxDofHighlightSums a,
     sums.placeRadius = a.placeRadius + b.placeRadius;
     sums.anisotropy = a.anisotropy + b.anisotropy;
     sums.nearLight = a.nearLight + b.nearLight;
+    return sums;
+}
+
+// The sums of pixels that give no light.
+FFX_DOF_INLINE FfxDofHighlightSums ffxDofNoHighlightSums()
+{
+    FfxDofHighlightSums sums;
+    sums.energyLight = FfxFloat32x4(0.0f, 0.0f, 0.0f, 0.0f);
+    sums.placeRadius = FfxFloat32x4(0.0f, 0.0f, 0.0f, 0.0f);
+    sums.anisotropy = FfxFloat32x2(0.0f, 0.0f);
+    sums.nearLight = 0.0f;
     return sums;
 }
 
