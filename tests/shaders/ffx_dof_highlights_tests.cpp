@@ -106,6 +106,50 @@ TEST_CASE("A pixel gives light above its floor, only where it is bright, far bri
     }
 }
 
+// Pass 2 reads a tile's far floors only in waves with a pixel of nonzero brightness, and stores a quad's highlight
+// sums only in waves where some quad gives light, the others' reading as ffxDofNoHighlightSums: both skips must change
+// nothing.
+TEST_CASE("A pixel of no brightness gives no light over any floors, and a quad without light sums to no highlight",
+          "[highlights]") {
+    std::mt19937 rng(23);
+    std::uniform_real_distribution<float> unit(0.0f, 1.0f);
+    std::uniform_real_distribution<float> exponent(-14.0f, 16.0f);
+    std::uniform_real_distribution<float> radius(-40.0f, 40.0f);
+    int dark = 0, bright = 0;
+    for (int i = 0; i < 20000; ++i) {
+        const float scale = std::exp2(std::floor(-8.0f * unit(rng)));
+        const float luminance = std::exp2(exponent(rng)) * scale;
+        const glm::vec2 floors(std::exp2(exponent(rng)) * unit(rng), std::exp2(exponent(rng)) * unit(rng));
+        const float coc = radius(rng);
+        const float share = ffxDofHighlightShare(luminance, coc, floors, scale);
+        if (ffxDofHighlightBrightness(luminance, scale) == 0.0f) {
+            ++dark;
+            REQUIRE(share == 0.0f);
+        } else {
+            ++bright;
+            // Independently of the function: above white by its definition.
+            REQUIRE(luminance > FFX_DOF_HIGHLIGHT_MIN_LUMINANCE * scale);
+        }
+    }
+    CHECK(dark > 1000);
+    CHECK(bright > 1000);
+
+    const FfxDofHighlightSums none = ffxDofNoHighlightSums();
+    CHECK_FALSE(ffxDofHighlightSumsHoldLight(none));
+    for (int i = 0; i < 2000; ++i) {
+        glm::vec3 colors[4];
+        for (glm::vec3& color : colors) color = glm::vec3(unit(rng), unit(rng), unit(rng)) * 1000.0f;
+        const glm::vec4 cocs(radius(rng), radius(rng), radius(rng), radius(rng));
+        const glm::vec2 inTile(2.0f * float(i % 8), 2.0f * float((i / 8) % 8));
+        const FfxDofHighlightSums sums =
+            ffxDofQuadHighlightSums(colors[0], colors[1], colors[2], colors[3], cocs, glm::vec4(0.0f), inTile);
+        REQUIRE(sums.energyLight == none.energyLight);
+        REQUIRE(sums.placeRadius == none.placeRadius);
+        REQUIRE(sums.anisotropy == none.anisotropy);
+        REQUIRE(sums.nearLight == none.nearLight);
+    }
+}
+
 TEST_CASE("The highlights take all of a bright far pixel's light above its floor where the layers would draw any",
           "[highlights]") {
     // From FFX_DOF_HIGHLIGHT_FULL_RADIUS on the half-res layers take part of a pixel's own light (the rest is
