@@ -50,7 +50,6 @@ FfxUInt32x2 ffxDofLoadCoarseMip(FfxInt32x2 texel, FfxUInt32 mip)
 #if FFX_DOF_USES_TILES
 FFX_DOF_BINDING_SRV(FFX_DOF_SRV_TILES) uniform texture2D ffxDofTiles;
 FfxFloat32x2 ffxDofLoadTile(FfxUInt32x2 tile) { return texelFetch(ffxDofTiles, ivec2(tile), 0).xy; }
-FfxFloat32x3 ffxDofLoadTileRangeAndPeak(FfxUInt32x2 tile) { return texelFetch(ffxDofTiles, ivec2(tile), 0).xyz; }
 #endif
 
 #if FFX_DOF_USES_DILATED_TILES
@@ -119,9 +118,9 @@ void ffxDofStoreCoarseMip(FfxUInt32 mip, FfxUInt32x2 texel, FfxUInt32x2 packed)
 
 #if FFX_DOF_USES_RW_TILES
 FFX_DOF_BINDING_UAV_IMAGE(FFX_DOF_UAV_TILES, rgba16f) uniform writeonly image2D ffxDofRwTiles;
-void ffxDofStoreTile(FfxUInt32x2 tile, FfxFloat32x2 cocMinMax, FfxFloat32 colorPeak)
+void ffxDofStoreTile(FfxUInt32x2 tile, FfxFloat32x2 cocMinMax)
 {
-    imageStore(ffxDofRwTiles, ivec2(tile), vec4(cocMinMax.x, cocMinMax.y, colorPeak, 0.0f));
+    imageStore(ffxDofRwTiles, ivec2(tile), vec4(cocMinMax.x, cocMinMax.y, 0.0f, 0.0f));
 }
 #endif
 
@@ -203,7 +202,7 @@ void ffxDofStoreFocus(FfxFloat32 distance, FfxFloat32 cocScale, FfxFloat32 cocBi
 #if FFX_DOF_USES_RW_TILE_LIST_ARGS
 FFX_DOF_BINDING_UAV_BUFFER(FFX_DOF_UAV_BUFFER_TILE_LIST_ARGS) buffer FfxDofTileListArgs
 {
-    uint ffxDofTileListArgWords[FFX_DOF_TILE_LIST_COUNT * FFX_DOF_TILE_LIST_ARGS_WORDS];
+    uint ffxDofTileListArgWords[FFX_DOF_TILE_LIST_ARGS_ENTRIES * FFX_DOF_TILE_LIST_ARGS_WORDS];
 };
 // The dispatch arguments of tile list `list` (FFX_DOF_TILE_LIST_ARGS_WORDS words apart).
 void ffxDofStoreTileListArgs(FfxUInt32 list, FfxUInt32x3 groupCounts)
@@ -211,6 +210,12 @@ void ffxDofStoreTileListArgs(FfxUInt32 list, FfxUInt32x3 groupCounts)
     ffxDofTileListArgWords[list * FFX_DOF_TILE_LIST_ARGS_WORDS + 0u] = groupCounts.x;
     ffxDofTileListArgWords[list * FFX_DOF_TILE_LIST_ARGS_WORDS + 1u] = groupCounts.y;
     ffxDofTileListArgWords[list * FFX_DOF_TILE_LIST_ARGS_WORDS + 2u] = groupCounts.z;
+}
+// Pass 2's second run over every tile (its arguments are (0, 1, 1) until then).
+void ffxDofArmColorRangeRerun(FfxUInt32x2 tileCount)
+{
+    atomicMax(ffxDofTileListArgWords[FFX_DOF_COLOR_RANGE_RERUN_ARGS * FFX_DOF_TILE_LIST_ARGS_WORDS + 0u], tileCount.x);
+    atomicMax(ffxDofTileListArgWords[FFX_DOF_COLOR_RANGE_RERUN_ARGS * FFX_DOF_TILE_LIST_ARGS_WORDS + 1u], tileCount.y);
 }
 #endif
 

@@ -77,7 +77,6 @@ FfxUInt32x2 ffxDofLoadCoarseMip(FfxInt32x2 texel, FfxUInt32 mip)
 #if FFX_DOF_USES_TILES
 FFX_DOF_BINDING_SRV(FFX_DOF_SRV_TILES) Texture2D<float4> ffxDofTiles : FFX_DOF_HLSL_REGISTER(t, FFX_DOF_SRV_TILES);
 FfxFloat32x2 ffxDofLoadTile(FfxUInt32x2 tile) { return ffxDofTiles.Load(int3(tile, 0)).xy; }
-FfxFloat32x3 ffxDofLoadTileRangeAndPeak(FfxUInt32x2 tile) { return ffxDofTiles.Load(int3(tile, 0)).xyz; }
 #endif
 
 #if FFX_DOF_USES_DILATED_TILES
@@ -141,10 +140,7 @@ void ffxDofStoreCoarseMip(FfxUInt32 mip, FfxUInt32x2 texel, FfxUInt32x2 packed)
 #if FFX_DOF_USES_RW_TILES
 FFX_DOF_BINDING_UAV_IMAGE(FFX_DOF_UAV_TILES)
 RWTexture2D<float4> ffxDofRwTiles : FFX_DOF_HLSL_REGISTER(u, FFX_DOF_UAV_TILES);
-void ffxDofStoreTile(FfxUInt32x2 tile, FfxFloat32x2 cocMinMax, FfxFloat32 colorPeak)
-{
-    ffxDofRwTiles[tile] = float4(cocMinMax, colorPeak, 0.0f);
-}
+void ffxDofStoreTile(FfxUInt32x2 tile, FfxFloat32x2 cocMinMax) { ffxDofRwTiles[tile] = float4(cocMinMax, 0.0f, 0.0f); }
 #endif
 
 #if FFX_DOF_USES_RW_DILATED_TILES
@@ -235,6 +231,15 @@ void ffxDofStoreTileListArgs(FfxUInt32 list, FfxUInt32x3 groupCounts)
     ffxDofTileListArgs[list * FFX_DOF_TILE_LIST_ARGS_WORDS + 0u] = groupCounts.x;
     ffxDofTileListArgs[list * FFX_DOF_TILE_LIST_ARGS_WORDS + 1u] = groupCounts.y;
     ffxDofTileListArgs[list * FFX_DOF_TILE_LIST_ARGS_WORDS + 2u] = groupCounts.z;
+}
+// Pass 2's second run over every tile (its arguments are (0, 1, 1) until then).
+void ffxDofArmColorRangeRerun(FfxUInt32x2 tileCount)
+{
+    uint previous;
+    InterlockedMax(ffxDofTileListArgs[FFX_DOF_COLOR_RANGE_RERUN_ARGS * FFX_DOF_TILE_LIST_ARGS_WORDS + 0u], tileCount.x,
+                   previous);
+    InterlockedMax(ffxDofTileListArgs[FFX_DOF_COLOR_RANGE_RERUN_ARGS * FFX_DOF_TILE_LIST_ARGS_WORDS + 1u], tileCount.y,
+                   previous);
 }
 #endif
 

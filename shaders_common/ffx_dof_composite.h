@@ -1272,7 +1272,7 @@ FFX_DOF_INLINE void ffxDofCompositeTile(FfxUInt32 listedTile, FfxUInt32 localInd
     if (lightsTile && localIndex < 9u)
     {
         FfxUInt32x2 around = ffxDofTileAround(groupId, localIndex, constants.tileCount);
-        FfxFloat32x3 rangeAndPeak = ffxDofLoadTileRangeAndPeak(around);
+        FfxFloat32x3 rangeAndPeak = ffxDofTileRangeAndPeak(around, constants.tileCount);
         ffxDofSharedTilesAround[localIndex] = ffxDofLoadGivenHighlightFloors(around, rangeAndPeak, constants.tileCount);
     }
     FfxInt32x2 tileOrigin = FfxInt32x2(groupId * FfxUInt32(FFX_DOF_TILE_SIZE));

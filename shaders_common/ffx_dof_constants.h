@@ -40,8 +40,11 @@ struct FfxDofConstants
     FfxFloat32 apertureAreaScale;  // pi / area of the unit shape (before cat's eye) * anamorphicRatio
 };
 
-// Bits of FfxDofConstants::outputFlags.
+// Bits of FfxDofConstants::outputFlags, which the backend sets per dispatch.
 #define FFX_DOF_OUTPUT_FLAG_ENCODE_SRGB 1u  // the output view is UNORM over an sRGB image: encode in shader
+// Pass 2's second run, dispatched indirectly where its first run found a colour channel above
+// FFX_DOF_COLOR_RANGE_LIMIT (FFX_DOF_COLOR_RANGE_RERUN_ARGS): scale the colour by the frame's peak.
+#define FFX_DOF_OUTPUT_FLAG_COLOR_RANGE_RERUN 2u
 
 // Bits of FfxDofConstants::focusFlags.
 #define FFX_DOF_FOCUS_FLAG_AUTO 1u   // the passes read the CoC line autofocus wrote to GLOBALS

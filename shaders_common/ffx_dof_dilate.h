@@ -92,7 +92,7 @@ FFX_DOF_INLINE FfxFloat32x2 ffxDofDilateTile(FfxUInt32x2 centerTile, FfxUInt32x2
         FFX_DOF_LOOP
         for (FfxInt32 x = first.x; x <= last.x; ++x)
         {
-            FfxFloat32x3 tile = ffxDofLoadTileRangeAndPeak(FfxUInt32x2(FfxUInt32(x), FfxUInt32(y)));
+            FfxFloat32x3 tile = ffxDofTileRangeAndPeak(FfxUInt32x2(FfxUInt32(x), FfxUInt32(y)), tileCount);
             FfxFloat32 distance = ffxDofTileGapDistance(FfxInt32x2(x, y) - center);
             FfxBoolean farReaches = ffxDofTileReaches(-tile.x * extent, distance);
             FfxBoolean nearReaches = ffxDofTileReaches(tile.y * extent, distance);
@@ -157,7 +157,7 @@ FFX_DOF_INLINE FfxUInt32 ffxDofSurveyTilesAround(FfxUInt32x2 tile, FfxUInt32x2 t
     for (FfxUInt32 k = 0u; k < 9u; ++k)
     {
         FfxUInt32x2 around = ffxDofTileAround(tile, k, tileCount);
-        FfxFloat32x3 rangeAndPeak = ffxDofLoadTileRangeAndPeak(around);
+        FfxFloat32x3 rangeAndPeak = ffxDofTileRangeAndPeak(around, tileCount);
         if (ffxDofTileMayHoldBrightSmallSources(rangeAndPeak))
             flags |= FfxUInt32(FFX_DOF_LISTED_TILE_SMALL_SOURCES);
         if (ffxDofHighlightFloorsGaveLight(ffxDofLoadGivenHighlightFloors(around, rangeAndPeak, tileCount)))

@@ -1,7 +1,10 @@
 // Pass 2 of 5: bilateral downsample of the input color to half resolution, with the CoC, and the
-// MIP chain up to FFX_DOF_OPTION_MAX_MIP levels, in one dispatch. The input color is multiplied by
-// ffxDofColorRangeScale of the frame's colour peak (pass 1) first, in 32-bit; the scale goes to
-// GLOBALS for the composite.
+// MIP chain up to FFX_DOF_OPTION_MAX_MIP levels, in one dispatch. It also takes each tile's colour peak (the
+// largest finite channel, for dilate and the composite) and the frame's (docs/technique.md, HDR range): its first run
+// takes the colour as it is, and where a channel exceeds FFX_DOF_COLOR_RANGE_LIMIT it raises the frame's peak and
+// arms its second run (FFX_DOF_COLOR_RANGE_RERUN_ARGS), which the backend dispatches indirectly with
+// FFX_DOF_OUTPUT_FLAG_COLOR_RANGE_RERUN: that run multiplies the colour by ffxDofColorRangeScale of the frame's peak
+// first, in 32-bit, and writes everything again. The scale goes to GLOBALS for the composite.
 //
 // One workgroup covers one tile: the group first shares the luminance and radius of its 16 x 16
 // full-res pixels and a border of one (a light's anti-aliased rim takes the light's radius:
@@ -27,6 +30,8 @@ void ffxDofStoreHalfColor(FfxUInt32x2 texel, FfxDofFloat3 color);
 void ffxDofStoreHalfCoc(FfxUInt32x2 texel, FfxFloat32 coc);
 void ffxDofStoreCoarseMip(FfxUInt32 mip, FfxUInt32x2 texel, FfxUInt32x2 packed);
 FfxFloat32 ffxDofLoadColorPeak();
+void ffxDofAtomicMaxColorPeak(FfxFloat32 peak);
+void ffxDofArmColorRangeRerun(FfxUInt32x2 tileCount);
 void ffxDofStoreColorScale(FfxFloat32 scale);
 void ffxDofStoreHighlightWord(FfxUInt32 word, FfxUInt32 value);
 #endif
@@ -349,6 +354,18 @@ FFX_DOF_INLINE FfxFloat32 ffxDofLightRimCoc(FfxDofLightRim rim, FfxFloat32 lumin
 
 // ---- HDR range --------------------------------------------------------------------------------------
 
+// `value` when it is finite and not negative (so it can be a colour peak), else 0 (NaN, inf and
+// negative channels never set the peak: they are left as they are, as before).
+FFX_DOF_INLINE FfxFloat32 ffxDofPeakCandidate(FfxFloat32 value)
+{
+    return (value >= 0.0f && value <= FFX_DOF_FLOAT32_MAX) ? value : 0.0f;
+}
+// The largest finite, non-negative channel of an RGB(A) colour (alpha ignored), else 0.
+FFX_DOF_INLINE FfxFloat32 ffxDofColorPeak(FfxFloat32x4 color)
+{
+    return max(max(ffxDofPeakCandidate(color.x), ffxDofPeakCandidate(color.y)), ffxDofPeakCandidate(color.z));
+}
+
 // The factor the frame's colour is multiplied by inside the effect: 1 when `peak` (the largest finite
 // colour channel of the frame) is at most FFX_DOF_COLOR_RANGE_LIMIT, else the largest power of two
 // 2^-k with peak * 2^-k <= FFX_DOF_COLOR_RANGE_LIMIT (for any finite peak, k <= 116: a normal float).
@@ -458,12 +475,12 @@ FFX_DOF_INLINE FfxBoolean ffxDofGroupGivesHighlights()
 
 // Per wave, over the group's pixels and border: the dimmest luminance (the floor near highlights stand on, and the
 // light rims' bound); the dimmest far luminance (the far highlights' floor, ffxDofPackHighlightFloors) and the radii
-// of the far pixels above white; and the far sums (ffxDofFarSums: the far surround, and whether the tile is a bright
-// far field behind nearer far content). Every wave reads the first; only a wave with a pixel above white, or the one
-// that stores the tile's floors, reads the others (docs/performance.md, "Floors and highlight sums where a wave
-// gives light").
+// of the far pixels above white, with the colour peak of the group's own pixels; and the far sums (ffxDofFarSums: the
+// far surround, and whether the tile is a bright far field behind nearer far content). Every wave reads the first;
+// only a wave with a pixel above white, or the one that stores the tile's floors and peak, reads the others
+// (docs/performance.md, "Floors and highlight sums where a wave gives light").
 FFX_DOF_GROUPSHARED FfxFloat32 ffxDofSharedWaveDimmest[FFX_DOF_GROUP_THREADS];
-FFX_DOF_GROUPSHARED FfxFloat32x2 ffxDofSharedWaveFarFloors[FFX_DOF_GROUP_THREADS];
+FFX_DOF_GROUPSHARED FfxFloat32x3 ffxDofSharedWaveFarFloors[FFX_DOF_GROUP_THREADS];
 FFX_DOF_GROUPSHARED FfxFloat32x4 ffxDofSharedWaveFarSums[FFX_DOF_GROUP_THREADS];
 
 // Scaled in 32-bit (and clamped to the half range) before any conversion to 16 bits.
@@ -517,7 +534,10 @@ FFX_DOF_INLINE void ffxDofDownsampleColor(FfxUInt32x2 groupId, FfxUInt32 localIn
     FfxUInt32x2 texel = groupId * FfxUInt32(FFX_DOF_TILE_SIZE) + local;
     FfxUInt32x2 quad = texel * 2u;
     FfxUInt32x2 lastPixel = constants.fullSize - FfxUInt32x2(1u, 1u);
-    FfxFloat32 scale = ffxDofColorRangeScale(ffxDofLoadColorPeak());
+    // The first run takes the colour as it is; the second reads the peak the first one raised (no run reads a word
+    // that its own workgroups write).
+    FfxBoolean rerun = (constants.outputFlags & FFX_DOF_OUTPUT_FLAG_COLOR_RANGE_RERUN) != 0u;
+    FfxFloat32 scale = rerun ? ffxDofColorRangeScale(ffxDofLoadColorPeak()) : 1.0f;
     // One store is enough (the composite runs after a barrier); pass 3 resets the peak.
     if (groupId.x == 0u && groupId.y == 0u && localIndex == 0u)
         ffxDofStoreColorScale(scale);
@@ -526,10 +546,16 @@ FFX_DOF_INLINE void ffxDofDownsampleColor(FfxUInt32x2 groupId, FfxUInt32 localIn
     FfxUInt32x2 pixel1 = min(quad + FfxUInt32x2(1u, 0u), lastPixel);
     FfxUInt32x2 pixel2 = min(quad + FfxUInt32x2(0u, 1u), lastPixel);
     FfxUInt32x2 pixel3 = min(quad + FfxUInt32x2(1u, 1u), lastPixel);
-    FfxFloat32x4 input0 = ffxDofLoadScaledInputColor(pixel0, scale);
-    FfxFloat32x4 input1 = ffxDofLoadScaledInputColor(pixel1, scale);
-    FfxFloat32x4 input2 = ffxDofLoadScaledInputColor(pixel2, scale);
-    FfxFloat32x4 input3 = ffxDofLoadScaledInputColor(pixel3, scale);
+    FfxFloat32x4 raw0 = ffxDofLoadInputColor(pixel0);
+    FfxFloat32x4 raw1 = ffxDofLoadInputColor(pixel1);
+    FfxFloat32x4 raw2 = ffxDofLoadInputColor(pixel2);
+    FfxFloat32x4 raw3 = ffxDofLoadInputColor(pixel3);
+    FfxFloat32 colorPeak =
+        max(max(ffxDofColorPeak(raw0), ffxDofColorPeak(raw1)), max(ffxDofColorPeak(raw2), ffxDofColorPeak(raw3)));
+    FfxFloat32x4 input0 = ffxDofScaleColor(raw0, scale);
+    FfxFloat32x4 input1 = ffxDofScaleColor(raw1, scale);
+    FfxFloat32x4 input2 = ffxDofScaleColor(raw2, scale);
+    FfxFloat32x4 input3 = ffxDofScaleColor(raw3, scale);
 
     // The light rims need each pixel's 8 neighbours: the group's pixels and a border of one.
     FfxUInt32x2 cell = local * 2u + FfxUInt32x2(1u, 1u);
@@ -580,10 +606,11 @@ FFX_DOF_INLINE void ffxDofDownsampleColor(FfxUInt32x2 groupId, FfxUInt32 localIn
     dimmest = ffxDofWaveMin(dimmest);
     farSums = ffxDofWaveSum(farSums);
     brightRadiusSum = ffxDofWaveSum(brightRadiusSum);
+    colorPeak = ffxDofWaveMax(colorPeak);
     if (ffxDofWaveIsFirstLane())
     {
         ffxDofSharedWaveDimmest[ffxDofWaveIndex(localIndex)] = dimmest;
-        ffxDofSharedWaveFarFloors[ffxDofWaveIndex(localIndex)] = FfxFloat32x2(dimmestFar, brightRadiusSum);
+        ffxDofSharedWaveFarFloors[ffxDofWaveIndex(localIndex)] = FfxFloat32x3(dimmestFar, brightRadiusSum, colorPeak);
         ffxDofSharedWaveFarSums[ffxDofWaveIndex(localIndex)] = farSums;
     }
     ffxDofGroupBarrier();
@@ -636,6 +663,7 @@ FFX_DOF_INLINE void ffxDofDownsampleColor(FfxUInt32x2 groupId, FfxUInt32 localIn
     // white gives nothing over any floors (ffxDofHighlightBrightness), so a wave none of whose pixels is reads them
     // only where it holds the invocation that stores them.
     FfxUInt32 packedFloors = 0u;
+    FfxFloat32 tilePeak = 0.0f;
     FfxFloat32x4 shares = FfxFloat32x4(0.0f, 0.0f, 0.0f, 0.0f);
     FfxBoolean quadAboveWhite =
         max(max(ffxDofHighlightBrightness(rim0.x, scale), ffxDofHighlightBrightness(rim1.x, scale)),
@@ -651,15 +679,17 @@ FFX_DOF_INLINE void ffxDofDownsampleColor(FfxUInt32x2 groupId, FfxUInt32 localIn
             FfxUInt32 wave = ffxDofLaneWaveSlot(first);
             if (wave < ffxDofWaveCount())
             {
-                FfxFloat32x2 waveFarFloors = ffxDofSharedWaveFarFloors[wave];
+                FfxFloat32x3 waveFarFloors = ffxDofSharedWaveFarFloors[wave];
                 tileDimmestFar = min(tileDimmestFar, waveFarFloors.x);
                 tileBrightRadiusSum += waveFarFloors.y;
+                tilePeak = max(tilePeak, waveFarFloors.z);
                 tileFarSums += ffxDofSharedWaveFarSums[wave];
             }
         }
         tileDimmestFar = ffxDofWaveMin(tileDimmestFar);
         tileBrightRadiusSum = ffxDofWaveSum(tileBrightRadiusSum);
         tileFarSums = ffxDofWaveSum(tileFarSums);
+        tilePeak = ffxDofWaveMax(tilePeak);
         // A bright far field behind nearer far content gives no far light: its far floor is none.
         if (ffxDofBrightFieldBehind(tileFarSums, tileBrightRadiusSum))
             tileDimmestFar = FFX_DOF_HIGHLIGHT_NO_FLOOR;
@@ -772,9 +802,20 @@ FFX_DOF_INLINE void ffxDofDownsampleColor(FfxUInt32x2 groupId, FfxUInt32 localIn
     }
     // The floors, from which the composite knows what the tile's pixels gave (ffxDofPixelHighlightShare), and
     // whether they gave any (from an invocation that stores no quadrant's words).
+    // The tile's colour peak, for dilate and the composite; the first run raises the frame's where the peak is above
+    // the range limit (most frames stay below it, and a peak the scale ignores need not cost an atomic), and arms the
+    // second run.
     if (localIndex == 1u)
+    {
         ffxDofStoreHighlightWord(ffxDofHighlightFloorWord(groupId, constants.tileCount),
                                  packedFloors | (ffxDofGroupGivesHighlights() ? FFX_DOF_HIGHLIGHT_GIVEN_BIT : 0u));
+        ffxDofStoreHighlightWord(ffxDofHighlightPeakWord(groupId, constants.tileCount), ffxDofPackTilePeak(tilePeak));
+        if (!rerun && tilePeak > FFX_DOF_COLOR_RANGE_LIMIT)
+        {
+            ffxDofAtomicMaxColorPeak(tilePeak);
+            ffxDofArmColorRangeRerun(constants.tileCount);
+        }
+    }
 }
 
 #endif  // FFX_DOF_DOWNSAMPLE_COLOR_H

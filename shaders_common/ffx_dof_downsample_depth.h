@@ -1,5 +1,6 @@
-// Pass 1 of 5: depth to CoC, (min, max) signed CoC and colour peak per tile, global max |CoC|, and the
-// frame's colour peak (largest finite colour channel, for ffxDofColorRangeScale; see docs/technique.md, HDR range).
+// Pass 1 of 5: depth to CoC, (min, max) signed CoC per tile and global max |CoC|. It reads no colour: the
+// colour peaks (the tiles', and the frame's for ffxDofColorRangeScale) come from pass 2, which reads every pixel's
+// colour anyway (docs/technique.md, HDR range); here they were 40% of the pass on lavapipe.
 //
 // One workgroup covers one tile (FFX_DOF_TILE_SIZE half-res px = 16 full-res px square); each of
 // its 64 invocations reduces a 2 x 2 full-res quad. Depth is reduced instead of CoC: the radius is a
@@ -16,9 +17,7 @@
 // Accessors this pass calls; each API's callback header implements them.
 FfxDofConstants ffxDofGetConstants();
 FfxFloat32 ffxDofLoadInputDepth(FfxUInt32x2 pixel);
-FfxFloat32x4 ffxDofLoadInputColor(FfxUInt32x2 pixel);
-void ffxDofAtomicMaxColorPeak(FfxFloat32 peak);
-void ffxDofStoreTile(FfxUInt32x2 tile, FfxFloat32x2 cocMinMax, FfxFloat32 colorPeak);
+void ffxDofStoreTile(FfxUInt32x2 tile, FfxFloat32x2 cocMinMax);
 void ffxDofAtomicMaxGlobalRadius(FfxFloat32 radius);
 void ffxDofStoreTileListArgs(FfxUInt32 list, FfxUInt32x3 groupCounts);
 #endif
@@ -43,24 +42,9 @@ FFX_DOF_INLINE FfxFloat32 ffxDofFartherDepth(FfxFloat32 a, FfxFloat32 b)
 #endif
 }
 
-// ---- Colour peak ------------------------------------------------------------------------------------
-
-// `value` when it is finite and not negative (so it can be a colour peak), else 0 (NaN, inf and
-// negative channels never set the peak: they are left as they are, as before).
-FFX_DOF_INLINE FfxFloat32 ffxDofPeakCandidate(FfxFloat32 value)
-{
-    return (value >= 0.0f && value <= FFX_DOF_FLOAT32_MAX) ? value : 0.0f;
-}
-// The largest finite, non-negative channel of an RGB(A) colour (alpha ignored), else 0.
-FFX_DOF_INLINE FfxFloat32 ffxDofColorPeak(FfxFloat32x4 color)
-{
-    return max(max(ffxDofPeakCandidate(color.x), ffxDofPeakCandidate(color.y)), ffxDofPeakCandidate(color.z));
-}
-
 // One slot per wave (a wave of one lane on the CPU, so up to one per invocation).
 FFX_DOF_GROUPSHARED FfxFloat32 ffxDofSharedNearDepth[FFX_DOF_GROUP_THREADS];
 FFX_DOF_GROUPSHARED FfxFloat32 ffxDofSharedFarDepth[FFX_DOF_GROUP_THREADS];
-FFX_DOF_GROUPSHARED FfxFloat32 ffxDofSharedColorPeak[FFX_DOF_GROUP_THREADS];
 
 FFX_DOF_INLINE FfxFloat32 ffxDofWaveNearestDepth(FfxFloat32 depth)
 {
@@ -83,16 +67,17 @@ FFX_DOF_INLINE FfxFloat32 ffxDofWaveFarthestDepth(FfxFloat32 depth)
 // needs a single barrier: a barrier is cheap on a GPU but costs about as much as the whole pass's
 // memory traffic on a CPU implementation such as lavapipe, where the group's waves run as coroutines
 // (a log2(64)-step tree in group-shared memory, one barrier per step, made this pass 2.5x a copy pass).
-// Every tile list empty (TILE_LIST_ARGS: no workgroups) until dilate counts its tiles; invocation `list` of
-// the workgroup that calls it empties list `list`, under a condition of the workgroup alone: the same stores
+// Every tile list empty (TILE_LIST_ARGS: no workgroups) until dilate counts its tiles, and pass 2's second run
+// none until its first run arms it (FFX_DOF_COLOR_RANGE_RERUN_ARGS, the entry after the lists'); invocation `entry`
+// of the workgroup that calls it empties entry `entry`, under a condition of the workgroup alone: the same stores
 // as a loop in one invocation under a condition of the invocation cost lavapipe about 0.4 ms per list at
 // 1080p (docs/performance.md, "What pass 1 costs now").
-#if FFX_DOF_TILE_LIST_COUNT > FFX_DOF_GROUP_THREADS
-#error "ffxDofEmptyTileLists gives each list one invocation"
+#if FFX_DOF_TILE_LIST_ARGS_ENTRIES > FFX_DOF_GROUP_THREADS
+#error "ffxDofEmptyTileLists gives each entry one invocation"
 #endif
 FFX_DOF_INLINE void ffxDofEmptyTileLists(FfxUInt32 localIndex)
 {
-    if (localIndex < FfxUInt32(FFX_DOF_TILE_LIST_COUNT))
+    if (localIndex < FfxUInt32(FFX_DOF_TILE_LIST_ARGS_ENTRIES))
         ffxDofStoreTileListArgs(localIndex, FfxUInt32x3(0u, 1u, 1u));
 }
 
@@ -114,9 +99,6 @@ FFX_DOF_INLINE void ffxDofDownsampleDepth(FfxUInt32x2 groupId, FfxUInt32 localIn
     FfxFloat32 depth1 = ffxDofLoadInputDepth(pixel1);
     FfxFloat32 depth2 = ffxDofLoadInputDepth(pixel2);
     FfxFloat32 depth3 = ffxDofLoadInputDepth(pixel3);
-    FfxFloat32 colorPeak = ffxDofWaveMax(
-        max(max(ffxDofColorPeak(ffxDofLoadInputColor(pixel0)), ffxDofColorPeak(ffxDofLoadInputColor(pixel1))),
-            max(ffxDofColorPeak(ffxDofLoadInputColor(pixel2)), ffxDofColorPeak(ffxDofLoadInputColor(pixel3)))));
     FfxFloat32 nearDepth =
         ffxDofWaveNearestDepth(ffxDofNearerDepth(ffxDofNearerDepth(depth0, depth1), ffxDofNearerDepth(depth2, depth3)));
     FfxFloat32 farDepth = ffxDofWaveFarthestDepth(
@@ -126,7 +108,6 @@ FFX_DOF_INLINE void ffxDofDownsampleDepth(FfxUInt32x2 groupId, FfxUInt32 localIn
         FfxUInt32 wave = ffxDofWaveIndex(localIndex);
         ffxDofSharedNearDepth[wave] = nearDepth;
         ffxDofSharedFarDepth[wave] = farDepth;
-        ffxDofSharedColorPeak[wave] = colorPeak;
     }
     ffxDofGroupBarrier();
 
@@ -138,17 +119,11 @@ FFX_DOF_INLINE void ffxDofDownsampleDepth(FfxUInt32x2 groupId, FfxUInt32 localIn
         {
             nearDepth = ffxDofNearerDepth(nearDepth, ffxDofSharedNearDepth[wave]);
             farDepth = ffxDofFartherDepth(farDepth, ffxDofSharedFarDepth[wave]);
-            colorPeak = max(colorPeak, ffxDofSharedColorPeak[wave]);
         }
         FfxFloat32 nearCoc = ffxDofCocFromDepth(nearDepth, constants.cocScale, constants.cocBias, constants.cocLimit);
         FfxFloat32 farCoc = ffxDofCocFromDepth(farDepth, constants.cocScale, constants.cocBias, constants.cocLimit);
-        // The tile's peak tells the blur and the composite where bright small sources may lie
-        // (ffx_dof_small_sources.h); clamped so that every API's half store keeps it finite.
-        ffxDofStoreTile(groupId, FfxFloat32x2(farCoc, nearCoc), min(colorPeak, FFX_DOF_FLOAT16_MAX));
+        ffxDofStoreTile(groupId, FfxFloat32x2(farCoc, nearCoc));
         ffxDofAtomicMaxGlobalRadius(max(abs(farCoc), abs(nearCoc)));
-        // Most frames stay below the limit, and a peak the scale ignores need not cost an atomic.
-        if (colorPeak > FFX_DOF_COLOR_RANGE_LIMIT)
-            ffxDofAtomicMaxColorPeak(colorPeak);
     }
 }
 

@@ -468,10 +468,20 @@ FFX_DOF_INLINE FfxUInt32 ffxDofHighlightFloorWord(FfxUInt32x2 tile, FfxUInt32x2 
            FfxUInt32(FFX_DOF_HIGHLIGHT_FLOOR_WORD);
 }
 
+// The word of `tile`'s colour peak in HIGHLIGHTS (pass 2: the largest finite channel of its pixels, ffxDofColorPeak),
+// as float bits, clamped to the half range as TILES held it.
+FFX_DOF_INLINE FfxUInt32 ffxDofHighlightPeakWord(FfxUInt32x2 tile, FfxUInt32x2 tileCount)
+{
+    return (tile.y * tileCount.x + tile.x) * FfxUInt32(FFX_DOF_HIGHLIGHT_TILE_WORDS) +
+           FfxUInt32(FFX_DOF_HIGHLIGHT_PEAK_WORD);
+}
+FFX_DOF_INLINE FfxUInt32 ffxDofPackTilePeak(FfxFloat32 peak) { return ffxDofAsUInt(min(peak, FFX_DOF_FLOAT16_MAX)); }
+FFX_DOF_INLINE FfxFloat32 ffxDofUnpackTilePeak(FfxUInt32 word) { return ffxDofAsFloat(word); }
+
 // ---- Where they are drawn ---------------------------------------------------------------------------
 
-// Whether a tile of (min, max) signed radius and colour peak `rangeAndPeak` (TILES) may hold highlights: a
-// channel above white and far pixels of radius from FFX_DOF_HIGHLIGHT_MIN_RADIUS or near ones from
+// Whether a tile of (min, max) signed radius and colour peak `rangeAndPeak` (ffxDofTileRangeAndPeak) may hold
+// highlights: a channel above white and far pixels of radius from FFX_DOF_HIGHLIGHT_MIN_RADIUS or near ones from
 // FFX_DOF_NEAR_HIGHLIGHT_MIN_RADIUS (conservative: dilate lists the tiles such a tile's discs reach for the
 // composite's full-resolution work).
 FFX_DOF_INLINE FfxBoolean ffxDofTileMayHoldHighlights(FfxFloat32x3 rangeAndPeak)
@@ -485,7 +495,7 @@ FfxUInt32 ffxDofLoadHighlightWord(FfxUInt32 word);
 #endif
 // Only where the pass reads HIGHLIGHTS: a GLSL or HLSL function may not call an accessor its pass lacks.
 #if defined(FFX_CPU) || FFX_DOF_USES_HIGHLIGHTS
-// The word of floors of `tile` (of TILES texel `rangeAndPeak`) where its pixels gave light to the highlights, else
+// The word of floors of `tile` (of range and peak `rangeAndPeak`) where its pixels gave light to the highlights, else
 // ffxDofNoHighlightFloors(): its colour peak first, which spares most tiles the load.
 FFX_DOF_INLINE FfxUInt32 ffxDofLoadGivenHighlightFloors(FfxUInt32x2 tile, FfxFloat32x3 rangeAndPeak,
                                                         FfxUInt32x2 tileCount)
@@ -494,6 +504,19 @@ FFX_DOF_INLINE FfxUInt32 ffxDofLoadGivenHighlightFloors(FfxUInt32x2 tile, FfxFlo
         return ffxDofNoHighlightFloors();
     FfxUInt32 word = ffxDofLoadHighlightWord(ffxDofHighlightFloorWord(tile, tileCount));
     return ffxDofHighlightFloorsGaveLight(word) ? word : ffxDofNoHighlightFloors();
+}
+#endif
+#if defined(FFX_CPU)
+FfxFloat32x2 ffxDofLoadTile(FfxUInt32x2 tile);
+#endif
+// Only where the pass reads TILES and HIGHLIGHTS (dilate, the composite).
+#if defined(FFX_CPU) || (FFX_DOF_USES_HIGHLIGHTS && FFX_DOF_USES_TILES)
+// x, y: `tile`'s (min, max) signed radius (pass 1, TILES); z: its colour peak (pass 2, HIGHLIGHTS).
+FFX_DOF_INLINE FfxFloat32x3 ffxDofTileRangeAndPeak(FfxUInt32x2 tile, FfxUInt32x2 tileCount)
+{
+    FfxFloat32x2 range = ffxDofLoadTile(tile);
+    return FfxFloat32x3(range.x, range.y,
+                        ffxDofUnpackTilePeak(ffxDofLoadHighlightWord(ffxDofHighlightPeakWord(tile, tileCount))));
 }
 #endif
 

@@ -7,17 +7,17 @@
 #define FFX_DOF_USES_INPUT_DEPTH 1
 #define FFX_DOF_USES_GLOBALS 1
 #elif defined(FFX_DOF_PASS_DOWNSAMPLE_DEPTH)
-#define FFX_DOF_USES_INPUT_COLOR 1
 #define FFX_DOF_USES_INPUT_DEPTH 1
 #define FFX_DOF_USES_RW_TILES 1
 #define FFX_DOF_USES_GLOBALS 1
-#define FFX_DOF_USES_RW_TILE_LIST_ARGS 1  // resets them for dilate
+#define FFX_DOF_USES_RW_TILE_LIST_ARGS 1  // resets them for dilate and pass 2's second run
 #elif defined(FFX_DOF_PASS_DOWNSAMPLE_COLOR)
 #define FFX_DOF_USES_INPUT_COLOR 1
 #define FFX_DOF_USES_INPUT_DEPTH 1
 #define FFX_DOF_USES_RW_MIPS 1  // HALF_COLOR, HALF_COC and COARSE_MIPS
 #define FFX_DOF_USES_GLOBALS 1
 #define FFX_DOF_USES_RW_HIGHLIGHTS 1
+#define FFX_DOF_USES_RW_TILE_LIST_ARGS 1  // arms its second run (FFX_DOF_COLOR_RANGE_RERUN_ARGS)
 #elif defined(FFX_DOF_PASS_DILATE)
 #define FFX_DOF_USES_TILES 1
 #define FFX_DOF_USES_HIGHLIGHTS 1  // which tiles gave light to them (FFX_DOF_HIGHLIGHT_GIVEN_BIT)

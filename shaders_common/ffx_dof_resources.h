@@ -19,8 +19,8 @@
 //                                            where in the texel its light lies (ffxDofPackCoarseTexel:
 //                                            the blur reads a coarse sample in one fetch); a near radius
 //                                            carries its coverage in sixteenths (ffxDofPackCoarseNearCoverage)
-//   TILES          tiles, R16G16B16A16 float (min, max) signed CoC per tile; z: its colour peak (largest
-//                                            finite channel, clamped to the half range), w: unused
+//   TILES          tiles, R16G16B16A16 float (min, max) signed CoC per tile; z, w: 0 (the tile's colour peak is
+//                                            in HIGHLIGHTS, written by pass 2)
 //   DILATED_TILES  tiles, R16G16B16A16 float dilated (far, near) radii per tile, and the (min, max)
 //                                            radius of the tiles its blur kernels read
 //   NEAR_COLOR     half, B10G11R11 float     near-field color
@@ -34,19 +34,22 @@
 //                  (atomic max on uint: non-negative floats order like their bits); pass 1 writes,
 //                  pass 3 reads, the blur writes 0 back, so it is zero before each dispatch.
 //                  [1] (FFX_DOF_GLOBALS_COLOR_PEAK): the frame's largest finite colour channel as
-//                  float bits, atomic max by pass 1 (only where it exceeds FFX_DOF_COLOR_RANGE_LIMIT,
-//                  so 0 in most frames); pass 2 reads, pass 3 writes 0 back.
-//                  [2] (FFX_DOF_GLOBALS_COLOR_SCALE): ffxDofColorRangeScale of the peak as float bits,
-//                  written by pass 2, read by the composite.
+//                  float bits, atomic max by pass 2's first run (only where it exceeds
+//                  FFX_DOF_COLOR_RANGE_LIMIT, so 0 in most frames); its second run reads, pass 3 writes 0 back.
+//                  [2] (FFX_DOF_GLOBALS_COLOR_SCALE): ffxDofColorRangeScale of the peak as float bits (1 in
+//                  pass 2's first run), written by pass 2, read by the composite.
 //                  [3] (FFX_DOF_GLOBALS_FOCUS_DISTANCE): the focus autofocus chose (signed like view
 //                  z, 0 before the first autofocus dispatch), kept across dispatches for smoothing;
 //                  [4], [5] (FFX_DOF_GLOBALS_FOCUS_COC_SCALE / _BIAS): its CoC line, which the passes
 //                  read instead of the constants' when FFX_DOF_FOCUS_FLAG_AUTO is set. [6], [7]: unused.
-//   TILE_LIST_ARGS storage buffer, FFX_DOF_TILE_LIST_COUNT x 4 uint words: per list the indirect dispatch
+//   TILE_LIST_ARGS storage buffer, (FFX_DOF_TILE_LIST_COUNT + 1) x 4 uint words: per list the indirect dispatch
 //                  arguments (group counts x, y, z; the fourth word unused, so each starts 16-byte aligned).
 //                  Pass 1 sets them to (0, 1, 1), dilate counts its listed tiles in x (atomic add), the
 //                  blur and the composite are dispatched from them (one indirect dispatch per list of
-//                  theirs), and never bind it.
+//                  theirs), and never bind it. After the lists, FFX_DOF_COLOR_RANGE_RERUN_ARGS: pass 1 sets
+//                  them to (0, 1, 1) too, pass 2's first run to the tile count (atomic max) where it finds a
+//                  colour channel above FFX_DOF_COLOR_RANGE_LIMIT, and pass 2's second run, with
+//                  FFX_DOF_OUTPUT_FLAG_COLOR_RANGE_RERUN, is dispatched from them (docs/technique.md, HDR range).
 //   TILE_LISTS     storage buffer, FFX_DOF_TILE_LIST_ARRAYS x tiles uint words: the tiles dilate put in
 //                  each list (x | y << 16 | flags << 30, ffxDofPackListedTile: x below 65536, y below
 //                  FFX_DOF_LISTED_TILE_Y_LIMIT), in no order; lists 2a and 2a + 1 share array a, one from each
@@ -56,9 +59,11 @@
 //                  far highlights pass 2 took out of the half-res colour, for the composite to draw at full
 //                  resolution (ffx_dof_highlights.h), FFX_DOF_HIGHLIGHT_SLOTS slots of FFX_DOF_HIGHLIGHT_WORDS
 //                  words (a slot of zeros is empty), then the tile's far and near floors (two halves), from
-//                  which the composite knows what pass 2 took of each pixel. Pass 2 writes every word of every tile
-//                  each dispatch, so it needs no initial value. Tile (x, y) starts at word
-//                  (y * tileCount.x + x) * FFX_DOF_HIGHLIGHT_TILE_WORDS; slot s at s * FFX_DOF_HIGHLIGHT_WORDS
+//                  which the composite knows what pass 2 took of each pixel, then the tile's colour peak
+//                  (FFX_DOF_HIGHLIGHT_PEAK_WORD: its largest finite channel, clamped to the half range, as
+//                  float bits), which tells dilate and the composite where small sources and highlights may lie. Pass 2
+//                  writes every word of every tile each dispatch, so it needs no initial value. Tile (x, y) starts at
+//                  word (y * tileCount.x + x) * FFX_DOF_HIGHLIGHT_TILE_WORDS; slot s at s * FFX_DOF_HIGHLIGHT_WORDS
 //                  from there, the floor at FFX_DOF_HIGHLIGHT_FLOOR_WORD.
 #ifndef FFX_DOF_RESOURCES_H
 #define FFX_DOF_RESOURCES_H
@@ -114,7 +119,8 @@
 #define FFX_DOF_HIGHLIGHT_SLOTS 4
 #define FFX_DOF_HIGHLIGHT_WORDS 3
 #define FFX_DOF_HIGHLIGHT_FLOOR_WORD (FFX_DOF_HIGHLIGHT_SLOTS * FFX_DOF_HIGHLIGHT_WORDS)
-#define FFX_DOF_HIGHLIGHT_TILE_WORDS (FFX_DOF_HIGHLIGHT_FLOOR_WORD + 1)
+#define FFX_DOF_HIGHLIGHT_PEAK_WORD (FFX_DOF_HIGHLIGHT_FLOOR_WORD + 1)
+#define FFX_DOF_HIGHLIGHT_TILE_WORDS (FFX_DOF_HIGHLIGHT_PEAK_WORD + 1)
 
 // The tile lists (TILE_LIST_ARGS, TILE_LISTS): which work a tile needs in the blur and in the composite,
 // decided by dilate (ffx_dof_tile_classes.h), so that each workgroup of those passes runs a pipeline
@@ -137,6 +143,9 @@
 #define FFX_DOF_BLUR_TILE_LIST_FIRST 0
 #define FFX_DOF_COMPOSITE_TILE_LIST_FIRST 6
 #define FFX_DOF_TILE_LIST_COUNT 10
+// TILE_LIST_ARGS's entry after the lists': pass 2's second run (FFX_DOF_OUTPUT_FLAG_COLOR_RANGE_RERUN).
+#define FFX_DOF_COLOR_RANGE_RERUN_ARGS FFX_DOF_TILE_LIST_COUNT
+#define FFX_DOF_TILE_LIST_ARGS_ENTRIES (FFX_DOF_TILE_LIST_COUNT + 1)
 #define FFX_DOF_TILE_LIST_ARRAYS 5         // arrays of one word per tile in TILE_LISTS: ceil(lists / 2)
 #define FFX_DOF_TILE_LIST_ARGS_WORDS 4     // words per list in TILE_LIST_ARGS
 #define FFX_DOF_LISTED_TILE_Y_LIMIT 16384  // tile rows a TILE_LISTS word holds (14 bits)

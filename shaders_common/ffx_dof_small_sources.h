@@ -17,18 +17,13 @@
 
 #include "ffx_dof_common.h"
 
-#if defined(FFX_CPU)
-// x, y: the tile's (min, max) signed radius (ffxDofLoadTile's); z: its colour peak.
-FfxFloat32x3 ffxDofLoadTileRangeAndPeak(FfxUInt32x2 tile);
-#endif
-
 // Small far sources whose largest channel is at most this (display white, in the input's units) stay
 // on the half-res path: below white, what a lost or doubled share changes is a fraction of the
 // surrounding level, within the half-res path's own error.
 #define FFX_DOF_SMALL_SOURCE_MIN_PEAK 1.0f
 
-// Whether a tile of (min, max) signed radius and colour peak `rangeAndPeak` may hold far pixels of
-// radius below FFX_DOF_FAR_LAYER_ONLY_RADIUS and a channel above FFX_DOF_SMALL_SOURCE_MIN_PEAK (not
+// Whether a tile of (min, max) signed radius and colour peak `rangeAndPeak` (ffxDofTileRangeAndPeak) may hold far
+// pixels of radius below FFX_DOF_FAR_LAYER_ONLY_RADIUS and a channel above FFX_DOF_SMALL_SOURCE_MIN_PEAK (not
 // necessarily the same pixels: the test is a tile's, conservative).
 FFX_DOF_INLINE FfxBoolean ffxDofTileMayHoldBrightSmallSources(FfxFloat32x3 rangeAndPeak)
 {

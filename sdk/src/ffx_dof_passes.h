@@ -83,11 +83,16 @@ constexpr uint32_t kStorageBufferSlotCount = FFX_DOF_UAV_BUFFER_HIGHLIGHTS + 1;
 // The GLOBALS storage buffer (FFX_DOF_UAV_BUFFER_GLOBALS): 32-bit words.
 constexpr uint32_t kGlobalsWordCount = FFX_DOF_GLOBALS_WORD_COUNT;
 constexpr uint32_t kGlobalsBufferBytes = kGlobalsWordCount * 4;
-// TILE_LIST_ARGS (FFX_DOF_UAV_BUFFER_TILE_LIST_ARGS): per tile list its indirect dispatch arguments.
-constexpr uint32_t kTileListArgsWordCount = FFX_DOF_TILE_LIST_COUNT * FFX_DOF_TILE_LIST_ARGS_WORDS;
+// TILE_LIST_ARGS (FFX_DOF_UAV_BUFFER_TILE_LIST_ARGS): per tile list its indirect dispatch arguments, then those of
+// pass 2's second run (FFX_DOF_COLOR_RANGE_RERUN_ARGS).
+constexpr uint32_t kTileListArgsWordCount = FFX_DOF_TILE_LIST_ARGS_ENTRIES * FFX_DOF_TILE_LIST_ARGS_WORDS;
 constexpr uint32_t kTileListArgsBytes = kTileListArgsWordCount * 4;
 // The byte offset of a tile list's arguments in TILE_LIST_ARGS.
 constexpr uint32_t tileListArgsOffset(uint32_t list) { return list * FFX_DOF_TILE_LIST_ARGS_WORDS * 4; }
+// The pass dispatched a second time, indirectly from FFX_DOF_COLOR_RANGE_RERUN_ARGS with
+// FFX_DOF_OUTPUT_FLAG_COLOR_RANGE_RERUN, where its first run found a colour channel above the range limit.
+constexpr Pass kColorRangeRerunPass = Pass::DownsampleColor;
+constexpr uint32_t kColorRangeRerunArgsOffset = tileListArgsOffset(FFX_DOF_COLOR_RANGE_RERUN_ARGS);
 // TILE_LISTS (FFX_DOF_UAV_BUFFER_TILE_LISTS): arrays of one word per tile, each shared by two lists of
 // one pass (ffxDofTileListWord).
 constexpr uint32_t tileListsWordCount(uint32_t tileCountX, uint32_t tileCountY) {

@@ -60,7 +60,6 @@ struct State {
     Image<float> halfCoc;
     Image<glm::uvec2> coarseMips[FFX_DOF_OPTION_MAX_MIP];  // COARSE_MIPS, by MIP of the half-res chain (0 unused)
     Image<glm::vec2> tiles, layerAlpha;
-    Image<float> tileColorPeaks;  // TILES' z
     Image<glm::vec4> dilatedTiles;
     Image<glm::vec3> nearColor, farColor;
     Image<glm::vec4> output;
@@ -211,10 +210,7 @@ FfxFloat32x4 ffxDofLoadInputColor(FfxUInt32x2 p) {
     if (p.x >= g_state->scene->width || p.y >= g_state->scene->height) throw std::out_of_range("color read");
     return g_state->scene->color[size_t(p.y) * g_state->scene->width + p.x];
 }
-void ffxDofStoreTile(FfxUInt32x2 t, FfxFloat32x2 v, FfxFloat32 peak) {
-    g_state->tiles.store(t.x, t.y, v);
-    g_state->tileColorPeaks.store(t.x, t.y, peak);
-}
+void ffxDofStoreTile(FfxUInt32x2 t, FfxFloat32x2 v) { g_state->tiles.store(t.x, t.y, v); }
 static void atomicMaxWord(uint32_t word, FfxFloat32 value) {
     uint32_t bits = ffxDofAsUInt(std::max(value, 0.0f));
     uint32_t current = g_state->globals[word].load();
@@ -241,10 +237,6 @@ void ffxDofStoreCoarseMip(FfxUInt32 mip, FfxUInt32x2 t, FfxUInt32x2 packed) {
 }
 FfxFloat32 ffxDofLoadGlobalMaxRadius() { return ffxDofAsFloat(g_state->globals[FFX_DOF_GLOBALS_MAX_RADIUS].load()); }
 FfxFloat32x2 ffxDofLoadTile(FfxUInt32x2 t) { return g_state->tiles.at(int32_t(t.x), int32_t(t.y)); }
-FfxFloat32x3 ffxDofLoadTileRangeAndPeak(FfxUInt32x2 t) {
-    const glm::vec2 range = g_state->tiles.at(int32_t(t.x), int32_t(t.y));
-    return {range.x, range.y, g_state->tileColorPeaks.at(int32_t(t.x), int32_t(t.y))};
-}
 void ffxDofStoreDilatedTile(FfxUInt32x2 t, FfxFloat32x4 v) { g_state->dilatedTiles.store(t.x, t.y, v); }
 FfxFloat32x4 ffxDofLoadDilatedTile(FfxUInt32x2 t) { return g_state->dilatedTiles.at(int32_t(t.x), int32_t(t.y)); }
 FfxDofFloat3 ffxDofLoadHalfColor(FfxInt32x2 t) { return g_state->halfColor.at(t.x, t.y); }
@@ -267,9 +259,18 @@ FfxFloat32x2 ffxDofLoadLayerAlpha(FfxInt32x2 t) { return g_state->layerAlpha.at(
 void ffxDofStoreOutput(FfxUInt32x2 p, FfxFloat32x4 c) { g_state->output.store(p.x, p.y, c); }
 void ffxDofResetGlobals() { g_state->globals[FFX_DOF_GLOBALS_MAX_RADIUS].store(0); }
 void ffxDofStoreTileListArgs(FfxUInt32 list, FfxUInt32x3 groupCounts) {
-    if (list >= FFX_DOF_TILE_LIST_COUNT) throw std::out_of_range("tile list");
+    if (list >= FFX_DOF_TILE_LIST_ARGS_ENTRIES) throw std::out_of_range("tile list");
     for (uint32_t w = 0; w < 3; ++w)
         g_state->tileListArgs[list * FFX_DOF_TILE_LIST_ARGS_WORDS + w].store(groupCounts[w]);
+}
+void ffxDofArmColorRangeRerun(FfxUInt32x2 tileCount) {
+    for (uint32_t w = 0; w < 2; ++w) {
+        std::atomic<uint32_t>& word =
+            g_state->tileListArgs[FFX_DOF_COLOR_RANGE_RERUN_ARGS * FFX_DOF_TILE_LIST_ARGS_WORDS + w];
+        uint32_t current = word.load();
+        while (tileCount[w] > current && !word.compare_exchange_weak(current, tileCount[w])) {
+        }
+    }
 }
 FfxUInt32 ffxDofCountIntoTileList(FfxUInt32 list) {
     if (list >= FFX_DOF_TILE_LIST_COUNT) throw std::out_of_range("tile list");
@@ -318,7 +319,6 @@ std::vector<glm::vec4> runPipeline(const Scene& scene, const Settings& settings,
         state.coarseMips[mip].resize(size.x, size.y);
     }
     state.tiles.resize(k.tileCount.x, k.tileCount.y);
-    state.tileColorPeaks.resize(k.tileCount.x, k.tileCount.y);
     state.dilatedTiles.resize(k.tileCount.x, k.tileCount.y);
     state.nearColor.resize(k.halfSize.x, k.halfSize.y);
     state.farColor.resize(k.halfSize.x, k.halfSize.y);
@@ -333,9 +333,23 @@ std::vector<glm::vec4> runPipeline(const Scene& scene, const Settings& settings,
     runGroups(groups(scene.width, FFX_DOF_DOWNSAMPLE_DEPTH_GROUP_EXTENT),
               groups(scene.height, FFX_DOF_DOWNSAMPLE_DEPTH_GROUP_EXTENT), ffxDofDownsampleDepth);
     float globalMax = ffxDofAsFloat(state.globals[FFX_DOF_GLOBALS_MAX_RADIUS].load());
-    float colorPeak = ffxDofAsFloat(state.globals[FFX_DOF_GLOBALS_COLOR_PEAK].load());
     runGroups(groups(scene.width, FFX_DOF_DOWNSAMPLE_COLOR_GROUP_EXTENT),
               groups(scene.height, FFX_DOF_DOWNSAMPLE_COLOR_GROUP_EXTENT), ffxDofDownsampleColor);
+    // Pass 2's second run, as the backends dispatch it: indirectly, from the arguments its first run armed (none
+    // below the range limit), with FFX_DOF_OUTPUT_FLAG_COLOR_RANGE_RERUN.
+    {
+        uint32_t args[3];
+        for (uint32_t w = 0; w < 3; ++w)
+            args[w] = state.tileListArgs[FFX_DOF_COLOR_RANGE_RERUN_ARGS * FFX_DOF_TILE_LIST_ARGS_WORDS + w].load();
+        if (args[2] != 1 || (args[0] != 0 && (args[0] != k.tileCount.x || args[1] != k.tileCount.y)))
+            throw std::logic_error("pass 2's second run armed wrongly");
+        if (args[0] != 0) {
+            k.outputFlags |= FFX_DOF_OUTPUT_FLAG_COLOR_RANGE_RERUN;
+            runGroups(args[0], args[1], ffxDofDownsampleColor);
+            k.outputFlags &= ~FFX_DOF_OUTPUT_FLAG_COLOR_RANGE_RERUN;
+        }
+    }
+    float colorPeak = ffxDofAsFloat(state.globals[FFX_DOF_GLOBALS_COLOR_PEAK].load());
     float colorScale = ffxDofAsFloat(state.globals[FFX_DOF_GLOBALS_COLOR_SCALE].load());
     runGroups(groups(k.tileCount.x, FFX_DOF_DILATE_GROUP_EXTENT), groups(k.tileCount.y, FFX_DOF_DILATE_GROUP_EXTENT),
               ffxDofDilate);
@@ -376,7 +390,13 @@ std::vector<glm::vec4> runPipeline(const Scene& scene, const Settings& settings,
         layers->tilesX = k.tileCount.x;
         layers->tilesY = k.tileCount.y;
         layers->tiles = state.tiles.texels;
-        layers->tileColorPeaks = state.tileColorPeaks.texels;
+        layers->tileColorPeaks.clear();
+        for (uint32_t y = 0; y < k.tileCount.y; ++y) {
+            for (uint32_t x = 0; x < k.tileCount.x; ++x) {
+                layers->tileColorPeaks.push_back(
+                    ffxDofUnpackTilePeak(state.highlights.at(ffxDofHighlightPeakWord(FfxUInt32x2(x, y), k.tileCount))));
+            }
+        }
         layers->dilatedTiles = state.dilatedTiles.texels;
         layers->tileClasses.clear();
         for (const glm::vec4& dilated : state.dilatedTiles.texels)

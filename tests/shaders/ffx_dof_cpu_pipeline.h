@@ -37,7 +37,7 @@ struct Settings {
 struct Layers {
     uint32_t halfWidth = 0, halfHeight = 0, tilesX = 0, tilesY = 0;
     std::vector<glm::vec2> tiles;            // pass 1
-    std::vector<float> tileColorPeaks;       // pass 1: TILES' z
+    std::vector<float> tileColorPeaks;       // pass 2: each tile's colour peak (HIGHLIGHTS)
     std::vector<glm::vec4> dilatedTiles;     // pass 3: far, near, footprint min, footprint max
     std::vector<uint32_t> tileClasses;       // pass 4: FFX_DOF_BLUR_CLASS_* of each tile (as classified)
     std::vector<uint32_t> blurTileFlags;     // pass 3: FFX_DOF_LISTED_TILE_* of each tile's blur list entry
@@ -47,7 +47,7 @@ struct Layers {
     std::vector<glm::vec2> layerAlpha;
     float globalMaxRadius = 0.0f;        // GLOBALS after pass 1
     uint32_t globalsAfterComposite = 1;  // GLOBALS words 0 and 1 after pass 5, or-ed (must be 0)
-    float colorPeak = 0.0f;              // GLOBALS colour peak after pass 1 (0 unless above the limit)
+    float colorPeak = 0.0f;              // GLOBALS colour peak after pass 2 (0 unless above the limit)
     float colorScale = 0.0f;             // GLOBALS colour scale after pass 2
 };
 

@@ -6,6 +6,7 @@
 #include "ffx_dof_dx12_state_tracker.h"
 #include "ffx_dof_readback_ring.h"
 
+#include <cstddef>
 #include <cstdint>
 #include <new>
 
@@ -473,6 +474,24 @@ FfxDofErrorCode Context::dispatch(const DispatchPlan& plan) {
             list->Dispatch(pass.groups.x, pass.groups.y, pass.groups.z);
         }
         tracker.afterPass(pass);
+        if (p == static_cast<uint32_t>(kColorRangeRerunPass)) {
+            // Its second run, over no workgroup unless the first found a colour channel above the range limit
+            // (ffx_dof_downsample_color.h): from the arguments the first armed, which it does not touch (their
+            // descriptor stays in the table, unused), with the flag that has it read the frame's peak.
+            PlannedPass rerun = pass;
+            rerun.bufferSlots &= ~(1u << FFX_DOF_UAV_BUFFER_TILE_LIST_ARGS);
+            rerun.indirect = resourceBit(Resource::TileListArgs);
+            tracker.beforePass(slots, rerun, uavBuffers);
+            tracker.flush(list);
+            constexpr UINT kOutputFlagsIndex = offsetof(FfxDofConstants, outputFlags) / 4;
+            list->SetComputeRoot32BitConstant(kRootConstantsParameter,
+                                              constants.outputFlags | FFX_DOF_OUTPUT_FLAG_COLOR_RANGE_RERUN,
+                                              kOutputFlagsIndex);
+            list->ExecuteIndirect(backend_.tileListSignature(), 1, buffers_[FFX_DOF_UAV_BUFFER_TILE_LIST_ARGS].Get(),
+                                  kColorRangeRerunArgsOffset, nullptr, 0);
+            list->SetComputeRoot32BitConstant(kRootConstantsParameter, constants.outputFlags, kOutputFlagsIndex);
+            tracker.afterPass(rerun);
+        }
     }
     tracker.restore();
     tracker.flush(list);

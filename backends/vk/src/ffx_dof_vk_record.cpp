@@ -232,6 +232,23 @@ FfxDofErrorCode ContextVK::dispatch(const DispatchPlan& dispatch) {
             fn.vkCmdBindPipeline(commandBuffer, VK_PIPELINE_BIND_POINT_COMPUTE,
                                  pipelines_[pass][dispatch.variants[pass]]);
             fn.vkCmdDispatch(commandBuffer, planned.groups.x, planned.groups.y, planned.groups.z);
+            if (pass == uint32_t(kColorRangeRerunPass)) {
+                // Its second run, over no workgroup unless the first found a colour channel above the range limit
+                // (ffx_dof_downsample_color.h): after the first's writes, its arguments among them, and with the
+                // flag that has it read the frame's peak.
+                auto armed = makeInfo<VkMemoryBarrier>(VK_STRUCTURE_TYPE_MEMORY_BARRIER);
+                armed.srcAccessMask = VK_ACCESS_SHADER_WRITE_BIT;
+                armed.dstAccessMask = kShaderAccess | VK_ACCESS_INDIRECT_COMMAND_READ_BIT;
+                fn.vkCmdPipelineBarrier(commandBuffer, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
+                                        VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_DRAW_INDIRECT_BIT, 0,
+                                        1, &armed, 0, nullptr, 0, nullptr);
+                FfxDofConstants rerun = constants;
+                rerun.outputFlags |= FFX_DOF_OUTPUT_FLAG_COLOR_RANGE_RERUN;
+                fn.vkCmdPushConstants(commandBuffer, pipelineLayouts_[pass], VK_SHADER_STAGE_COMPUTE_BIT, 0,
+                                      sizeof(rerun), &rerun);
+                fn.vkCmdDispatchIndirect(commandBuffer, tileListArgs(), kColorRangeRerunArgsOffset);
+                readSinceBarrier |= resourceBit(Resource::TileListArgs);
+            }
         }
         if (timed) {
             fn.vkCmdWriteTimestamp(commandBuffer, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, queryPool_,
