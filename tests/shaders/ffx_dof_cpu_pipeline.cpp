@@ -343,6 +343,7 @@ std::vector<glm::vec4> runPipeline(const Scene& scene, const Settings& settings,
             args[w] = state.tileListArgs[FFX_DOF_COLOR_RANGE_RERUN_ARGS * FFX_DOF_TILE_LIST_ARGS_WORDS + w].load();
         if (args[2] != 1 || (args[0] != 0 && (args[0] != k.tileCount.x || args[1] != k.tileCount.y)))
             throw std::logic_error("pass 2's second run armed wrongly");
+        if (layers) layers->colorRangeRerun = args[0] != 0;
         if (args[0] != 0) {
             k.outputFlags |= FFX_DOF_OUTPUT_FLAG_COLOR_RANGE_RERUN;
             runGroups(args[0], args[1], ffxDofDownsampleColor);

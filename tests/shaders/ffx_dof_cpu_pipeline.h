@@ -48,6 +48,7 @@ struct Layers {
     float globalMaxRadius = 0.0f;        // GLOBALS after pass 1
     uint32_t globalsAfterComposite = 1;  // GLOBALS words 0 and 1 after pass 5, or-ed (must be 0)
     float colorPeak = 0.0f;              // GLOBALS colour peak after pass 2 (0 unless above the limit)
+    bool colorRangeRerun = false;        // pass 2's first run armed its second (a channel above the limit)
     float colorScale = 0.0f;             // GLOBALS colour scale after pass 2
 };
 

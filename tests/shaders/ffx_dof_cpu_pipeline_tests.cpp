@@ -509,9 +509,13 @@ TEST_CASE("HDR: colour far above the half range stays finite, is blurred and kee
                 reference.color[i] = glm::vec4(low, low, low, 1.0f);
                 reference.depth[i] = -c.coc;
             }
-        Layers layers;
+        Layers layers, lowLayers;
         const std::vector<glm::vec4> out = ffxdoftest::runPipeline(scene, Settings{}, &layers);
-        const std::vector<glm::vec4> lowOut = ffxdoftest::runPipeline(reference, Settings{});
+        const std::vector<glm::vec4> lowOut = ffxdoftest::runPipeline(reference, Settings{}, &lowLayers);
+        // Pass 2 runs a second time, scaled, for the frame above the range only.
+        CHECK(layers.colorRangeRerun);
+        CHECK_FALSE(lowLayers.colorRangeRerun);
+        CHECK(lowLayers.colorScale == 1.0f);
         CHECK(layers.colorPeak == c.value);
         CHECK(layers.colorScale == ffxDofColorRangeScale(c.value));
         CHECK(layers.colorScale < 1.0f);
@@ -537,6 +541,25 @@ TEST_CASE("HDR: colour far above the half range stays finite, is blurred and kee
         // Issue 13: image sums within 1% (measured 0.1 to 0.5%; the near patch lost 4.7% through the
         // technique's cubic near-layer weight, now ffxDofNearLayerWeight).
         CHECK(std::abs(energyOut / energyIn - 1.0) <= 0.01);
+    }
+}
+
+TEST_CASE("HDR: pass 2 runs again only for a channel above the range limit, wherever it lies", "[pipeline][hdr]") {
+    // One pixel at, or just above, FFX_DOF_COLOR_RANGE_LIMIT, in the first, an inner and the last tile, on a border
+    // row and column: the first run arms the second (and raises the frame's peak) from any tile's own pixels.
+    const float above = std::nextafter(FFX_DOF_COLOR_RANGE_LIMIT, 1e30f);
+    const int pixels[][2] = {{0, 0}, {37, 21}, {69, 49}};
+    for (const auto& pixel : pixels) {
+        for (const float value : {FFX_DOF_COLOR_RANGE_LIMIT, above}) {
+            INFO("pixel " << pixel[0] << ", " << pixel[1] << ": " << value);
+            Scene scene = makeScene(70, 50, kBackground, -4.0f);
+            scene.color[size_t(pixel[1]) * scene.width + size_t(pixel[0])] = glm::vec4(value, 0.5f, 0.5f, 1.0f);
+            Layers layers;
+            ffxdoftest::runPipeline(scene, Settings{}, &layers);
+            CHECK(layers.colorRangeRerun == (value > FFX_DOF_COLOR_RANGE_LIMIT));
+            CHECK(layers.colorPeak == (value > FFX_DOF_COLOR_RANGE_LIMIT ? value : 0.0f));
+            CHECK(layers.colorScale == ffxDofColorRangeScale(value));
+        }
     }
 }
 
